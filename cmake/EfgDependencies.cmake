@@ -1,0 +1,31 @@
+# Third-party dependencies, all from Debian 12 packages (scripts/setup.sh installs them).
+# Facts behind this file: ../shared/reference/toolchain.md.
+find_package(MPI REQUIRED COMPONENTS CXX)
+find_package(Trilinos 13.2 REQUIRED
+  COMPONENTS Teuchos Tpetra Belos Ifpack2 MueLu NOX Stratimikos Thyra Amesos2 Zoltan2)
+find_package(yaml-cpp REQUIRED)
+
+# Debian's Trilinos targets carry no include directories and no MPI: wrap them in one target.
+add_library(efg_trilinos INTERFACE)
+target_include_directories(efg_trilinos SYSTEM INTERFACE
+  ${Trilinos_INCLUDE_DIRS} ${Trilinos_TPL_INCLUDE_DIRS})
+target_link_libraries(efg_trilinos INTERFACE
+  ${Trilinos_LIBRARIES} ${Trilinos_TPL_LIBRARIES} MPI::MPI_CXX)
+
+# Exodus II (Debian's libexodusii-dev ships no CMake config).
+find_path(EXODUS_INCLUDE_DIR exodusII.h PATH_SUFFIXES exodusii)
+find_library(EXODUS_LIBRARY NAMES exoIIv2 exodus exoIIv2c)
+if(NOT EXODUS_INCLUDE_DIR OR NOT EXODUS_LIBRARY)
+  message(FATAL_ERROR "efg: Exodus II not found; run scripts/setup.sh (package libexodusii-dev)")
+endif()
+add_library(efg_exodus INTERFACE)
+target_include_directories(efg_exodus SYSTEM INTERFACE ${EXODUS_INCLUDE_DIR})
+target_link_libraries(efg_exodus INTERFACE ${EXODUS_LIBRARY})
+
+# yaml-cpp as a SYSTEM include as well.
+add_library(efg_yaml INTERFACE)
+get_target_property(_yaml_inc yaml-cpp INTERFACE_INCLUDE_DIRECTORIES)
+if(_yaml_inc)
+  target_include_directories(efg_yaml SYSTEM INTERFACE ${_yaml_inc})
+endif()
+target_link_libraries(efg_yaml INTERFACE yaml-cpp)

@@ -1,0 +1,22 @@
+// The efg command line: `efg run|check|mesh|schema ...`, `efg --help`, `efg --version`.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace efg {
+
+struct CommandLine {
+  std::string command;      ///< run, check, mesh, schema, help, version
+  std::string scene;        ///< scene file (run, check, mesh)
+  std::string output_dir;   ///< run: -o/--output, default "."
+  std::string mesh_output;  ///< mesh: the Exodus file to write
+};
+
+/// Throws InputError with a usage hint on a malformed command line.
+CommandLine parse_command_line(const std::vector<std::string>& args);
+
+/// The text of `efg --help`.
+std::string help_text();
+
+}  // namespace efg

@@ -1,0 +1,75 @@
+#include <Teuchos_CommHelpers.hpp>
+#include <Teuchos_TimeMonitor.hpp>
+#include <yaml-cpp/yaml.h>
+
+#include <filesystem>
+#include <stdexcept>
+
+#include "app/Commands.hpp"
+#include "core/Log.hpp"
+#include "scene/SceneEcho.hpp"
+#include "core/RunSummary.hpp"
+#include "core/Version.hpp"
+#include "io/ResultsOutput.hpp"
+#include "mesh/NodalVolume.hpp"
+#include "run/Model.hpp"
+#include "run/OutputFields.hpp"
+
+namespace efg {
+namespace {
+
+void log_model(const Model& model, const CommPtr& comm) {
+  YAML::Emitter echo;
+  echo << compact_for_echo(model.scene.resolved);
+  Log::info("efg " + std::string(version_string) + " (" + git_describe + "), " + std::to_string(comm->getSize()) +
+            " MPI rank(s)");
+  Log::info("scene " + model.scene.file + " (resolved):\n" + echo.c_str());
+  const auto owned = static_cast<long long>(model.partition.owned.size());
+  long long min = 0, max = 0;
+  Teuchos::reduceAll(*comm, Teuchos::REDUCE_MIN, owned, Teuchos::outArg(min));
+  Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, owned, Teuchos::outArg(max));
+  Log::info("mesh: " + model.mesh.source + ": " + std::to_string(model.mesh.node_count()) + " particles, " +
+            std::to_string(model.mesh.cell_count()) + " background cells; particles per rank " + std::to_string(min) +
+            " to " + std::to_string(max));
+}
+
+// Drivers join as their issues land; until then a stage is refused before any output is written.
+void require_available_drivers(const Scene& scene) {
+  for (const auto& stage : scene.stages)
+    throw std::runtime_error("stage '" + stage.name + "': the " + stage.driver +
+                             " driver is not available in this version of efg; a scene without stages "
+                             "runs a model check (initial state only)");
+}
+
+}  // namespace
+
+void run_command(const CommPtr& comm, const CommandLine& cl) {
+  const Model model = build_model(comm, cl.scene);
+  log_model(model, comm);
+  require_available_drivers(model.scene);
+
+  const auto dim = model.mesh.dimension;
+  const auto columns = output_columns(model.scene.output.fields, dim);
+  const std::filesystem::path path = std::filesystem::path(cl.output_dir) / model.scene.output.file;
+  if (comm->getRank() == 0 && path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
+
+  {
+  Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewCounter("efg: output"));
+  ResultsOutput output(comm, path.string(), model.mesh, model.maps.owned_nodes, OutputLayout{columns, {}, {}},
+                       model.scene.title.empty() ? model.scene.name : model.scene.title);
+  const auto values = initial_state_columns(model, lumped_nodal_volumes(model.mesh));
+  ResultsOutput::MultiVector nodal(model.maps.owned_nodes, columns.size());
+  {
+    auto view = nodal.getLocalViewHost(Tpetra::Access::OverwriteAll);
+    for (std::size_t c = 0; c < values.size(); ++c)
+      for (std::size_t i = 0; i < values[c].size(); ++i) view(i, c) = values[c][i];
+  }
+  output.write(0.0, nodal, {});
+  output.close();
+  }
+  Log::info("model check: initial state written (no stages in the scene)");
+  Log::info("results: " + std::filesystem::absolute(path).lexically_normal().string());
+  print_run_summary(comm);
+}
+
+}  // namespace efg

@@ -1,0 +1,191 @@
+#include "io/ExodusReader.hpp"
+
+#include <exodusII.h>
+
+#include <cstdint>
+
+#include "core/Errors.hpp"
+#include "io/ExodusFile.hpp"
+
+namespace efg {
+namespace {
+
+constexpr int kNameLength = 256;
+
+std::vector<std::string> read_names(const exodus::File& f, ex_entity_type type, std::size_t count,
+                                    const std::vector<std::int64_t>& ids, const char* prefix) {
+  std::vector<std::vector<char>> storage(count, std::vector<char>(kNameLength + 1, '\0'));
+  std::vector<char*> pointers;
+  for (auto& s : storage) pointers.push_back(s.data());
+  if (count > 0) f.check(ex_get_names(f.id(), type, pointers.data()), "reading names");
+  std::vector<std::string> names;
+  for (std::size_t i = 0; i < count; ++i) {
+    std::string name(storage[i].data());
+    if (name.empty()) name = std::string(prefix) + std::to_string(ids[i]);
+    names.push_back(name);
+  }
+  return names;
+}
+
+std::vector<std::int64_t> read_ids(const exodus::File& f, ex_entity_type type, std::int64_t count) {
+  std::vector<std::int64_t> ids(static_cast<std::size_t>(count));
+  if (count > 0) f.check(ex_get_ids(f.id(), type, ids.data()), "reading entity ids");
+  return ids;
+}
+
+std::vector<std::string> read_variable_names(const exodus::File& f, ex_entity_type type) {
+  int count = 0;
+  f.check(ex_get_variable_param(f.id(), type, &count), "reading variable counts");
+  std::vector<std::vector<char>> storage(static_cast<std::size_t>(count),
+                                         std::vector<char>(kNameLength + 1, '\0'));
+  std::vector<char*> pointers;
+  for (auto& s : storage) pointers.push_back(s.data());
+  if (count > 0)
+    f.check(ex_get_variable_names(f.id(), type, count, pointers.data()), "reading variable names");
+  std::vector<std::string> names;
+  for (auto& s : storage) names.emplace_back(s.data());
+  return names;
+}
+
+}  // namespace
+
+BackgroundMesh read_exodus_mesh(const std::string& path) {
+  auto f = exodus::File::open_read(path);
+  ex_set_max_name_length(f.id(), kNameLength);
+  char title[MAX_LINE_LENGTH + 1] = {};
+  std::int64_t dim = 0, nodes = 0, cells = 0, nblocks = 0, nnode_sets = 0, nside_sets = 0;
+  f.check(ex_get_init(f.id(), title, &dim, &nodes, &cells, &nblocks, &nnode_sets, &nside_sets),
+          "reading the header");
+  if (dim != 2 && dim != 3)
+    throw InputError("mesh file '" + path + "': dimension " + std::to_string(dim) +
+                     " is not supported (expected 2 or 3)");
+
+  BackgroundMesh mesh;
+  mesh.source = path;
+  mesh.dimension = static_cast<int>(dim);
+  std::vector<double> x(static_cast<std::size_t>(nodes)), y(x.size()), z(x.size());
+  f.check(ex_get_coord(f.id(), x.data(), y.data(), dim == 3 ? z.data() : nullptr),
+          "reading coordinates");
+  mesh.coordinates.reserve(static_cast<std::size_t>(dim * nodes));
+  for (std::size_t n = 0; n < x.size(); ++n) {
+    mesh.coordinates.push_back(x[n]);
+    mesh.coordinates.push_back(y[n]);
+    if (dim == 3) mesh.coordinates.push_back(z[n]);
+  }
+
+  const auto block_ids = read_ids(f, EX_ELEM_BLOCK, nblocks);
+  const auto block_names =
+      read_names(f, EX_ELEM_BLOCK, block_ids.size(), block_ids, "block_");
+  for (std::size_t b = 0; b < block_ids.size(); ++b) {
+    char type_name[MAX_STR_LENGTH + 1] = {};
+    std::int64_t count = 0, per_cell = 0, edges = 0, faces = 0, attributes = 0;
+    f.check(ex_get_block(f.id(), EX_ELEM_BLOCK, block_ids[b], type_name, &count, &per_cell, &edges,
+                         &faces, &attributes),
+            "reading an element block");
+    const auto type = cell_type_from_exodus_name(type_name);
+    if (!type || cell_node_count(*type) != per_cell)
+      throw InputError("mesh file '" + path + "': block '" + block_names[b] + "' has element type '" +
+                       type_name + "' with " + std::to_string(per_cell) +
+                       " nodes; supported: HEX8, TETRA4, WEDGE6 (3D), QUAD4, TRI3 (2D)");
+    ElementBlock block;
+    block.name = block_names[b];
+    block.id = block_ids[b];
+    block.type = *type;
+    std::vector<std::int64_t> conn(static_cast<std::size_t>(count * per_cell));
+    if (!conn.empty())
+      f.check(ex_get_conn(f.id(), EX_ELEM_BLOCK, block_ids[b], conn.data(), nullptr, nullptr),
+              "reading connectivity");
+    block.connectivity.reserve(conn.size());
+    for (auto n : conn) block.connectivity.push_back(static_cast<LocalIndex>(n - 1));
+    mesh.blocks.push_back(std::move(block));
+  }
+
+  const auto ns_ids = read_ids(f, EX_NODE_SET, nnode_sets);
+  const auto ns_names = read_names(f, EX_NODE_SET, ns_ids.size(), ns_ids, "nodeset_");
+  for (std::size_t s = 0; s < ns_ids.size(); ++s) {
+    std::int64_t count = 0, factors = 0;
+    f.check(ex_get_set_param(f.id(), EX_NODE_SET, ns_ids[s], &count, &factors),
+            "reading a node set");
+    std::vector<std::int64_t> entries(static_cast<std::size_t>(count));
+    if (count > 0)
+      f.check(ex_get_set(f.id(), EX_NODE_SET, ns_ids[s], entries.data(), nullptr),
+              "reading a node set");
+    NodeSet set{ns_names[s], ns_ids[s], {}};
+    for (auto n : entries) set.nodes.push_back(static_cast<LocalIndex>(n - 1));
+    mesh.node_sets.push_back(std::move(set));
+  }
+
+  const auto ss_ids = read_ids(f, EX_SIDE_SET, nside_sets);
+  const auto ss_names = read_names(f, EX_SIDE_SET, ss_ids.size(), ss_ids, "sideset_");
+  for (std::size_t s = 0; s < ss_ids.size(); ++s) {
+    std::int64_t count = 0, factors = 0;
+    f.check(ex_get_set_param(f.id(), EX_SIDE_SET, ss_ids[s], &count, &factors),
+            "reading a side set");
+    std::vector<std::int64_t> elems(static_cast<std::size_t>(count)), sides(elems.size());
+    if (count > 0)
+      f.check(ex_get_set(f.id(), EX_SIDE_SET, ss_ids[s], elems.data(), sides.data()),
+              "reading a side set");
+    SideSet set{ss_names[s], ss_ids[s], {}, {}};
+    for (std::size_t i = 0; i < elems.size(); ++i) {
+      set.cells.push_back(static_cast<LocalIndex>(elems[i] - 1));
+      set.sides.push_back(static_cast<int>(sides[i] - 1));
+    }
+    mesh.side_sets.push_back(std::move(set));
+  }
+  if (static_cast<std::int64_t>(mesh.cell_count()) != cells)
+    throw InputError("mesh file '" + path + "': header says " + std::to_string(cells) +
+                     " elements but the blocks hold " + std::to_string(mesh.cell_count()));
+  return mesh;
+}
+
+ExodusResults read_exodus_results(const std::string& path) {
+  auto f = exodus::File::open_read(path);
+  ex_set_max_name_length(f.id(), kNameLength);
+  ExodusResults r;
+  const auto steps = static_cast<int>(ex_inquire_int(f.id(), EX_INQ_TIME));
+  const auto nodes = ex_inquire_int(f.id(), EX_INQ_NODES);
+  const auto nblocks = ex_inquire_int(f.id(), EX_INQ_ELEM_BLK);
+  const auto block_ids = read_ids(f, EX_ELEM_BLOCK, nblocks);
+  std::vector<std::int64_t> block_sizes;
+  for (auto id : block_ids) {
+    char type_name[MAX_STR_LENGTH + 1] = {};
+    std::int64_t count = 0, per = 0, e = 0, fa = 0, at = 0;
+    f.check(ex_get_block(f.id(), EX_ELEM_BLOCK, id, type_name, &count, &per, &e, &fa, &at),
+            "reading an element block");
+    block_sizes.push_back(count);
+  }
+  const auto nodal_names = read_variable_names(f, EX_NODAL);
+  const auto element_names = read_variable_names(f, EX_ELEM_BLOCK);
+  const auto global_names = read_variable_names(f, EX_GLOBAL);
+  std::vector<double> globals(global_names.size());
+  for (int step = 1; step <= steps; ++step) {
+    double t = 0;
+    f.check(ex_get_time(f.id(), step, &t), "reading a time value");
+    r.times.push_back(t);
+    for (std::size_t v = 0; v < nodal_names.size(); ++v) {
+      std::vector<double> values(static_cast<std::size_t>(nodes));
+      f.check(ex_get_var(f.id(), step, EX_NODAL, static_cast<int>(v + 1), 1, nodes, values.data()),
+              "reading a nodal variable");
+      r.nodal[nodal_names[v]].push_back(std::move(values));
+    }
+    for (std::size_t v = 0; v < element_names.size(); ++v) {
+      std::vector<double> values;
+      for (std::size_t b = 0; b < block_ids.size(); ++b) {
+        std::vector<double> part(static_cast<std::size_t>(block_sizes[b]));
+        f.check(ex_get_var(f.id(), step, EX_ELEM_BLOCK, static_cast<int>(v + 1), block_ids[b],
+                           block_sizes[b], part.data()),
+                "reading an element variable");
+        values.insert(values.end(), part.begin(), part.end());
+      }
+      r.element[element_names[v]].push_back(std::move(values));
+    }
+    if (!globals.empty()) {
+      f.check(ex_get_glob_vars(f.id(), step, static_cast<int>(globals.size()), globals.data()),
+              "reading global variables");
+      for (std::size_t v = 0; v < globals.size(); ++v) r.global[global_names[v]].push_back(globals[v]);
+    }
+  }
+  return r;
+}
+
+}  // namespace efg

@@ -1,0 +1,63 @@
+// The background mesh: nodes (the future particles), cells grouped in blocks, node and side sets.
+// Plain data, shared by the reader, the generator, the writer and the discretization.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "mesh/CellTopology.hpp"
+
+namespace efg {
+
+using LocalIndex = std::int32_t;
+
+struct ElementBlock {
+  std::string name;
+  std::int64_t id = 0;            ///< Exodus block id
+  CellType type = CellType::hex8;
+  std::vector<LocalIndex> connectivity;  ///< 0-based mesh node indices, cell after cell
+
+  std::size_t cell_count() const {
+    return connectivity.size() / static_cast<std::size_t>(cell_node_count(type));
+  }
+};
+
+struct NodeSet {
+  std::string name;
+  std::int64_t id = 0;
+  std::vector<LocalIndex> nodes;  ///< 0-based mesh node indices
+};
+
+/// Cells are numbered globally in block order (Exodus convention), 0-based here.
+struct SideSet {
+  std::string name;
+  std::int64_t id = 0;
+  std::vector<LocalIndex> cells;  ///< 0-based global cell indices
+  std::vector<int> sides;         ///< 0-based local side numbers
+};
+
+struct BackgroundMesh {
+  int dimension = 3;
+  std::vector<double> coordinates;  ///< node after node, `dimension` components each
+  std::vector<ElementBlock> blocks;
+  std::vector<NodeSet> node_sets;
+  std::vector<SideSet> side_sets;
+  std::string source;  ///< file name or generator description, for messages
+
+  std::size_t node_count() const {
+    return coordinates.size() / static_cast<std::size_t>(dimension);
+  }
+  std::size_t cell_count() const;
+
+  const ElementBlock* find_block(const std::string& name) const;
+  const NodeSet* find_node_set(const std::string& name) const;
+  const SideSet* find_side_set(const std::string& name) const;
+
+  /// The block and the local cell index within it of global cell `cell`.
+  std::pair<const ElementBlock*, std::size_t> locate_cell(std::size_t cell) const;
+  /// Mesh node indices of one side of one cell.
+  std::vector<LocalIndex> side_node_indices(std::size_t cell, int side) const;
+};
+
+}  // namespace efg

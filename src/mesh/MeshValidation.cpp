@@ -1,0 +1,99 @@
+#include "mesh/MeshValidation.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "core/Errors.hpp"
+
+namespace efg {
+namespace {
+
+[[noreturn]] void fail(const BackgroundMesh& mesh, const std::string& what) {
+  throw InputError("mesh '" + mesh.source + "': " + what);
+}
+
+double bounding_box_measure(int dim, const std::vector<double>& x) {
+  double measure = 1.0;
+  for (int d = 0; d < dim; ++d) {
+    double lo = x[static_cast<std::size_t>(d)], hi = lo;
+    for (std::size_t i = static_cast<std::size_t>(d); i < x.size(); i += static_cast<std::size_t>(dim)) {
+      lo = std::min(lo, x[i]);
+      hi = std::max(hi, x[i]);
+    }
+    measure *= hi - lo;
+  }
+  return measure;
+}
+
+}  // namespace
+
+void validate_mesh(const BackgroundMesh& mesh) {
+  const auto nodes = mesh.node_count();
+  if (mesh.dimension != 2 && mesh.dimension != 3)
+    fail(mesh, "dimension " + std::to_string(mesh.dimension) + " is not supported (expected 2 or 3)");
+  if (nodes == 0) fail(mesh, "has no nodes");
+  if (mesh.blocks.empty()) fail(mesh, "has no element blocks");
+  for (double x : mesh.coordinates)
+    if (!std::isfinite(x)) fail(mesh, "has a non-finite nodal coordinate");
+
+  for (const auto& block : mesh.blocks) {
+    if (cell_dimension(block.type) != mesh.dimension)
+      fail(mesh, "block '" + block.name + "' holds " + cell_scene_name(block.type) +
+                     " cells in a " + std::to_string(mesh.dimension) + "D mesh");
+    const auto npc = static_cast<std::size_t>(cell_node_count(block.type));
+    if (block.connectivity.size() % npc != 0)
+      fail(mesh, "block '" + block.name + "' has a truncated connectivity array");
+    std::vector<double> x(npc * static_cast<std::size_t>(mesh.dimension));
+    for (std::size_t c = 0; c < block.cell_count(); ++c) {
+      for (std::size_t a = 0; a < npc; ++a) {
+        const auto node = block.connectivity[c * npc + a];
+        if (node < 0 || static_cast<std::size_t>(node) >= nodes) {
+          std::ostringstream o;
+          o << "block '" << block.name << "' cell " << c + 1 << " refers to node " << node + 1
+            << ", outside 1.." << nodes;
+          fail(mesh, o.str());
+        }
+        for (int d = 0; d < mesh.dimension; ++d)
+          x[a * static_cast<std::size_t>(mesh.dimension) + static_cast<std::size_t>(d)] =
+              mesh.coordinates[static_cast<std::size_t>(node) * static_cast<std::size_t>(mesh.dimension) +
+                               static_cast<std::size_t>(d)];
+      }
+      const auto g = cell_geometry(block.type, x.data());
+      const double scale = std::abs(bounding_box_measure(mesh.dimension, x));
+      if (!(g.min_corner_det > 0) || !(g.volume > degenerate_cell_tolerance * scale) || scale == 0) {
+        std::ostringstream o;
+        o << "block '" << block.name << "' cell " << c + 1 << " is "
+          << (g.volume < 0 || g.min_corner_det < 0 ? "inverted" : "degenerate") << " (volume "
+          << g.volume << ", smallest corner Jacobian " << g.min_corner_det
+          << "); expected a positive volume with the Exodus node ordering";
+        fail(mesh, o.str());
+      }
+    }
+  }
+
+  for (const auto& set : mesh.node_sets)
+    for (auto node : set.nodes)
+      if (node < 0 || static_cast<std::size_t>(node) >= nodes)
+        fail(mesh, "node set '" + set.name + "' refers to node " + std::to_string(node + 1) +
+                       ", outside 1.." + std::to_string(nodes));
+
+  const auto cells = mesh.cell_count();
+  for (const auto& set : mesh.side_sets) {
+    if (set.cells.size() != set.sides.size())
+      fail(mesh, "side set '" + set.name + "' has different numbers of cells and sides");
+    for (std::size_t i = 0; i < set.cells.size(); ++i) {
+      const auto cell = set.cells[i];
+      if (cell < 0 || static_cast<std::size_t>(cell) >= cells)
+        fail(mesh, "side set '" + set.name + "' refers to cell " + std::to_string(cell + 1) +
+                       ", outside 1.." + std::to_string(cells));
+      const auto type = mesh.locate_cell(static_cast<std::size_t>(cell)).first->type;
+      if (set.sides[i] < 0 || set.sides[i] >= cell_side_count(type))
+        fail(mesh, "side set '" + set.name + "' names side " + std::to_string(set.sides[i] + 1) +
+                       " of a " + cell_scene_name(type) + " cell, which has " +
+                       std::to_string(cell_side_count(type)) + " sides");
+    }
+  }
+}
+
+}  // namespace efg

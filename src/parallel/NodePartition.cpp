@@ -1,0 +1,80 @@
+#include "parallel/NodePartition.hpp"
+
+#include <Teuchos_CommHelpers.hpp>
+#include <Zoltan2_BasicVectorAdapter.hpp>
+#include <Zoltan2_PartitioningProblem.hpp>
+
+#include <algorithm>
+
+#include "geometry/PointBins.hpp"
+
+namespace efg {
+namespace {
+
+using ZoltanTypes = Zoltan2::BasicUserTypes<double, int, long long>;
+using CoordinateAdapter = Zoltan2::BasicVectorAdapter<ZoltanTypes>;
+
+// Rank r first holds the contiguous slice [begin(r), begin(r+1)) of the nodes; Zoltan2 moves
+// them to their RCB parts.
+std::size_t slice_begin(std::size_t n, int rank, int size) {
+  return n * static_cast<std::size_t>(rank) / static_cast<std::size_t>(size);
+}
+
+}  // namespace
+
+NodePartition partition_nodes(const CommPtr& comm, const BackgroundMesh& mesh) {
+  NodePartition p;
+  p.rank = comm->getRank();
+  p.size = comm->getSize();
+  const std::size_t n = mesh.node_count();
+  p.owner.assign(n, 0);
+  if (p.size > 1) {
+    const auto begin = slice_begin(n, p.rank, p.size), end = slice_begin(n, p.rank + 1, p.size);
+    const auto local = end - begin;
+    std::vector<long long> ids(local);
+    std::vector<double> xyz[3];
+    const auto dim = static_cast<std::size_t>(mesh.dimension);
+    for (std::size_t i = 0; i < local; ++i) {
+      ids[i] = static_cast<long long>(begin + i);
+      for (std::size_t d = 0; d < dim; ++d) xyz[d].push_back(mesh.coordinates[(begin + i) * dim + d]);
+    }
+    CoordinateAdapter adapter(static_cast<int>(local), ids.data(), xyz[0].data(), xyz[1].data(),
+                              dim == 3 ? xyz[2].data() : nullptr);
+    Teuchos::ParameterList params("efg node partition");
+    params.set("algorithm", "rcb");
+    params.set("num_global_parts", p.size);
+    params.set("partitioning_approach", "partition");
+    Zoltan2::PartitioningProblem<CoordinateAdapter> problem(&adapter, &params, comm);
+    problem.solve();
+    const auto* parts = problem.getSolution().getPartListView();
+    std::vector<int> mine(n, 0);
+    for (std::size_t i = 0; i < local; ++i) mine[begin + i] = parts[i];
+    // Every node appears in exactly one slice, so a sum over ranks assembles the owner map.
+    Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, static_cast<int>(n), mine.data(), p.owner.data());
+  }
+  for (std::size_t i = 0; i < n; ++i)
+    if (p.owner[i] == p.rank) p.owned.push_back(static_cast<LocalIndex>(i));
+  return p;
+}
+
+std::vector<LocalIndex> ghost_layer(const BackgroundMesh& mesh, const std::vector<int>& owner, int rank,
+                                    double radius) {
+  const auto n = mesh.node_count();
+  const auto dim = static_cast<std::size_t>(mesh.dimension);
+  std::vector<char> needed(n, 0);
+  if (radius > 0) {
+    const PointBins bins(mesh.coordinates.data(), n, mesh.dimension, radius);
+    for (std::size_t i = 0; i < n; ++i) {
+      if (owner[i] != rank) continue;
+      bins.for_each_within(mesh.coordinates.data() + i * dim, radius, [&](std::size_t j) {
+        if (owner[j] != rank) needed[j] = 1;
+      });
+    }
+  }
+  std::vector<LocalIndex> ghosts;
+  for (std::size_t j = 0; j < n; ++j)
+    if (needed[j]) ghosts.push_back(static_cast<LocalIndex>(j));
+  return ghosts;
+}
+
+}  // namespace efg

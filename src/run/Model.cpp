@@ -1,0 +1,43 @@
+#include "run/Model.hpp"
+
+#include <Teuchos_TimeMonitor.hpp>
+
+#include "io/ExodusReader.hpp"
+#include "mesh/MeshGenerator.hpp"
+#include "mesh/MeshValidation.hpp"
+#include "parallel/MeshBroadcast.hpp"
+#include "parallel/RootBroadcast.hpp"
+#include "scene/SceneMeshChecks.hpp"
+#include "scene/SceneReader.hpp"
+
+namespace efg {
+
+Scene load_scene(const CommPtr& comm, const std::string& scene_file) {
+  const auto text = produce_on_root(comm, [&] {
+    const auto t = read_scene_text(scene_file);
+    return std::vector<char>(t.begin(), t.end());
+  });
+  return parse_scene(std::string(text.begin(), text.end()), scene_file);
+}
+
+BackgroundMesh load_mesh(const CommPtr& comm, const Scene& scene) {
+  auto mesh = load_on_root_and_broadcast(comm, [&] {
+    auto m = scene.generator ? generate_mesh(*scene.generator) : read_exodus_mesh(scene.mesh_file);
+    validate_mesh(m);
+    return m;
+  });
+  check_scene_against_mesh(scene, mesh);
+  return mesh;
+}
+
+Model build_model(const CommPtr& comm, const std::string& scene_file) {
+  Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewCounter("efg: setup (scene, mesh, partition)"));
+  Model model;
+  model.scene = load_scene(comm, scene_file);
+  model.mesh = load_mesh(comm, model.scene);
+  model.partition = partition_nodes(comm, model.mesh);
+  model.maps = make_dof_maps(comm, model.partition, model.mesh.dimension);
+  return model;
+}
+
+}  // namespace efg

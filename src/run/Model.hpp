@@ -1,0 +1,28 @@
+// Everything a run knows before its first stage: the validated scene, the background mesh on
+// every rank, the particle partition and the Tpetra maps. Built completely (and so every input
+// error found) before any output file is touched.
+#pragma once
+
+#include "mesh/BackgroundMesh.hpp"
+#include "parallel/DofMaps.hpp"
+#include "parallel/NodePartition.hpp"
+#include "scene/Scene.hpp"
+
+namespace efg {
+
+struct Model {
+  Scene scene;
+  BackgroundMesh mesh;
+  NodePartition partition;
+  DofMaps maps;
+};
+
+/// Reads the scene (rank 0 reads the file), loads or generates the mesh (rank 0) and checks them
+/// against each other; throws InputError on every rank when anything is wrong.
+Scene load_scene(const CommPtr& comm, const std::string& scene_file);
+BackgroundMesh load_mesh(const CommPtr& comm, const Scene& scene);
+
+/// load_scene + load_mesh + partition + maps (one displacement dof per dimension).
+Model build_model(const CommPtr& comm, const std::string& scene_file);
+
+}  // namespace efg

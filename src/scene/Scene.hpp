@@ -1,0 +1,118 @@
+// A validated scene: typed, defaults filled in, cross-references checked. Built by read_scene().
+#pragma once
+
+#include <yaml-cpp/yaml.h>
+
+#include <array>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "mesh/MeshGenerator.hpp"
+
+namespace efg {
+
+enum class Basis { linear, quadratic };
+enum class KernelType { cubic_spline, quadratic_spline, quartic_spline };
+enum class SupportShape { box, sphere };
+enum class SpacingMeasure { cells, neighbors };
+enum class Integration { scni, nodal, gauss };
+enum class Formulation { small_strain, total_lagrangian };
+
+struct SectionSpec {
+  Basis basis = Basis::linear;
+  KernelType kernel = KernelType::cubic_spline;
+  SupportShape support = SupportShape::box;
+  std::vector<double> dilation = {1.5};  ///< one value, or one per direction
+  SpacingMeasure spacing = SpacingMeasure::cells;
+  bool per_part_support = false;
+  Integration integration = Integration::scni;
+  int gauss_order = 2;
+  Formulation formulation = Formulation::small_strain;
+};
+
+struct PartSpec {
+  std::string name;
+  std::vector<std::string> blocks;
+  std::string material;
+  SectionSpec section;
+  double thickness = 1.0;
+  bool plane_stress = false;
+};
+
+struct MaterialSpec {
+  std::string name;
+  std::string model;
+  std::optional<double> density;
+  std::map<std::string, double> constants;  ///< model constants by key name
+};
+
+struct BoundaryConditionSpec {
+  std::string name;
+  std::string type;  ///< displacement | velocity
+  std::string node_set;
+  std::string method;
+  double penalty = 1e4;
+  std::array<std::optional<double>, 3> components;
+  std::string curve;  ///< empty: constant
+};
+
+struct LoadSpec {
+  std::string name;
+  std::string type;  ///< traction | pressure | nodal_force | body_force
+  std::string set;   ///< side set or node set; empty for body forces
+  std::vector<std::string> parts;
+  std::vector<double> value;
+  std::string curve;
+};
+
+struct InitialConditionSpec {
+  std::string type;
+  std::string node_set;
+  std::vector<double> value;
+};
+
+struct CurveSpec {
+  std::string name;
+  std::vector<double> time, value;
+};
+
+struct StageSpec {
+  std::string name;
+  std::string driver;  ///< implicit | explicit
+  double end_time = 1.0;
+  std::optional<double> output_interval;
+  YAML::Node settings;  ///< the driver's own keys, resolved (defaults filled)
+};
+
+struct OutputSpec {
+  std::string file;
+  std::vector<std::string> fields;
+  std::string history;
+};
+
+struct Scene {
+  std::string file;       ///< scene file path as given
+  std::string directory;  ///< folder of the scene file, for relative paths
+  std::string name;       ///< scene file name without folder and extension
+  std::string title;
+  std::string mesh_file;  ///< resolved path, empty when generated
+  std::optional<GeneratorSpec> generator;
+  std::vector<PartSpec> parts;
+  std::vector<MaterialSpec> materials;
+  std::vector<BoundaryConditionSpec> boundary_conditions;
+  std::vector<LoadSpec> loads;
+  std::vector<InitialConditionSpec> initial_conditions;
+  std::vector<CurveSpec> curves;
+  std::vector<StageSpec> stages;
+  OutputSpec output;
+  YAML::Node verification;  ///< null when absent
+
+  YAML::Node document;  ///< as written, with line marks (for cross-reference messages)
+  YAML::Node resolved;  ///< validated, defaults filled (printed by `efg check`)
+
+  const MaterialSpec* find_material(const std::string& name) const;
+};
+
+}  // namespace efg

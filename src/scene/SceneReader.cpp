@@ -1,0 +1,265 @@
+#include "scene/SceneReader.hpp"
+
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "core/Errors.hpp"
+#include "scene/SceneSchema.hpp"
+#include "scene/SchemaValidator.hpp"
+
+namespace efg {
+namespace {
+
+namespace fs = std::filesystem;
+
+template <class T>
+std::vector<T> as_vector(const YAML::Node& node) {
+  std::vector<T> v;
+  for (const auto& item : node) v.push_back(item.as<T>());
+  return v;
+}
+
+std::string opt_string(const YAML::Node& node, const char* key) {
+  return node[key] ? node[key].as<std::string>() : std::string();
+}
+
+template <class Enum>
+Enum enum_of(const std::string& value, const std::vector<std::pair<const char*, Enum>>& table) {
+  for (const auto& [name, e] : table)
+    if (value == name) return e;
+  throw std::logic_error("schema and enum table disagree on '" + value + "'");
+}
+
+class SceneBuilder {
+ public:
+  SceneBuilder(Scene& scene) : s_(scene) {}
+
+  [[noreturn]] void fail(const YAML::Node& at, const std::string& path, const std::string& message) const {
+    throw InputError(schema::located_message(s_.file, at, path, message));
+  }
+
+  void build() {
+    const auto& r = s_.resolved;
+    const auto& d = s_.document;
+    s_.title = r["title"].as<std::string>();
+    build_mesh(r["mesh"], d["mesh"]);
+    for (std::size_t i = 0; i < r["materials"].size(); ++i) build_material(r["materials"][i]);
+    for (std::size_t i = 0; i < r["parts"].size(); ++i) build_part(r["parts"][i], d["parts"][i], i);
+    for (std::size_t i = 0; i < r["curves"].size(); ++i) build_curve(r["curves"][i], d["curves"][i], i);
+    for (std::size_t i = 0; i < r["boundary_conditions"].size(); ++i)
+      build_bc(r["boundary_conditions"][i], d["boundary_conditions"][i], i);
+    for (std::size_t i = 0; i < r["loads"].size(); ++i) build_load(r["loads"][i], d["loads"][i], i);
+    for (const auto& ic : r["initial_conditions"])
+      s_.initial_conditions.push_back({ic["type"].as<std::string>(), ic["node_set"].as<std::string>(),
+                                       as_vector<double>(ic["value"])});
+    for (std::size_t i = 0; i < r["stages"].size(); ++i) build_stage(r["stages"][i], d["stages"][i], i);
+    s_.output.file = r["output"]["file"] ? r["output"]["file"].as<std::string>() : s_.name + ".e";
+    s_.output.fields = as_vector<std::string>(r["output"]["fields"]);
+    s_.output.history = opt_string(r["output"], "history");
+    if (r["verification"]) s_.verification = r["verification"];
+  }
+
+ private:
+  void build_mesh(const YAML::Node& m, const YAML::Node& doc) {
+    if (m["file"]) {
+      const fs::path given = m["file"].as<std::string>();
+      const fs::path path = given.is_absolute() ? given : fs::path(s_.directory) / given;
+      s_.mesh_file = path.lexically_normal().string();
+      std::ifstream probe(s_.mesh_file, std::ios::binary);
+      if (!probe)
+        fail(doc["file"], "mesh.file", "cannot read mesh file '" + s_.mesh_file + "' (expected an existing, readable Exodus II file)");
+      return;
+    }
+    const auto& g = m["generate"];
+    GeneratorSpec spec;
+    spec.element = enum_of<CellType>(g["element"].as<std::string>(),
+                                     {{"quad4", CellType::quad4}, {"tri3", CellType::tri3}, {"hex8", CellType::hex8},
+                                      {"tet4", CellType::tet4}, {"wedge6", CellType::wedge6}});
+    spec.dimension = cell_dimension(spec.element);
+    const auto dim = static_cast<std::size_t>(spec.dimension);
+    for (const char* key : {"lower", "upper", "cells"})
+      if (g[key].size() != dim)
+        fail(doc["generate"][key], std::string("mesh.generate.") + key,
+             "expected " + std::to_string(dim) + " entries for a " + std::to_string(dim) + "D " +
+                 g["element"].as<std::string>() + " mesh, found " + std::to_string(g[key].size()));
+    for (std::size_t i = 0; i < dim; ++i) {
+      spec.lower[i] = g["lower"][i].as<double>();
+      spec.upper[i] = g["upper"][i].as<double>();
+      spec.cells[i] = g["cells"][i].as<int>();
+      if (!(spec.upper[i] > spec.lower[i]))
+        fail(doc["generate"]["upper"][i], "mesh.generate.upper[" + std::to_string(i) + "]",
+             "expected a value greater than lower[" + std::to_string(i) + "] = " + g["lower"][i].Scalar());
+    }
+    spec.perturbation = g["perturbation"].as<double>();
+    spec.seed = g["seed"].as<std::uint64_t>();
+    spec.block_name = g["block_name"].as<std::string>();
+    s_.generator = spec;
+  }
+
+  void build_material(const YAML::Node& m) {
+    MaterialSpec mat;
+    mat.name = m["name"].as<std::string>();
+    mat.model = m["model"].as<std::string>();
+    if (m["density"]) mat.density = m["density"].as<double>();
+    for (const auto& kv : m) {
+      const auto key = kv.first.as<std::string>();
+      if (key != "name" && key != "model" && key != "density") mat.constants[key] = kv.second.as<double>();
+    }
+    s_.materials.push_back(mat);
+  }
+
+  void build_part(const YAML::Node& p, const YAML::Node& doc, std::size_t i) {
+    const std::string path = "parts[" + std::to_string(i) + "]";
+    PartSpec part;
+    part.name = p["name"].as<std::string>();
+    part.blocks = as_vector<std::string>(p["blocks"]);
+    part.material = p["material"].as<std::string>();
+    part.thickness = p["thickness"].as<double>();
+    part.plane_stress = p["plane"].as<std::string>() == "stress";
+    const auto* material = s_.find_material(part.material);
+    if (!material) {
+      std::string names;
+      for (const auto& m : s_.materials) names += (names.empty() ? "" : ", ") + m.name;
+      fail(doc["material"], path + ".material", "no material named '" + part.material + "'; materials: " + names);
+    }
+    const auto& sec = p["section"];
+    auto& out = part.section;
+    out.basis = enum_of<Basis>(sec["basis"].as<std::string>(), {{"linear", Basis::linear}, {"quadratic", Basis::quadratic}});
+    out.kernel = enum_of<KernelType>(sec["kernel"].as<std::string>(),
+                                     {{"cubic_spline", KernelType::cubic_spline},
+                                      {"quadratic_spline", KernelType::quadratic_spline},
+                                      {"quartic_spline", KernelType::quartic_spline}});
+    out.support = enum_of<SupportShape>(sec["support"].as<std::string>(), {{"box", SupportShape::box}, {"sphere", SupportShape::sphere}});
+    out.dilation = as_vector<double>(sec["dilation"]);
+    out.spacing = enum_of<SpacingMeasure>(sec["spacing"].as<std::string>(),
+                                          {{"cells", SpacingMeasure::cells}, {"neighbors", SpacingMeasure::neighbors}});
+    out.per_part_support = sec["support_size"].as<std::string>() == "per_part";
+    out.integration = enum_of<Integration>(sec["integration"].as<std::string>(),
+                                           {{"scni", Integration::scni}, {"nodal", Integration::nodal}, {"gauss", Integration::gauss}});
+    out.gauss_order = sec["gauss_order"].as<int>();
+    out.formulation = enum_of<Formulation>(sec["formulation"].as<std::string>(),
+                                           {{"small_strain", Formulation::small_strain},
+                                            {"total_lagrangian", Formulation::total_lagrangian}});
+    if (out.support == SupportShape::sphere && out.dilation.size() > 1)
+      fail(doc["section"]["dilation"], path + ".section.dilation",
+           "a sphere support takes one dilation value, found " + std::to_string(out.dilation.size()));
+    if (material->model == "neo_hookean" && out.formulation != Formulation::total_lagrangian) {
+      const YAML::Node at = doc["section"] && doc["section"]["formulation"] ? doc["section"]["formulation"] : doc["material"];
+      fail(at, path + ".section.formulation",
+           "material '" + material->name + "' (model neo_hookean) is a finite-strain model: expected formulation total_lagrangian, found " +
+               sec["formulation"].as<std::string>());
+    }
+    s_.parts.push_back(part);
+  }
+
+  void build_curve(const YAML::Node& c, const YAML::Node& doc, std::size_t i) {
+    const std::string path = "curves[" + std::to_string(i) + "]";
+    CurveSpec curve{c["name"].as<std::string>(), as_vector<double>(c["time"]), as_vector<double>(c["value"])};
+    if (curve.time.size() != curve.value.size())
+      fail(doc["value"], path + ".value",
+           "expected as many values as times (" + std::to_string(curve.time.size()) + "), found " + std::to_string(curve.value.size()));
+    for (std::size_t k = 1; k < curve.time.size(); ++k)
+      if (!(curve.time[k] > curve.time[k - 1]))
+        fail(doc["time"][k], path + ".time[" + std::to_string(k) + "]", "expected strictly increasing times, found " +
+                                                                       doc["time"][k].Scalar() + " after " + doc["time"][k - 1].Scalar());
+    s_.curves.push_back(curve);
+  }
+
+  void require_curve(const YAML::Node& doc, const std::string& path, const std::string& name) const {
+    if (name.empty()) return;
+    for (const auto& c : s_.curves)
+      if (c.name == name) return;
+    fail(doc["curve"], path + ".curve", "no curve named '" + name + "' in curves");
+  }
+
+  void build_bc(const YAML::Node& b, const YAML::Node& doc, std::size_t i) {
+    const std::string path = "boundary_conditions[" + std::to_string(i) + "]";
+    BoundaryConditionSpec bc;
+    bc.name = b["name"].as<std::string>();
+    bc.type = b["type"].as<std::string>();
+    bc.node_set = b["node_set"].as<std::string>();
+    bc.method = b["method"].as<std::string>();
+    bc.penalty = b["penalty"].as<double>();
+    const char* axes[3] = {"x", "y", "z"};
+    for (std::size_t c = 0; c < 3; ++c)
+      if (b[axes[c]]) bc.components[c] = b[axes[c]].as<double>();
+    bc.curve = opt_string(b, "curve");
+    require_curve(doc, path, bc.curve);
+    s_.boundary_conditions.push_back(bc);
+  }
+
+  void build_load(const YAML::Node& l, const YAML::Node& doc, std::size_t i) {
+    const std::string path = "loads[" + std::to_string(i) + "]";
+    LoadSpec load;
+    load.name = l["name"].as<std::string>();
+    load.type = l["type"].as<std::string>();
+    load.set = l["side_set"] ? l["side_set"].as<std::string>() : opt_string(l, "node_set");
+    if (l["parts"]) load.parts = as_vector<std::string>(l["parts"]);
+    load.value = l["value"].IsSequence() ? as_vector<double>(l["value"]) : std::vector<double>{l["value"].as<double>()};
+    load.curve = opt_string(l, "curve");
+    require_curve(doc, path, load.curve);
+    for (std::size_t k = 0; k < load.parts.size(); ++k) {
+      bool found = false;
+      for (const auto& p : s_.parts) found = found || p.name == load.parts[k];
+      if (!found) fail(doc["parts"][k], path + ".parts[" + std::to_string(k) + "]", "no part named '" + load.parts[k] + "'");
+    }
+    s_.loads.push_back(load);
+  }
+
+  void build_stage(const YAML::Node& st, const YAML::Node& doc, std::size_t i) {
+    StageSpec stage;
+    stage.name = st["name"].as<std::string>();
+    stage.driver = st["driver"].as<std::string>();
+    stage.end_time = st["end_time"].as<double>();
+    if (st["output_interval"]) stage.output_interval = st["output_interval"].as<double>();
+    stage.settings = st;
+    if (stage.driver == "explicit")
+      for (std::size_t p = 0; p < s_.parts.size(); ++p)
+        if (!s_.find_material(s_.parts[p].material)->density)
+          fail(doc["driver"], "stages[" + std::to_string(i) + "].driver",
+               "an explicit stage needs a density for every material; material '" + s_.parts[p].material + "' has none");
+    s_.stages.push_back(stage);
+  }
+
+  Scene& s_;
+};
+
+}  // namespace
+
+const MaterialSpec* Scene::find_material(const std::string& material_name) const {
+  for (const auto& m : materials)
+    if (m.name == material_name) return &m;
+  return nullptr;
+}
+
+std::string read_scene_text(const std::string& file) {
+  std::ifstream in(file);
+  if (!in) throw InputError(file + ": cannot read the scene file (expected an existing, readable YAML file)");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+Scene parse_scene(const std::string& text, const std::string& file) {
+  Scene scene;
+  scene.file = file;
+  const fs::path p(file);
+  scene.directory = p.has_parent_path() ? p.parent_path().string() : ".";
+  scene.name = p.stem().string();
+  try {
+    scene.document = YAML::Load(text);
+  } catch (const YAML::ParserException& e) {
+    throw InputError(file + ":" + std::to_string(e.mark.line + 1) + ":" + std::to_string(e.mark.column + 1) +
+                     ": YAML syntax error: " + e.msg);
+  }
+  if (!scene.document.IsMap())
+    throw InputError(file + ": expected a YAML map of scene sections (mesh, parts, materials, ...), found " +
+                     (scene.document.IsNull() ? std::string("an empty document") : std::string("something else")));
+  scene.resolved = schema::validate(scene.document, scene_schema(), file);
+  SceneBuilder(scene).build();
+  return scene;
+}
+
+}  // namespace efg

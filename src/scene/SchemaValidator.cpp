@@ -1,0 +1,265 @@
+#include "scene/SchemaValidator.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "core/Errors.hpp"
+#include "scene/Suggest.hpp"
+
+namespace efg::schema {
+
+std::string located_message(const std::string& file, const YAML::Node& node, const std::string& path,
+                            const std::string& message) {
+  std::ostringstream o;
+  o << file;
+  const auto mark = node.Mark();
+  if (mark.line >= 0) o << ":" << mark.line + 1 << ":" << mark.column + 1;
+  o << ": " << (path.empty() ? "(top level)" : path) << ": " << message;
+  return o.str();
+}
+
+namespace {
+
+std::string join(const std::vector<std::string>& words, const std::string& sep = ", ") {
+  std::string s;
+  for (std::size_t i = 0; i < words.size(); ++i) s += (i ? sep : "") + words[i];
+  return s;
+}
+
+std::string child_path(const std::string& parent, const std::string& key) {
+  return parent.empty() ? key : parent + "." + key;
+}
+
+std::string describe_found(const YAML::Node& node) {
+  if (!node.IsDefined() || node.IsNull()) return "nothing";
+  if (node.IsMap()) return "a map";
+  if (node.IsSequence()) return "a list";
+  return "'" + node.Scalar() + "'";
+}
+
+bool is_quoted(const YAML::Node& node) { return node.Tag() == "!"; }
+
+class Validator {
+ public:
+  explicit Validator(std::string file) : file_(std::move(file)) {}
+
+  YAML::Node check(const YAML::Node& node, const Spec& spec, const std::string& path) {
+    switch (spec.type) {
+      case Type::map: return check_map(node, spec, path);
+      case Type::list: return check_list(node, spec, path);
+      case Type::passthrough:
+        if (!node.IsNull() && !node.IsMap()) fail(node, path, "expected a map of solver parameters, found " + describe_found(node));
+        return node.IsNull() ? YAML::Node(YAML::NodeType::Map) : YAML::Clone(node);
+      case Type::real_list:
+      case Type::integer_list:
+      case Type::string_list: return check_scalar_list(node, spec, path);
+      default: return check_scalar(node, spec, path);
+    }
+  }
+
+ private:
+  [[noreturn]] void fail(const YAML::Node& node, const std::string& path, const std::string& message) const {
+    throw InputError(located_message(file_, node, path, message));
+  }
+
+  YAML::Node check_scalar(const YAML::Node& node, const Spec& spec, const std::string& path) {
+    const std::string expected = "expected " + article(spec) + describe_expected(spec);
+    if (!node.IsScalar()) fail(node, path, expected + ", found " + describe_found(node));
+    switch (spec.type) {
+      case Type::real: check_number(node, spec, path, false); break;
+      case Type::integer: check_number(node, spec, path, true); break;
+      case Type::boolean: {
+        bool b = false;
+        if (is_quoted(node) || !YAML::convert<bool>::decode(node, b))
+          fail(node, path, expected + ", found " + describe_found(node));
+        break;
+      }
+      case Type::choice: check_choice(node, spec, path); break;
+      default: break;
+    }
+    return YAML::Clone(node);
+  }
+
+  static std::string article(const Spec& spec) {
+    return spec.type == Type::integer ? "an " : (spec.type == Type::choice ? "" : "a ");
+  }
+
+  static std::string describe_expected(const Spec& spec) {
+    if (spec.type == Type::choice) return "one of " + join(spec.choices);
+    std::string text = spec.type_name();
+    if (!spec.range_text().empty()) text += " " + spec.range_text();
+    return text;
+  }
+
+  double check_number(const YAML::Node& node, const Spec& spec, const std::string& path, bool integral) {
+    double value = 0;
+    bool ok = !is_quoted(node);
+    if (ok && integral) {
+      long long i = 0;
+      ok = YAML::convert<long long>::decode(node, i);
+      value = static_cast<double>(i);
+    } else if (ok) {
+      ok = YAML::convert<double>::decode(node, value) && std::isfinite(value);
+    }
+    const std::string expected = std::string("expected ") + (integral ? "an integer" : "a finite real") +
+                                 (spec.range_text().empty() ? "" : " " + spec.range_text());
+    if (!ok) fail(node, path, expected + ", found " + describe_found(node));
+    const bool below = spec.min && (spec.min_exclusive ? value <= *spec.min : value < *spec.min);
+    const bool above = spec.max && (spec.max_exclusive ? value >= *spec.max : value > *spec.max);
+    if (below || above) fail(node, path, expected + ", found " + node.Scalar());
+    return value;
+  }
+
+  void check_choice(const YAML::Node& node, const Spec& spec, const std::string& path) {
+    const auto& v = node.Scalar();
+    for (const auto& c : spec.choices)
+      if (c == v) return;
+    std::string message = "'" + v + "' is not one of " + join(spec.choices);
+    if (auto s = closest_match(v, spec.choices)) message += " (did you mean '" + *s + "'?)";
+    fail(node, path, message);
+  }
+
+  YAML::Node check_scalar_list(const YAML::Node& node, const Spec& spec, const std::string& path) {
+    YAML::Node items(YAML::NodeType::Sequence);
+    std::vector<YAML::Node> given;
+    if (node.IsSequence()) {
+      for (const auto& item : node) given.push_back(item);
+    } else if (node.IsScalar() && spec.scalar_allowed) {
+      given.push_back(node);
+    } else {
+      fail(node, path, "expected a " + spec.type_name() + ", found " + describe_found(node));
+    }
+    if (given.size() < spec.min_items || given.size() > spec.max_items) {
+      std::string count = spec.min_items == spec.max_items
+                              ? std::to_string(spec.min_items)
+                              : (spec.max_items == std::numeric_limits<std::size_t>::max()
+                                     ? "at least " + std::to_string(spec.min_items)
+                                     : std::to_string(spec.min_items) + " to " + std::to_string(spec.max_items));
+      fail(node, path, "expected " + count + " entries, found " + std::to_string(given.size()));
+    }
+    Spec item = spec;
+    item.type = spec.type == Type::real_list ? Type::real
+                : spec.type == Type::integer_list ? Type::integer
+                : spec.choices.empty() ? Type::string : Type::choice;
+    for (std::size_t i = 0; i < given.size(); ++i)
+      items.push_back(check_scalar(given[i], item, path + "[" + std::to_string(i) + "]"));
+    return items;
+  }
+
+  YAML::Node check_list(const YAML::Node& node, const Spec& spec, const std::string& path) {
+    YAML::Node out(YAML::NodeType::Sequence);
+    if (node.IsNull()) return out;
+    if (!node.IsSequence()) fail(node, path, "expected a list (entries starting with '- '), found " + describe_found(node));
+    if (node.size() < spec.min_items)
+      fail(node, path, "expected at least " + std::to_string(spec.min_items) + " entries, found " + std::to_string(node.size()));
+    std::map<std::string, int> names;
+    for (std::size_t i = 0; i < node.size(); ++i) {
+      const std::string item_path = path + "[" + std::to_string(i) + "]";
+      out.push_back(check(node[i], *spec.item, item_path));
+      if (spec.unique_names && node[i]["name"]) {
+        const auto name = node[i]["name"].Scalar();
+        auto [it, inserted] = names.emplace(name, node[i]["name"].Mark().line + 1);
+        if (!inserted)
+          fail(node[i]["name"], item_path + ".name",
+               "name '" + name + "' is used twice (first at line " + std::to_string(it->second) + "); names must be unique");
+      }
+    }
+    return out;
+  }
+
+  YAML::Node check_map(const YAML::Node& node, const Spec& spec, const std::string& path) {
+    if (!node.IsNull() && !node.IsMap())
+      fail(node, path, "expected a map (indented 'key: value' lines), found " + describe_found(node));
+
+    // Keys as written, with duplicate detection (yaml-cpp silently keeps one of them).
+    std::map<std::string, YAML::Node> given_values;
+    std::map<std::string, YAML::Node> given_keys;
+    std::vector<std::string> order;
+    if (node.IsMap()) {
+      for (const auto& kv : node) {
+        if (!kv.first.IsScalar()) fail(kv.first, path, "keys must be plain names");
+        const auto& k = kv.first.Scalar();
+        if (given_keys.count(k))
+          fail(kv.first, child_path(path, k),
+               "duplicate key (first given at line " + std::to_string(given_keys[k].Mark().line + 1) + ")");
+        given_keys[k] = kv.first;
+        given_values[k] = kv.second;
+        order.push_back(k);
+      }
+    }
+
+    std::vector<Key> allowed = spec.keys;
+    std::string variant;
+    if (!spec.discriminator.empty()) {
+      const Key* disc = nullptr;
+      for (const auto& k : spec.keys)
+        if (k.name == spec.discriminator) disc = &k;
+      if (given_values.count(spec.discriminator)) {
+        const auto& dn = given_values[spec.discriminator];
+        check(dn, *disc->spec, child_path(path, spec.discriminator));
+        variant = dn.Scalar();
+      } else if (disc && !disc->default_value.empty()) {
+        variant = disc->default_value;
+      }
+      if (spec.variants.count(variant))
+        allowed.insert(allowed.end(), spec.variants.at(variant).begin(), spec.variants.at(variant).end());
+    }
+
+    std::vector<std::string> allowed_names;
+    for (const auto& k : allowed) allowed_names.push_back(k.name);
+    for (const auto& k : order) {
+      if (std::find(allowed_names.begin(), allowed_names.end(), k) != allowed_names.end()) continue;
+      for (const auto& [other, keys] : spec.variants)
+        for (const auto& vk : keys)
+          if (vk.name == k)
+            fail(given_keys[k], child_path(path, k),
+                 "key not allowed with " + spec.discriminator + " '" + variant + "' (it belongs to " +
+                     spec.discriminator + " '" + other + "')");
+      std::string message = "unknown key '" + k + "'";
+      if (auto s = closest_match(k, allowed_names)) message += " (did you mean '" + *s + "'?)";
+      message += "; allowed keys here: " + join(allowed_names);
+      fail(given_keys[k], child_path(path, k), message);
+    }
+
+    for (const auto& group : spec.exactly_one_of) {
+      std::vector<std::string> present;
+      for (const auto& g : group)
+        if (given_values.count(g)) present.push_back(g);
+      if (present.size() != 1)
+        fail(node, path, "expected exactly one of " + join(group, ", ") + ", found " +
+                             (present.empty() ? "none" : join(present, " and ")));
+    }
+    for (const auto& group : spec.at_least_one_of) {
+      bool any = false;
+      for (const auto& g : group) any = any || given_values.count(g) > 0;
+      if (!any) fail(node, path, "expected at least one of " + join(group, ", "));
+    }
+
+    YAML::Node out(YAML::NodeType::Map);
+    for (const auto& k : allowed) {
+      const auto kp = child_path(path, k.name);
+      if (given_values.count(k.name)) {
+        out[k.name] = check(given_values[k.name], *k.spec, kp);
+      } else if (k.required) {
+        fail(node, path, "missing required key '" + k.name + "' (" + article(*k.spec) +
+                             describe_expected(*k.spec) + ": " + k.spec->doc + ")");
+      } else if (!k.default_value.empty()) {
+        out[k.name] = check(YAML::Load(k.default_value), *k.spec, kp);
+      }
+    }
+    return out;
+  }
+
+  std::string file_;
+};
+
+}  // namespace
+
+YAML::Node validate(const YAML::Node& document, const Spec& spec, const std::string& file) {
+  return Validator(file).check(document, spec, "");
+}
+
+}  // namespace efg::schema
