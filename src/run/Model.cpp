@@ -7,7 +7,9 @@
 #include "mesh/MeshValidation.hpp"
 #include "parallel/MeshBroadcast.hpp"
 #include "parallel/RootBroadcast.hpp"
+#include "core/Errors.hpp"
 #include "scene/SceneMeshChecks.hpp"
+#include "scene/SchemaValidator.hpp"
 #include "scene/SceneReader.hpp"
 
 namespace efg {
@@ -22,9 +24,16 @@ Scene load_scene(const CommPtr& comm, const std::string& scene_file) {
 
 BackgroundMesh load_mesh(const CommPtr& comm, const Scene& scene) {
   auto mesh = load_on_root_and_broadcast(comm, [&] {
-    auto m = scene.generator ? generate_mesh(*scene.generator) : read_exodus_mesh(scene.mesh_file);
-    validate_mesh(m);
-    return m;
+    try {
+      auto m = scene.generator ? generate_mesh(*scene.generator) : read_exodus_mesh(scene.mesh_file);
+      validate_mesh(m);
+      return m;
+    } catch (const InputError& e) {
+      // Point at the scene key that named the mesh, then say what is wrong with it.
+      const auto key = scene.generator ? "generate" : "file";
+      throw InputError(schema::located_message(scene.file, scene.document["mesh"][key], std::string("mesh.") + key,
+                                               e.what()));
+    }
   });
   check_scene_against_mesh(scene, mesh);
   return mesh;

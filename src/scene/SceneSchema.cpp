@@ -18,7 +18,7 @@ SpecPtr mesh_spec() {
           .optional("perturbation",
                     real("Largest random node shift as a fraction of the cell size per direction; "
                          "boundary nodes move only within their boundary plane.", "-")
-                        .at_least(0).at_most(0.4),
+                        .at_least(0).at_most(0.3),
                     "0")
           .optional("seed", integer("Seed of the perturbation's random numbers.").at_least(0), "1")
           .optional("block_name", string("Name of the generated element block."), "block_1");

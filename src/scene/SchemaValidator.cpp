@@ -42,6 +42,11 @@ std::string describe_found(const YAML::Node& node) {
 
 bool is_quoted(const YAML::Node& node) { return node.Tag() == "!"; }
 
+std::string first_sentence(const std::string& doc) {
+  const auto end = doc.find(". ");
+  return end == std::string::npos ? doc : doc.substr(0, end + 1);
+}
+
 class Validator {
  public:
   explicit Validator(std::string file) : file_(std::move(file)) {}
@@ -245,7 +250,7 @@ class Validator {
         out[k.name] = check(given_values[k.name], *k.spec, kp);
       } else if (k.required) {
         fail(node, path, "missing required key '" + k.name + "' (" + article(*k.spec) +
-                             describe_expected(*k.spec) + ": " + k.spec->doc + ")");
+                             describe_expected(*k.spec) + ": " + first_sentence(k.spec->doc) + ")");
       } else if (!k.default_value.empty()) {
         out[k.name] = check(YAML::Load(k.default_value), *k.spec, kp);
       }

@@ -1,0 +1,171 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include <exodusII.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "core/Errors.hpp"
+#include "io/ExodusReader.hpp"
+#include "io/ExodusWriter.hpp"
+#include "mesh/MeshValidation.hpp"
+#include "support/TestMeshes.hpp"
+
+namespace efg {
+namespace {
+
+void expect_same_mesh(const BackgroundMesh& a, const BackgroundMesh& b) {
+  EXPECT_EQ(a.dimension, b.dimension);
+  EXPECT_EQ(a.coordinates, b.coordinates);  // bitwise: doubles are stored as doubles
+  ASSERT_EQ(a.blocks.size(), b.blocks.size());
+  for (std::size_t i = 0; i < a.blocks.size(); ++i) {
+    EXPECT_EQ(a.blocks[i].name, b.blocks[i].name);
+    EXPECT_EQ(a.blocks[i].id, b.blocks[i].id);
+    EXPECT_EQ(a.blocks[i].type, b.blocks[i].type);
+    EXPECT_EQ(a.blocks[i].connectivity, b.blocks[i].connectivity);
+  }
+  ASSERT_EQ(a.node_sets.size(), b.node_sets.size());
+  for (std::size_t i = 0; i < a.node_sets.size(); ++i) {
+    EXPECT_EQ(a.node_sets[i].name, b.node_sets[i].name);
+    EXPECT_EQ(a.node_sets[i].id, b.node_sets[i].id);
+    EXPECT_EQ(a.node_sets[i].nodes, b.node_sets[i].nodes);
+  }
+  ASSERT_EQ(a.side_sets.size(), b.side_sets.size());
+  for (std::size_t i = 0; i < a.side_sets.size(); ++i) {
+    EXPECT_EQ(a.side_sets[i].name, b.side_sets[i].name);
+    EXPECT_EQ(a.side_sets[i].cells, b.side_sets[i].cells);
+    EXPECT_EQ(a.side_sets[i].sides, b.side_sets[i].sides);
+  }
+}
+
+class RoundTrip : public ::testing::TestWithParam<CellType> {};
+
+TEST_P(RoundTrip, MeshAndEveryFieldComeBackEqual) {
+  const auto mesh = generate_mesh(test::box_spec(GetParam(), 2, 0.25));
+  const auto path = test::scratch_dir("roundtrip") + "/" + cell_scene_name(GetParam()) + ".e";
+  std::filesystem::remove(path);
+  OutputLayout layout;
+  layout.nodal = vector_component_names("displacement", mesh.dimension);
+  layout.nodal.push_back("nodal_volume");
+  layout.element = {"cell_value"};
+  layout.global = {"kinetic_energy", "internal_energy"};
+  std::vector<std::vector<std::vector<double>>> nodal_records;
+  std::vector<std::vector<double>> element_records, global_records;
+  {
+    ExodusWriter writer(path, mesh, layout, "round trip");
+    EXPECT_TRUE(std::filesystem::exists(path + ".part"));
+    EXPECT_FALSE(std::filesystem::exists(path));  // the final name appears only on close
+    for (int step = 0; step < 3; ++step) {
+      std::vector<std::vector<double>> nodal(layout.nodal.size(), std::vector<double>(mesh.node_count()));
+      for (std::size_t v = 0; v < nodal.size(); ++v)
+        for (std::size_t n = 0; n < mesh.node_count(); ++n)
+          nodal[v][n] = 1.0 / 3.0 * static_cast<double>(n) + 0.1 * static_cast<double>(v) - step * 1e-7;
+      std::vector<double> element(mesh.cell_count());
+      for (std::size_t c = 0; c < element.size(); ++c) element[c] = std::sqrt(2.0) * static_cast<double>(c + step);
+      const std::vector<double> global = {0.5 * step, -1.0 / 7.0 * step};
+      writer.write_record(0.1 * step, nodal, {element}, global);
+      nodal_records.push_back(nodal);
+      element_records.push_back(element);
+      global_records.push_back(global);
+    }
+    writer.close();
+  }
+  EXPECT_FALSE(std::filesystem::exists(path + ".part"));
+  expect_same_mesh(mesh, read_exodus_mesh(path));
+  const auto results = read_exodus_results(path);
+  ASSERT_EQ(results.times.size(), 3u);
+  for (std::size_t step = 0; step < 3; ++step) {
+    EXPECT_EQ(results.times[step], 0.1 * static_cast<double>(step));
+    for (std::size_t v = 0; v < layout.nodal.size(); ++v)
+      EXPECT_EQ(results.nodal.at(layout.nodal[v])[step], nodal_records[step][v]) << layout.nodal[v];
+    EXPECT_EQ(results.element.at("cell_value")[step], element_records[step]);
+    EXPECT_EQ(results.global.at("kinetic_energy")[step], global_records[step][0]);
+    EXPECT_EQ(results.global.at("internal_energy")[step], global_records[step][1]);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(AllElements, RoundTrip,
+                         ::testing::Values(CellType::quad4, CellType::tri3, CellType::hex8, CellType::tet4,
+                                           CellType::wedge6),
+                         [](const auto& p) { return cell_scene_name(p.param); });
+
+TEST(ExodusWriter, RefusesNonFiniteValues) {
+  const auto mesh = generate_mesh(test::box_spec(CellType::quad4, 1));
+  const auto path = test::scratch_dir("nonfinite") + "/nan.e";
+  ExodusWriter writer(path, mesh, OutputLayout{{"u"}, {}, {}}, "nan");
+  std::vector<double> u(mesh.node_count(), 0.0);
+  u[1] = std::nan("");
+  EXPECT_THROW(writer.write_record(0.0, {u}, {}, {}), std::logic_error);
+}
+
+TEST(ExodusWriter, UnclosedWriterLeavesEarlierResultUntouched) {
+  const auto mesh = generate_mesh(test::box_spec(CellType::quad4, 1));
+  const auto path = test::scratch_dir("unclosed") + "/result.e";
+  { std::ofstream(path) << "earlier result"; }
+  {
+    ExodusWriter writer(path, mesh, OutputLayout{{"u"}, {}, {}}, "crash");
+    writer.write_record(0.0, {std::vector<double>(mesh.node_count(), 1.0)}, {}, {});
+    // destroyed without close(): as if the run had died here
+  }
+  std::ifstream in(path);
+  std::string text;
+  std::getline(in, text);
+  EXPECT_EQ(text, "earlier result");
+  // The partial file is a readable Exodus file holding the record written before the "crash".
+  EXPECT_EQ(read_exodus_results(path + ".part").times.size(), 1u);
+}
+
+std::string read_error(const std::string& path) {
+  try {
+    read_exodus_mesh(path);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(ExodusReader, RejectsFilesThatAreNotExodus) {
+  const auto dir = test::scratch_dir("corrupt");
+  { std::ofstream(dir + "/text.e") << "this is not a mesh\n"; }
+  EXPECT_NE(read_error(dir + "/text.e").find("cannot be opened as Exodus II"), std::string::npos);
+  EXPECT_NE(read_error(dir + "/missing.e").find("cannot be opened"), std::string::npos);
+}
+
+// A truncated file must never come back as a valid mesh: either the reader or the mesh
+// validation (which every run applies) rejects it.
+TEST(ExodusReader, TruncatedFilesAreRejected) {
+  const auto dir = test::scratch_dir("truncated");
+  const auto mesh = generate_mesh(test::box_spec(CellType::hex8, 3));
+  {
+    ExodusWriter writer(dir + "/full.e", mesh, OutputLayout{}, "full");
+    writer.close();
+  }
+  const auto size = std::filesystem::file_size(dir + "/full.e");
+  for (double fraction : {0.05, 0.3, 0.6, 0.9, 0.99}) {
+    const auto cut = dir + "/cut.e";
+    std::filesystem::copy_file(dir + "/full.e", cut, std::filesystem::copy_options::overwrite_existing);
+    std::filesystem::resize_file(cut, static_cast<std::uintmax_t>(fraction * static_cast<double>(size)));
+    EXPECT_THROW(validate_mesh(read_exodus_mesh(cut)), InputError) << "kept " << fraction << " of the file";
+  }
+}
+
+TEST(ExodusReader, RejectsUnsupportedElementTypes) {
+  const auto path = test::scratch_dir("shell") + "/shell.e";
+  int cpu = 8, io = 8;
+  const int id = ex_create(path.c_str(), EX_CLOBBER, &cpu, &io);
+  ASSERT_GE(id, 0);
+  const double x[4] = {0, 1, 1, 0}, y[4] = {0, 0, 1, 1}, z[4] = {0, 0, 0, 0};
+  ASSERT_GE(ex_put_init(id, "shell", 3, 4, 1, 1, 0, 0), 0);
+  ASSERT_GE(ex_put_coord(id, x, y, z), 0);
+  ASSERT_GE(ex_put_block(id, EX_ELEM_BLOCK, 7, "SHELL4", 1, 4, 0, 0, 0), 0);
+  const int conn[4] = {1, 2, 3, 4};
+  ASSERT_GE(ex_put_conn(id, EX_ELEM_BLOCK, 7, conn, nullptr, nullptr), 0);
+  ex_close(id);
+  const auto error = read_error(path);
+  EXPECT_NE(error.find("element type 'SHELL4'"), std::string::npos) << error;
+}
+
+}  // namespace
+}  // namespace efg
