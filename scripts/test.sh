@@ -1,0 +1,16 @@
+#!/usr/bin/env bash
+# Installs what is missing, builds, and runs the whole test suite (unit, MPI on 1-3 ranks, CLI).
+# Extra arguments go to ctest, e.g. scripts/test.sh -L mpi
+set -euo pipefail
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+start=$(date +%s)
+"$here/scripts/setup.sh"
+built=$(date +%s)
+cd "${EFG_BUILD_DIR:-$here/build}"
+# Open MPI as root (CI containers) needs these; harmless otherwise.
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+status=0
+ctest --output-on-failure -j "${EFG_JOBS:-$(nproc)}" "$@" || status=$?
+end=$(date +%s)
+echo "efg tests: setup and build $((built - start)) s, tests $((end - built)) s"
+exit $status
