@@ -1,5 +1,7 @@
 #include "mesh/CellTopology.hpp"
 
+#include "mesh/GaussRules.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -28,65 +30,6 @@ const std::vector<std::vector<int>>& side_table(CellType type) {
   }
   throw std::logic_error("unknown cell type");
 }
-
-double det2(const double j[2][2]) { return j[0][0] * j[1][1] - j[0][1] * j[1][0]; }
-
-double det3(const double j[3][3]) {
-  return j[0][0] * (j[1][1] * j[2][2] - j[1][2] * j[2][1]) -
-         j[0][1] * (j[1][0] * j[2][2] - j[1][2] * j[2][0]) +
-         j[0][2] * (j[1][0] * j[2][1] - j[1][1] * j[2][0]);
-}
-
-// Jacobian determinant of an isoparametric cell at a reference point, from the shape function
-// derivatives dN[node][ref_dir].
-template <int Dim, int Nodes>
-double jacobian_det(const double* x, const double (&dN)[Nodes][Dim]) {
-  double j[Dim][Dim] = {};
-  for (int a = 0; a < Nodes; ++a)
-    for (int i = 0; i < Dim; ++i)
-      for (int r = 0; r < Dim; ++r) j[i][r] += x[a * Dim + i] * dN[a][r];
-  if constexpr (Dim == 2) {
-    return det2(j);
-  } else {
-    return det3(j);
-  }
-}
-
-void quad4_derivatives(double r, double s, double (&dN)[4][2]) {
-  const double rs[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
-  for (int a = 0; a < 4; ++a) {
-    dN[a][0] = 0.25 * rs[a][0] * (1 + rs[a][1] * s);
-    dN[a][1] = 0.25 * rs[a][1] * (1 + rs[a][0] * r);
-  }
-}
-
-void hex8_derivatives(double r, double s, double t, double (&dN)[8][3]) {
-  const double c[8][3] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
-                          {-1, -1, 1},  {1, -1, 1},  {1, 1, 1},  {-1, 1, 1}};
-  for (int a = 0; a < 8; ++a) {
-    dN[a][0] = 0.125 * c[a][0] * (1 + c[a][1] * s) * (1 + c[a][2] * t);
-    dN[a][1] = 0.125 * c[a][1] * (1 + c[a][0] * r) * (1 + c[a][2] * t);
-    dN[a][2] = 0.125 * c[a][2] * (1 + c[a][0] * r) * (1 + c[a][1] * s);
-  }
-}
-
-// Wedge: N = L_i(r, s) (1 -/+ t) / 2 with L = (1 - r - s, r, s), t in [-1, 1].
-void wedge6_derivatives(double r, double s, double t, double (&dN)[6][3]) {
-  const double l[3] = {1 - r - s, r, s};
-  const double dl[3][2] = {{-1, -1}, {1, 0}, {0, 1}};
-  for (int layer = 0; layer < 2; ++layer) {
-    const double h = layer == 0 ? 0.5 * (1 - t) : 0.5 * (1 + t);
-    const double dh = layer == 0 ? -0.5 : 0.5;
-    for (int i = 0; i < 3; ++i) {
-      const int a = 3 * layer + i;
-      dN[a][0] = dl[i][0] * h;
-      dN[a][1] = dl[i][1] * h;
-      dN[a][2] = l[i] * dh;
-    }
-  }
-}
-
-const double kGauss2 = 1.0 / std::sqrt(3.0);
 
 }  // namespace
 
@@ -148,74 +91,17 @@ std::optional<CellType> cell_type_from_exodus_name(const std::string& name) {
 }
 
 CellGeometry cell_geometry(CellType type, const double* x) {
+  // det J of the isoparametric map is a polynomial of degree <= 2 in each reference direction
+  // (trilinear hex, bilinear quad, wedge) or constant (simplices): 2-point rules are exact.
   CellGeometry g;
+  const auto rule = reference_rule(type, 2);
+  const auto dim = static_cast<std::size_t>(cell_dimension(type));
+  double point[3];
+  for (std::size_t q = 0; q < rule.weight.size(); ++q) g.volume += rule.weight[q] * map_to_cell(type, x, &rule.xi[q * dim], point);
   g.min_corner_det = std::numeric_limits<double>::max();
-  switch (type) {
-    case CellType::tri3: {
-      const double d = (x[2] - x[0]) * (x[5] - x[1]) - (x[4] - x[0]) * (x[3] - x[1]);
-      g.volume = 0.5 * d;
-      g.min_corner_det = d;
-      break;
-    }
-    case CellType::tet4: {
-      const double j[3][3] = {{x[3] - x[0], x[6] - x[0], x[9] - x[0]},
-                              {x[4] - x[1], x[7] - x[1], x[10] - x[1]},
-                              {x[5] - x[2], x[8] - x[2], x[11] - x[2]}};
-      const double d = det3(j);
-      g.volume = d / 6.0;
-      g.min_corner_det = d;
-      break;
-    }
-    case CellType::quad4: {
-      double dN[4][2];
-      // det J of a bilinear map is linear in each variable: 2x2 Gauss is exact.
-      for (double r : {-kGauss2, kGauss2})
-        for (double s : {-kGauss2, kGauss2}) {
-          quad4_derivatives(r, s, dN);
-          g.volume += jacobian_det<2, 4>(x, dN);
-        }
-      for (double r : {-1.0, 1.0})
-        for (double s : {-1.0, 1.0}) {
-          quad4_derivatives(r, s, dN);
-          g.min_corner_det = std::min(g.min_corner_det, jacobian_det<2, 4>(x, dN));
-        }
-      break;
-    }
-    case CellType::hex8: {
-      double dN[8][3];
-      // det J of a trilinear map is quadratic in each variable: 2x2x2 Gauss is exact.
-      for (double r : {-kGauss2, kGauss2})
-        for (double s : {-kGauss2, kGauss2})
-          for (double t : {-kGauss2, kGauss2}) {
-            hex8_derivatives(r, s, t, dN);
-            g.volume += jacobian_det<3, 8>(x, dN);
-          }
-      for (double r : {-1.0, 1.0})
-        for (double s : {-1.0, 1.0})
-          for (double t : {-1.0, 1.0}) {
-            hex8_derivatives(r, s, t, dN);
-            g.min_corner_det = std::min(g.min_corner_det, jacobian_det<3, 8>(x, dN));
-          }
-      break;
-    }
-    case CellType::wedge6: {
-      double dN[6][3];
-      // det J is linear in (r, s) and quadratic in t: 3-point triangle rule x 2-point Gauss.
-      const double tri[3][2] = {{1.0 / 6, 1.0 / 6}, {2.0 / 3, 1.0 / 6}, {1.0 / 6, 2.0 / 3}};
-      for (const auto& p : tri)
-        for (double t : {-kGauss2, kGauss2}) {
-          wedge6_derivatives(p[0], p[1], t, dN);
-          g.volume += jacobian_det<3, 6>(x, dN) / 6.0;
-        }
-      const double corners[3][2] = {{0, 0}, {1, 0}, {0, 1}};
-      for (const auto& p : corners)
-        for (double t : {-1.0, 1.0}) {
-          wedge6_derivatives(p[0], p[1], t, dN);
-          g.min_corner_det = std::min(g.min_corner_det, jacobian_det<3, 6>(x, dN));
-        }
-      break;
-    }
-  }
+  const auto corners = reference_corners(type);
+  for (std::size_t c = 0; c < corners.size() / dim; ++c)
+    g.min_corner_det = std::min(g.min_corner_det, map_to_cell(type, x, &corners[c * dim], point));
   return g;
 }
 

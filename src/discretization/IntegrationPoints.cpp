@@ -1,0 +1,175 @@
+#include "discretization/IntegrationPoints.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <string>
+
+#include "discretization/ShapeFunctions.hpp"
+#include "discretization/SmoothingFacets.hpp"
+#include "mesh/GaussRules.hpp"
+
+namespace efg {
+namespace {
+
+// The cloud index of every mesh node present in the cloud (-1 otherwise).
+std::vector<LocalIndex> cloud_index(const ParticleCloud& cloud, std::size_t node_count) {
+  std::vector<LocalIndex> index(node_count, -1);
+  for (std::size_t i = 0; i < cloud.size(); ++i) index[static_cast<std::size_t>(cloud.mesh_node[i])] = static_cast<LocalIndex>(i);
+  return index;
+}
+
+CsrTable table_from(const ShapeFunctionValues& v, bool gradients, int dim) {
+  CsrTable t;
+  t.width = gradients ? dim : 1;
+  t.offsets = v.neighbors.offsets;
+  t.particles = v.neighbors.particles;
+  t.values = gradients ? v.grad : v.phi;
+  return t;
+}
+
+// Points at particle positions (SCNI and nodal): the owned particles of the cloud.
+void add_nodal_points(const ParticleCloud& cloud, IntegrationPoints& ip) {
+  const auto dim = static_cast<std::size_t>(cloud.dimension);
+  for (std::size_t i = 0; i < cloud.owned_count; ++i) {
+    ip.x.insert(ip.x.end(), cloud.x(i), cloud.x(i) + dim);
+    ip.node.push_back(cloud.mesh_node[i]);
+  }
+}
+
+PointLabel node_label(const IntegrationPoints& ip, const char* what) {
+  return [&ip, what](std::size_t p) { return std::string(what) + " at particle " + std::to_string(ip.node[p] + 1); };
+}
+
+void build_nodal(const BackgroundMesh& mesh, const ParticleCloud& cloud, IntegrationPoints& ip) {
+  (void)mesh;
+  add_nodal_points(cloud, ip);
+  ip.weight.assign(cloud.volume.begin(), cloud.volume.begin() + static_cast<std::ptrdiff_t>(cloud.owned_count));
+  const auto v = evaluate_shape_functions(cloud, ip.x.data(), ip.node.size(), true, node_label(ip, "nodal integration point"));
+  ip.values = table_from(v, false, cloud.dimension);
+  ip.gradients = table_from(v, true, cloud.dimension);
+}
+
+void build_scni(const BackgroundMesh& mesh, const PartSpec& part, const ParticleCloud& cloud,
+                const std::vector<int>& owner, int rank, IntegrationPoints& ip) {
+  const auto dim = static_cast<std::size_t>(cloud.dimension);
+  add_nodal_points(cloud, ip);
+  const auto values = evaluate_shape_functions(cloud, ip.x.data(), ip.node.size(), false, node_label(ip, "SCNI node"));
+  ip.values = table_from(values, false, cloud.dimension);
+
+  std::vector<char> owned(mesh.node_count(), 0);
+  for (std::size_t n = 0; n < owned.size(); ++n) owned[n] = owner[n] == rank;
+  const auto points = smoothing_points(mesh, part.blocks, owned);
+  const auto volume = smoothing_domain_volumes(points, mesh.node_count(), cloud.dimension);
+  std::vector<double> coords;
+  for (const auto& p : points) coords.insert(coords.end(), p.x.begin(), p.x.begin() + static_cast<std::ptrdiff_t>(dim));
+  const auto phi = evaluate_shape_functions(cloud, coords.data(), points.size(), false, [&](std::size_t p) {
+    return "SCNI smoothing point " + std::to_string(p) + " next to particle " + std::to_string(points[p].plus + 1);
+  });
+
+  // Accumulate B~_I(x_L) V_L per owned node L, keyed by global particle id so that the sums run
+  // in the same order on any number of ranks.
+  const auto index = cloud_index(cloud, mesh.node_count());
+  std::vector<std::map<LocalIndex, std::array<double, 3>>> rows(cloud.owned_count);
+  auto accumulate = [&](LocalIndex node, std::size_t p, double sign) {
+    if (node < 0 || owner[static_cast<std::size_t>(node)] != rank) return;
+    auto& row = rows[static_cast<std::size_t>(index[static_cast<std::size_t>(node)])];
+    for (auto k = phi.neighbors.offsets[p]; k < phi.neighbors.offsets[p + 1]; ++k) {
+      auto& entry = row[cloud.mesh_node[static_cast<std::size_t>(phi.neighbors.particles[k])]];
+      for (std::size_t d = 0; d < dim; ++d) entry[d] += sign * phi.phi[k] * points[p].weighted_normal[d];
+    }
+  };
+  for (std::size_t p = 0; p < points.size(); ++p) {
+    accumulate(points[p].plus, p, 1.0);
+    accumulate(points[p].minus, p, -1.0);
+  }
+  ip.gradients.width = cloud.dimension;
+  ip.gradients.offsets.assign(1, 0);
+  for (std::size_t l = 0; l < cloud.owned_count; ++l) {
+    const double v = volume[static_cast<std::size_t>(cloud.mesh_node[l])];
+    ip.weight.push_back(v);
+    for (const auto& [gid, b] : rows[l]) {
+      ip.gradients.particles.push_back(index[static_cast<std::size_t>(gid)]);
+      for (std::size_t d = 0; d < dim; ++d) ip.gradients.values.push_back(b[d] / v);
+    }
+    ip.gradients.offsets.push_back(ip.gradients.particles.size());
+  }
+}
+
+void build_gauss(const BackgroundMesh& mesh, const PartSpec& part, const ParticleCloud& cloud,
+                 const std::vector<int>& owner, int rank, IntegrationPoints& ip) {
+  const auto dim = static_cast<std::size_t>(cloud.dimension);
+  std::vector<std::size_t> cell_of_point;
+  std::size_t global_cell = 0;
+  for (const auto& b : mesh.blocks) {
+    const bool in_part = std::find(part.blocks.begin(), part.blocks.end(), b.name) != part.blocks.end();
+    const auto npc = static_cast<std::size_t>(cell_node_count(b.type));
+    const auto rule = reference_rule(b.type, part.section.gauss_order);
+    std::vector<double> x(npc * dim);
+    for (std::size_t c = 0; c < b.cell_count(); ++c, ++global_cell) {
+      if (!in_part) continue;
+      const auto* node = &b.connectivity[c * npc];
+      if (owner[static_cast<std::size_t>(*std::min_element(node, node + npc))] != rank) continue;
+      for (std::size_t a = 0; a < npc; ++a)
+        for (std::size_t d = 0; d < dim; ++d) x[a * dim + d] = mesh.coordinates[static_cast<std::size_t>(node[a]) * dim + d];
+      for (std::size_t q = 0; q < rule.weight.size(); ++q) {
+        double point[3];
+        const double det = map_to_cell(b.type, x.data(), &rule.xi[q * dim], point);
+        ip.x.insert(ip.x.end(), point, point + dim);
+        ip.weight.push_back(rule.weight[q] * det);
+        ip.node.push_back(-1);
+        cell_of_point.push_back(global_cell);
+      }
+    }
+  }
+  const auto v = evaluate_shape_functions(cloud, ip.x.data(), ip.weight.size(), true, [&](std::size_t p) {
+    return "Gauss point of cell " + std::to_string(cell_of_point[p] + 1);
+  });
+  ip.values = table_from(v, false, cloud.dimension);
+  ip.gradients = table_from(v, true, cloud.dimension);
+}
+
+}  // namespace
+
+IntegrationPoints integrate_part(const BackgroundMesh& mesh, const PartSpec& part, const ParticleCloud& cloud,
+                                 const std::vector<int>& owner, int rank) {
+  IntegrationPoints ip;
+  ip.dimension = cloud.dimension;
+  ip.scheme = part.section.integration;
+  switch (part.section.integration) {
+    case Integration::scni: build_scni(mesh, part, cloud, owner, rank, ip); break;
+    case Integration::nodal: build_nodal(mesh, cloud, ip); break;
+    case Integration::gauss: build_gauss(mesh, part, cloud, owner, rank, ip); break;
+  }
+  return ip;
+}
+
+double ghost_radius(const BackgroundMesh& mesh, const PartSpec& part) {
+  const auto a = support_sizes(mesh, part.blocks, part.section);
+  const auto dim = static_cast<std::size_t>(mesh.dimension);
+  double reach = 0;
+  for (std::size_t n = 0; n < mesh.node_count(); ++n) {
+    double r2 = 0;
+    for (std::size_t d = 0; d < dim; ++d) r2 += a[n * dim + d] * a[n * dim + d];
+    reach = std::max(reach, part.section.support == SupportShape::sphere ? a[n * dim] : std::sqrt(r2));
+  }
+  double diameter = 0;
+  for (const auto& b : mesh.blocks) {
+    if (std::find(part.blocks.begin(), part.blocks.end(), b.name) == part.blocks.end()) continue;
+    const auto npc = static_cast<std::size_t>(cell_node_count(b.type));
+    for (std::size_t c = 0; c < b.cell_count(); ++c)
+      for (std::size_t i = 0; i < npc; ++i)
+        for (std::size_t j = i + 1; j < npc; ++j) {
+          double d2 = 0;
+          for (std::size_t d = 0; d < dim; ++d) {
+            const double dx = mesh.coordinates[static_cast<std::size_t>(b.connectivity[c * npc + i]) * dim + d] -
+                              mesh.coordinates[static_cast<std::size_t>(b.connectivity[c * npc + j]) * dim + d];
+            d2 += dx * dx;
+          }
+          diameter = std::max(diameter, std::sqrt(d2));
+        }
+  }
+  return reach + diameter;
+}
+
+}  // namespace efg

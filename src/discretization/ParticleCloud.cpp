@@ -1,0 +1,108 @@
+#include "discretization/ParticleCloud.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "mesh/NodalVolume.hpp"
+
+namespace efg {
+
+std::vector<LocalIndex> nodes_of_blocks(const BackgroundMesh& mesh, const std::vector<std::string>& blocks) {
+  std::vector<char> in(mesh.node_count(), 0);
+  for (const auto& b : mesh.blocks)
+    if (std::find(blocks.begin(), blocks.end(), b.name) != blocks.end())
+      for (auto n : b.connectivity) in[static_cast<std::size_t>(n)] = 1;
+  std::vector<LocalIndex> nodes;
+  for (std::size_t n = 0; n < in.size(); ++n)
+    if (in[n]) nodes.push_back(static_cast<LocalIndex>(n));
+  return nodes;
+}
+
+std::vector<double> support_sizes(const BackgroundMesh& mesh, const std::vector<std::string>& blocks,
+                                  const SectionSpec& section) {
+  const auto dim = static_cast<std::size_t>(mesh.dimension);
+  std::vector<double> h(mesh.node_count() * dim, 0.0);
+  for (const auto& b : mesh.blocks) {
+    if (std::find(blocks.begin(), blocks.end(), b.name) == blocks.end()) continue;
+    const auto npc = static_cast<std::size_t>(cell_node_count(b.type));
+    for (std::size_t c = 0; c < b.cell_count(); ++c) {
+      const auto* cell = &b.connectivity[c * npc];
+      for (std::size_t d = 0; d < dim; ++d) {
+        double lo = mesh.coordinates[static_cast<std::size_t>(cell[0]) * dim + d], hi = lo;
+        for (std::size_t a = 1; a < npc; ++a) {
+          const double x = mesh.coordinates[static_cast<std::size_t>(cell[a]) * dim + d];
+          lo = std::min(lo, x);
+          hi = std::max(hi, x);
+        }
+        for (std::size_t a = 0; a < npc; ++a) {
+          const auto node = static_cast<std::size_t>(cell[a]);
+          double spacing = hi - lo;
+          if (section.spacing == SpacingMeasure::neighbors) {
+            const double xi = mesh.coordinates[node * dim + d];
+            spacing = std::max(std::abs(hi - xi), std::abs(xi - lo));
+          }
+          h[node * dim + d] = std::max(h[node * dim + d], spacing);
+        }
+      }
+    }
+  }
+  std::vector<double> a(h.size(), 0.0);
+  std::vector<double> part_max(dim, 0.0);
+  for (std::size_t n = 0; n < mesh.node_count(); ++n) {
+    double hmax = 0;
+    for (std::size_t d = 0; d < dim; ++d) hmax = std::max(hmax, h[n * dim + d]);
+    for (std::size_t d = 0; d < dim; ++d) {
+      const double dilation = section.dilation.size() == 1 ? section.dilation[0] : section.dilation[d];
+      a[n * dim + d] = section.support == SupportShape::sphere ? dilation * hmax : dilation * h[n * dim + d];
+      part_max[d] = std::max(part_max[d], a[n * dim + d]);
+    }
+  }
+  if (section.per_part_support)
+    for (std::size_t n = 0; n < mesh.node_count(); ++n)
+      if (h[n * dim] > 0)
+        for (std::size_t d = 0; d < dim; ++d) a[n * dim + d] = part_max[d];
+  return a;
+}
+
+ParticleCloud make_particle_cloud(const BackgroundMesh& mesh, const PartSpec& part, const std::vector<int>& owner,
+                                  int rank, const std::vector<LocalIndex>& ghost_nodes) {
+  const auto dim = static_cast<std::size_t>(mesh.dimension);
+  const auto nodes = nodes_of_blocks(mesh, part.blocks);
+  std::vector<char> in_part(mesh.node_count(), 0);
+  for (auto n : nodes) in_part[static_cast<std::size_t>(n)] = 1;
+  const auto a = support_sizes(mesh, part.blocks, part.section);
+  const auto volume = lumped_nodal_volumes(mesh, part.blocks);
+
+  ParticleCloud cloud;
+  cloud.dimension = mesh.dimension;
+  cloud.section = part.section;
+  auto add = [&](LocalIndex node) {
+    const auto n = static_cast<std::size_t>(node);
+    cloud.mesh_node.push_back(node);
+    for (std::size_t d = 0; d < dim; ++d) {
+      cloud.position.push_back(mesh.coordinates[n * dim + d]);
+      cloud.support.push_back(a[n * dim + d]);
+    }
+    cloud.volume.push_back(volume[n]);
+  };
+  for (auto node : nodes)
+    if (owner[static_cast<std::size_t>(node)] == rank) add(node);
+  cloud.owned_count = cloud.size();
+  for (auto node : ghost_nodes)
+    if (in_part[static_cast<std::size_t>(node)] && owner[static_cast<std::size_t>(node)] != rank) add(node);
+  return cloud;
+}
+
+double largest_support_radius(const ParticleCloud& cloud) {
+  double largest = 0;
+  const auto dim = static_cast<std::size_t>(cloud.dimension);
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    double r2 = 0;
+    for (std::size_t d = 0; d < dim; ++d) r2 += cloud.support[i * dim + d] * cloud.support[i * dim + d];
+    const double reach = cloud.section.support == SupportShape::sphere ? cloud.support[i * dim] : std::sqrt(r2);
+    largest = std::max(largest, reach);
+  }
+  return largest;
+}
+
+}  // namespace efg

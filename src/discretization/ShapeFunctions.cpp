@@ -1,0 +1,131 @@
+#include "discretization/ShapeFunctions.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "core/Errors.hpp"
+#include "discretization/MlsKernel.hpp"
+
+namespace efg {
+namespace {
+
+template <class T>
+DeviceView<T*> to_device(const std::vector<T>& host, const char* name) {
+  DeviceView<T*> view(Kokkos::view_alloc(Kokkos::WithoutInitializing, std::string(name)), host.size());
+  Kokkos::deep_copy(view, Kokkos::View<const T*, Kokkos::HostSpace, Kokkos::MemoryTraits<Kokkos::Unmanaged>>(
+                              host.data(), host.size()));
+  return view;
+}
+
+DeviceView<double**> matrix_to_device(const double* host, std::size_t rows, int cols, const char* name) {
+  DeviceView<double**> view(Kokkos::view_alloc(Kokkos::WithoutInitializing, std::string(name)), rows, static_cast<std::size_t>(cols));
+  Kokkos::deep_copy(view, Kokkos::View<const double**, Kokkos::LayoutRight, Kokkos::HostSpace,
+                                       Kokkos::MemoryTraits<Kokkos::Unmanaged>>(host, rows, static_cast<std::size_t>(cols)));
+  return view;
+}
+
+template <class View>
+void to_host(const View& device, std::vector<double>& host) {
+  host.resize(device.size());
+  Kokkos::deep_copy(Kokkos::View<double*, Kokkos::HostSpace, Kokkos::MemoryTraits<Kokkos::Unmanaged>>(host.data(), host.size()),
+                    Kokkos::View<const double*, MemSpace>(device.data(), device.size()));
+}
+
+template <int Dim, int Order>
+void run_kernel(const ParticleCloud& cloud, const double* points, std::size_t count, bool gradients,
+                ShapeFunctionValues& out, std::vector<int>& status) {
+  MlsKernel<Dim, Order> k;
+  k.points = matrix_to_device(points, count, Dim, "efg::mls points");
+  k.particles = matrix_to_device(cloud.position.data(), cloud.size(), Dim, "efg::mls particles");
+  k.support = matrix_to_device(cloud.support.data(), cloud.size(), Dim, "efg::mls supports");
+  k.offsets = to_device(out.neighbors.offsets, "efg::mls offsets");
+  std::vector<int> neighbors(out.neighbors.particles.begin(), out.neighbors.particles.end());
+  k.neighbors = to_device(neighbors, "efg::mls neighbors");
+  const auto nnz = out.neighbors.particles.size();
+  DeviceView<double*> phi("efg::mls phi", nnz);
+  DeviceView<double**> grad("efg::mls grad", gradients ? nnz : 0, static_cast<std::size_t>(Dim));
+  DeviceView<double*> condition("efg::mls condition", count);
+  DeviceView<int*> point_status("efg::mls status", count);
+  k.phi = phi;
+  k.grad = grad;
+  k.condition = condition;
+  k.status = point_status;
+  k.kernel = static_cast<KernelShape>(static_cast<int>(cloud.section.kernel));
+  k.sphere = cloud.section.support == SupportShape::sphere;
+  k.with_gradients = gradients;
+  Kokkos::parallel_for("efg::mls_shape_functions", Kokkos::RangePolicy<ExecSpace>(0, static_cast<int>(count)), k);
+  to_host(phi, out.phi);
+  if (gradients) to_host(grad, out.grad);
+  to_host(condition, out.condition);
+  status.resize(count);
+  Kokkos::deep_copy(Kokkos::View<int*, Kokkos::HostSpace, Kokkos::MemoryTraits<Kokkos::Unmanaged>>(status.data(), count),
+                    point_status);
+}
+
+template <int Dim>
+void dispatch_order(const ParticleCloud& cloud, const double* points, std::size_t count, bool gradients,
+                    ShapeFunctionValues& out, std::vector<int>& status) {
+  if (cloud.section.basis == Basis::linear) run_kernel<Dim, 1>(cloud, points, count, gradients, out, status);
+  else run_kernel<Dim, 2>(cloud, points, count, gradients, out, status);
+}
+
+std::string describe_dilation(const SectionSpec& s) {
+  std::ostringstream o;
+  for (std::size_t i = 0; i < s.dilation.size(); ++i) o << (i ? ", " : "") << s.dilation[i];
+  return o.str();
+}
+
+}  // namespace
+
+int basis_size(Basis basis, int dimension) {
+  return basis == Basis::linear ? 1 + dimension : 1 + dimension + dimension * (dimension + 1) / 2;
+}
+
+ShapeFunctionValues evaluate_shape_functions(const ParticleCloud& cloud, const double* points, std::size_t count,
+                                             bool gradients, const PointLabel& label) {
+  ShapeFunctionValues out;
+  out.neighbors = find_neighbors(cloud, points, count);
+  std::vector<int> status;
+  switch (cloud.dimension) {
+    case 1: dispatch_order<1>(cloud, points, count, gradients, out, status); break;
+    case 2: dispatch_order<2>(cloud, points, count, gradients, out, status); break;
+    case 3: dispatch_order<3>(cloud, points, count, gradients, out, status); break;
+    default: throw std::logic_error("shape functions: dimension must be 1, 2 or 3");
+  }
+  const auto dim = static_cast<std::size_t>(cloud.dimension);
+  const int needed = basis_size(cloud.section.basis, cloud.dimension);
+  for (std::size_t p = 0; p < count; ++p) {
+    bool finite = true;
+    for (auto k = out.neighbors.offsets[p]; k < out.neighbors.offsets[p + 1]; ++k) {
+      finite = finite && std::isfinite(out.phi[k]);
+      if (gradients)
+        for (std::size_t d = 0; d < dim; ++d) finite = finite && std::isfinite(out.grad[k * dim + d]);
+    }
+    const bool bad_condition = status[p] == mls_ok && !(out.condition[p] <= condition_error_threshold);
+    if (status[p] == mls_ok && finite && !bad_condition) {
+      if (out.condition[p] > condition_warning_threshold) ++out.ill_conditioned;
+      continue;
+    }
+    std::ostringstream o;
+    o << "shape functions: " << (label ? label(p) : "evaluation point " + std::to_string(p)) << " at (";
+    for (std::size_t d = 0; d < dim; ++d) o << (d ? ", " : "") << points[p * dim + d];
+    o << "), at setup (step 0, time 0): ";
+    const auto n = out.neighbors.count(p);
+    if (status[p] == mls_too_few_neighbors) {
+      o << "only " << n << " particle support(s) cover it, a " << (cloud.section.basis == Basis::linear ? "linear" : "quadratic")
+        << " basis in " << dim << "D needs at least " << needed;
+    } else if (status[p] == mls_singular || bad_condition) {
+      o << "the moment matrix is " << (status[p] == mls_singular ? "singular" : "ill-conditioned (condition number ")
+        << (status[p] == mls_singular ? "" : std::to_string(out.condition[p]) + ")") << " with " << n
+        << " neighbours (at least " << needed
+        << " needed, not all on one line or plane)";
+    } else {
+      o << "a shape function value is not finite";
+    }
+    o << "; increase the part's dilation (now " << describe_dilation(cloud.section) << ")";
+    throw NumericalError(o.str());
+  }
+  return out;
+}
+
+}  // namespace efg

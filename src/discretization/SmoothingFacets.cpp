@@ -1,0 +1,188 @@
+#include "discretization/SmoothingFacets.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+namespace efg {
+namespace {
+
+using Vec = std::array<double, 3>;
+
+Vec sub(const Vec& a, const Vec& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+Vec cross(const Vec& a, const Vec& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+double dot(const Vec& a, const Vec& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+Vec average(const std::vector<Vec>& pts) {
+  Vec c{0, 0, 0};
+  for (const auto& p : pts)
+    for (int d = 0; d < 3; ++d) c[static_cast<std::size_t>(d)] += p[static_cast<std::size_t>(d)];
+  for (auto& v : c) v /= static_cast<double>(pts.size());
+  return c;
+}
+
+class Emitter {
+ public:
+  Emitter(int dim, std::vector<SmoothingPoint>& out) : dim_(dim), out_(out) {}
+
+  // A 2D segment p -> q whose normal (dy, -dx) points out of `plus`.
+  void segment(const Vec& p, const Vec& q, LocalIndex plus, LocalIndex minus) {
+    const double g = 0.5 / std::sqrt(3.0);
+    const Vec n = {q[1] - p[1], -(q[0] - p[0]), 0.0};
+    for (double t : {0.5 - g, 0.5 + g}) {
+      SmoothingPoint s;
+      for (std::size_t d = 0; d < 2; ++d) {
+        s.x[d] = p[d] + t * (q[d] - p[d]);
+        s.weighted_normal[d] = 0.5 * n[d];
+      }
+      s.plus = plus;
+      s.minus = minus;
+      out_.push_back(s);
+    }
+  }
+
+  // A 3D quadrilateral facet p0..p3 (possibly warped) whose right-hand normal points out of
+  // `plus`: four triangles about the vertex average, one centroid point each.
+  void quad(const std::array<Vec, 4>& p, LocalIndex plus, LocalIndex minus) {
+    const Vec c = average({p[0], p[1], p[2], p[3]});
+    for (std::size_t i = 0; i < 4; ++i) {
+      const Vec& a = p[i];
+      const Vec& b = p[(i + 1) % 4];
+      const Vec n = cross(sub(a, c), sub(b, c));
+      SmoothingPoint s;
+      for (std::size_t d = 0; d < 3; ++d) {
+        s.x[d] = (c[d] + a[d] + b[d]) / 3.0;
+        s.weighted_normal[d] = 0.5 * n[d];
+      }
+      s.plus = plus;
+      s.minus = minus;
+      out_.push_back(s);
+    }
+  }
+
+  int dim() const { return dim_; }
+
+ private:
+  int dim_;
+  std::vector<SmoothingPoint>& out_;
+};
+
+// Sides of the blocks not shared with another cell of the blocks: the part's boundary.
+std::map<std::vector<LocalIndex>, int> count_sides(const BackgroundMesh& mesh, const std::vector<std::string>& blocks) {
+  std::map<std::vector<LocalIndex>, int> count;
+  for (const auto& b : mesh.blocks) {
+    if (std::find(blocks.begin(), blocks.end(), b.name) == blocks.end()) continue;
+    const auto npc = static_cast<std::size_t>(cell_node_count(b.type));
+    for (std::size_t c = 0; c < b.cell_count(); ++c)
+      for (int s = 0; s < cell_side_count(b.type); ++s) {
+        std::vector<LocalIndex> key;
+        for (int a : cell_side_nodes(b.type, s)) key.push_back(b.connectivity[c * npc + static_cast<std::size_t>(a)]);
+        std::sort(key.begin(), key.end());
+        ++count[key];
+      }
+  }
+  return count;
+}
+
+}  // namespace
+
+std::vector<SmoothingPoint> smoothing_points(const BackgroundMesh& mesh, const std::vector<std::string>& blocks,
+                                             const std::vector<char>& node_wanted) {
+  std::vector<SmoothingPoint> out;
+  Emitter emit(mesh.dimension, out);
+  const auto dim = static_cast<std::size_t>(mesh.dimension);
+  const auto side_count = count_sides(mesh, blocks);
+  for (const auto& b : mesh.blocks) {
+    if (std::find(blocks.begin(), blocks.end(), b.name) == blocks.end()) continue;
+    const int npc = cell_node_count(b.type);
+    const int nsides = cell_side_count(b.type);
+    for (std::size_t c = 0; c < b.cell_count(); ++c) {
+      const LocalIndex* node = &b.connectivity[c * static_cast<std::size_t>(npc)];
+      if (!node_wanted.empty()) {
+        bool any = false;
+        for (int a = 0; a < npc; ++a) any = any || node_wanted[static_cast<std::size_t>(node[a])];
+        if (!any) continue;
+      }
+      std::vector<Vec> x(static_cast<std::size_t>(npc), Vec{0, 0, 0});
+      for (int a = 0; a < npc; ++a)
+        for (std::size_t d = 0; d < dim; ++d)
+          x[static_cast<std::size_t>(a)][d] = mesh.coordinates[static_cast<std::size_t>(node[a]) * dim + d];
+      const Vec centroid = average(x);
+      auto mid = [&](int a, int bnode) { return average({x[static_cast<std::size_t>(a)], x[static_cast<std::size_t>(bnode)]}); };
+
+      // Interior facets, one per cell edge (a, b): they separate the domains of a and b.
+      // In 2D the edges are the sides; in 3D each edge borders two sides.
+      std::map<std::pair<int, int>, std::vector<int>> edge_sides;
+      for (int s = 0; s < nsides; ++s) {
+        const auto sn = cell_side_nodes(b.type, s);
+        for (std::size_t i = 0; i < sn.size(); ++i) {
+          const int a = sn[i], e = sn[(i + 1) % sn.size()];
+          if (emit.dim() == 2 && i + 1 == sn.size()) break;  // a 2D side is one edge
+          edge_sides[{std::min(a, e), std::max(a, e)}].push_back(s);
+        }
+      }
+      for (const auto& [edge, sides] : edge_sides) {
+        const auto [a, e] = edge;
+        const Vec m = mid(a, e);
+        const Vec toward = sub(x[static_cast<std::size_t>(e)], x[static_cast<std::size_t>(a)]);
+        if (emit.dim() == 2) {
+          // Segment from the edge midpoint to the centroid; orient its normal from a to e.
+          const Vec n = {centroid[1] - m[1], -(centroid[0] - m[0]), 0.0};
+          if (dot(n, toward) >= 0) emit.segment(m, centroid, node[a], node[e]);
+          else emit.segment(centroid, m, node[a], node[e]);
+        } else {
+          std::vector<Vec> side_centre;
+          for (int s : sides) {
+            std::vector<Vec> pts;
+            for (int k : cell_side_nodes(b.type, s)) pts.push_back(x[static_cast<std::size_t>(k)]);
+            side_centre.push_back(average(pts));
+          }
+          std::array<Vec, 4> q = {m, side_centre[0], centroid, side_centre[1]};
+          const Vec n = cross(sub(q[2], q[0]), sub(q[3], q[1]));
+          if (dot(n, toward) < 0) std::swap(q[1], q[3]);
+          emit.quad(q, node[a], node[e]);
+        }
+      }
+
+      // Sides on the part's boundary, split among their nodes; the side tables order nodes so
+      // that the right-hand normal points out of the cell.
+      for (int s = 0; s < nsides; ++s) {
+        const auto sn = cell_side_nodes(b.type, s);
+        std::vector<LocalIndex> key;
+        for (int k : sn) key.push_back(node[k]);
+        std::sort(key.begin(), key.end());
+        if (side_count.at(key) != 1) continue;
+        if (emit.dim() == 2) {
+          const Vec m = mid(sn[0], sn[1]);
+          emit.segment(x[static_cast<std::size_t>(sn[0])], m, node[sn[0]], -1);
+          emit.segment(m, x[static_cast<std::size_t>(sn[1])], node[sn[1]], -1);
+        } else {
+          std::vector<Vec> pts;
+          for (int k : sn) pts.push_back(x[static_cast<std::size_t>(k)]);
+          const Vec sc = average(pts);
+          const std::size_t m = sn.size();
+          for (std::size_t i = 0; i < m; ++i) {
+            const int prev = sn[(i + m - 1) % m], here = sn[i], next = sn[(i + 1) % m];
+            emit.quad({x[static_cast<std::size_t>(here)], mid(here, next), sc, mid(prev, here)}, node[here], -1);
+          }
+        }
+      }
+    }
+  }
+  return out;
+}
+
+std::vector<double> smoothing_domain_volumes(const std::vector<SmoothingPoint>& points, std::size_t node_count, int dim) {
+  std::vector<double> volume(node_count, 0.0);
+  for (const auto& p : points) {
+    double xn = 0;
+    for (std::size_t d = 0; d < static_cast<std::size_t>(dim); ++d) xn += p.x[d] * p.weighted_normal[d];
+    volume[static_cast<std::size_t>(p.plus)] += xn / dim;
+    if (p.minus >= 0) volume[static_cast<std::size_t>(p.minus)] -= xn / dim;
+  }
+  return volume;
+}
+
+}  // namespace efg

@@ -1,0 +1,120 @@
+// Stabilized conforming nodal integration (Chen, Wu, Yoon, You 2001): divergence consistency
+// and exact constant strains for linear fields, on perturbed node sets of every cell type.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numeric>
+
+#include "discretization/IntegrationPoints.hpp"
+#include "discretization/ShapeFunctions.hpp"
+#include "discretization/SmoothingFacets.hpp"
+#include "support/Clouds.hpp"
+#include "support/TestMeshes.hpp"
+
+namespace efg {
+namespace {
+
+struct Setup {
+  BackgroundMesh mesh;
+  PartSpec part;
+  ParticleCloud cloud;
+  IntegrationPoints ip;
+};
+
+Setup make(CellType type, Integration scheme, double perturbation, int n = 4) {
+  Setup s;
+  s.mesh = generate_mesh(test::box_spec(type, n, perturbation, 17));
+  s.part.name = "part";
+  s.part.blocks = {"block_1"};
+  s.part.section.integration = scheme;
+  s.part.section.dilation = {cell_dimension(type) == 3 ? 1.8 : 1.6};
+  const std::vector<int> owner(s.mesh.node_count(), 0);
+  s.cloud = make_particle_cloud(s.mesh, s.part, owner, 0, {});
+  s.ip = integrate_part(s.mesh, s.part, s.cloud, owner, 0);
+  return s;
+}
+
+class ByCell : public ::testing::TestWithParam<CellType> {};
+
+TEST_P(ByCell, DivergenceConsistency) {
+  const auto s = make(GetParam(), Integration::scni, 0.3);
+  const auto dim = static_cast<std::size_t>(s.mesh.dimension);
+  // Left: sum_L B~_I(x_L) V_L for every particle I.
+  std::vector<double> lhs(s.cloud.size() * dim, 0.0);
+  for (std::size_t l = 0; l < s.ip.size(); ++l)
+    for (auto k = s.ip.gradients.offsets[l]; k < s.ip.gradients.offsets[l + 1]; ++k)
+      for (std::size_t d = 0; d < dim; ++d)
+        lhs[static_cast<std::size_t>(s.ip.gradients.particles[k]) * dim + d] += s.ip.gradients.values[k * dim + d] * s.ip.weight[l];
+  // Right: the boundary integral of phi_I n over the part's boundary, same boundary quadrature.
+  std::vector<SmoothingPoint> boundary;
+  for (const auto& p : smoothing_points(s.mesh, s.part.blocks))
+    if (p.minus < 0) boundary.push_back(p);
+  std::vector<double> x;
+  for (const auto& p : boundary) x.insert(x.end(), p.x.begin(), p.x.begin() + static_cast<std::ptrdiff_t>(dim));
+  const auto phi = evaluate_shape_functions(s.cloud, x.data(), boundary.size(), false);
+  std::vector<double> rhs(lhs.size(), 0.0), scale(s.cloud.size(), 0.0);
+  for (std::size_t p = 0; p < boundary.size(); ++p)
+    for (auto k = phi.neighbors.offsets[p]; k < phi.neighbors.offsets[p + 1]; ++k) {
+      const auto i = static_cast<std::size_t>(phi.neighbors.particles[k]);
+      for (std::size_t d = 0; d < dim; ++d) {
+        rhs[i * dim + d] += phi.phi[k] * boundary[p].weighted_normal[d];
+        scale[i] += std::abs(phi.phi[k] * boundary[p].weighted_normal[d]);
+      }
+    }
+  // Relative to the size of one particle's boundary flux (h^(dim-1)).
+  const double flux_scale = *std::max_element(scale.begin(), scale.end());
+  ASSERT_GT(flux_scale, 0.0);
+  double worst = 0;
+  for (std::size_t i = 0; i < lhs.size(); ++i) worst = std::max(worst, std::abs(lhs[i] - rhs[i]) / flux_scale);
+  EXPECT_LT(worst, 1e-12) << cell_scene_name(GetParam());
+}
+
+TEST_P(ByCell, LinearFieldGivesExactConstantGradient) {
+  for (auto scheme : {Integration::scni, Integration::nodal, Integration::gauss}) {
+    const auto s = make(GetParam(), scheme, 0.3);
+    const auto dim = static_cast<std::size_t>(s.mesh.dimension);
+    const double g[3][3] = {{0.3, -1.2, 0.7}, {2.0, 0.1, -0.4}, {-0.9, 0.5, 1.1}};
+    const double a[3] = {0.2, -0.3, 0.05};
+    double worst = 0;
+    for (std::size_t l = 0; l < s.ip.size(); ++l) {
+      double grad[3][3] = {};
+      for (auto k = s.ip.gradients.offsets[l]; k < s.ip.gradients.offsets[l + 1]; ++k) {
+        const auto* xi = s.cloud.x(static_cast<std::size_t>(s.ip.gradients.particles[k]));
+        for (std::size_t i = 0; i < dim; ++i) {
+          double u = a[i];
+          for (std::size_t j = 0; j < dim; ++j) u += g[i][j] * xi[j];
+          for (std::size_t d = 0; d < dim; ++d) grad[i][d] += u * s.ip.gradients.values[k * dim + d];
+        }
+      }
+      for (std::size_t i = 0; i < dim; ++i)
+        for (std::size_t j = 0; j < dim; ++j) worst = std::max(worst, std::abs(grad[i][j] - g[i][j]) / 2.0);
+    }
+    EXPECT_LT(worst, 1e-12) << cell_scene_name(GetParam()) << " scheme " << static_cast<int>(scheme);
+  }
+}
+
+TEST_P(ByCell, WeightsAddUpToTheDomainVolume) {
+  for (auto scheme : {Integration::scni, Integration::nodal, Integration::gauss}) {
+    const auto s = make(GetParam(), scheme, 0.3);
+    const double total = std::accumulate(s.ip.weight.begin(), s.ip.weight.end(), 0.0);
+    EXPECT_NEAR(total, 2.0, 1e-12) << cell_scene_name(GetParam());
+    for (double w : s.ip.weight) EXPECT_GT(w, 0.0);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(AllCells, ByCell,
+                         ::testing::Values(CellType::quad4, CellType::tri3, CellType::hex8, CellType::tet4,
+                                           CellType::wedge6),
+                         [](const auto& p) { return cell_scene_name(p.param); });
+
+TEST(SmoothedGradient, NodalDomainsOfARegularGridAreItsDualCells) {
+  const auto s = make(CellType::quad4, Integration::scni, 0.0, 2);  // h = 0.5
+  for (std::size_t l = 0; l < s.ip.size(); ++l) {
+    const auto* x = s.cloud.x(l);
+    const bool edge_x = x[0] == 0.0 || x[0] == 2.0, edge_y = x[1] == 0.0 || x[1] == 1.0;
+    EXPECT_NEAR(s.ip.weight[l], 0.25 * (edge_x ? 0.5 : 1.0) * (edge_y ? 0.5 : 1.0), 1e-15);
+  }
+}
+
+}  // namespace
+}  // namespace efg
