@@ -3,6 +3,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <filesystem>
+#include <sstream>
 #include <stdexcept>
 
 #include "app/Commands.hpp"
@@ -33,6 +34,22 @@ void log_model(const Model& model, const CommPtr& comm) {
             " to " + std::to_string(max));
 }
 
+void log_discretization(const Model& model, const CommPtr& comm) {
+  for (const auto& d : model.parts) {
+    long long local[4] = {static_cast<long long>(d.cloud.owned_count), static_cast<long long>(d.points.size()),
+                          static_cast<long long>(d.points.gradients.particles.size()),
+                          static_cast<long long>(d.cloud.size() - d.cloud.owned_count)};
+    long long global[4] = {0, 0, 0, 0};
+    Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, 4, local, global);
+    const char* scheme = d.points.scheme == Integration::scni ? "SCNI" : d.points.scheme == Integration::nodal ? "direct nodal" : "Gauss";
+    std::ostringstream o;
+    o << "part '" << d.part->name << "': " << global[0] << " particles, " << global[1] << " " << scheme
+      << " integration points, " << (global[1] > 0 ? static_cast<double>(global[2]) / static_cast<double>(global[1]) : 0.0)
+      << " particles per point on average, " << global[3] << " ghost particles over all ranks";
+    Log::info(o.str());
+  }
+}
+
 // Drivers join as their issues land; until then a stage is refused before any output is written.
 void require_available_drivers(const Scene& scene) {
   for (const auto& stage : scene.stages)
@@ -46,6 +63,7 @@ void require_available_drivers(const Scene& scene) {
 void run_command(const CommPtr& comm, const CommandLine& cl) {
   const Model model = build_model(comm, cl.scene);
   log_model(model, comm);
+  log_discretization(model, comm);
   require_available_drivers(model.scene);
 
   const auto dim = model.mesh.dimension;

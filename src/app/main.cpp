@@ -8,6 +8,7 @@
 #include "app/Commands.hpp"
 #include "core/Errors.hpp"
 #include "core/Log.hpp"
+#include "parallel/Collective.hpp"
 #include "core/Version.hpp"
 
 namespace {
@@ -30,6 +31,8 @@ int dispatch(const efg::CommPtr& comm, const std::vector<std::string>& args) {
       if (comm->getRank() == 0) efg::schema_command();
     }
     return static_cast<int>(ExitCode::success);
+  } catch (const efg::PeerFailure& e) {
+    return e.exit_code();  // the failing rank printed the message
   } catch (const efg::InputError& e) {
     if (comm->getRank() == 0) std::cerr << "efg: error: " << e.what() << std::endl;
     return static_cast<int>(ExitCode::bad_input);

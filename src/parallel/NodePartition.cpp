@@ -44,6 +44,7 @@ NodePartition partition_nodes(const CommPtr& comm, const BackgroundMesh& mesh) {
     params.set("algorithm", "rcb");
     params.set("num_global_parts", p.size);
     params.set("partitioning_approach", "partition");
+    params.sublist("zoltan_parameters").set("DEBUG_LEVEL", "0");  // no banner on stdout
     Zoltan2::PartitioningProblem<CoordinateAdapter> problem(&adapter, &params, comm);
     problem.solve();
     const auto* parts = problem.getSolution().getPartListView();

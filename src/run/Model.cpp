@@ -1,10 +1,13 @@
 #include "run/Model.hpp"
 
+#include <set>
+
 #include <Teuchos_TimeMonitor.hpp>
 
 #include "io/ExodusReader.hpp"
 #include "mesh/MeshGenerator.hpp"
 #include "mesh/MeshValidation.hpp"
+#include "parallel/Collective.hpp"
 #include "parallel/MeshBroadcast.hpp"
 #include "parallel/RootBroadcast.hpp"
 #include "core/Errors.hpp"
@@ -40,11 +43,24 @@ BackgroundMesh load_mesh(const CommPtr& comm, const Scene& scene) {
 }
 
 Model build_model(const CommPtr& comm, const std::string& scene_file) {
-  Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewCounter("efg: setup (scene, mesh, partition)"));
   Model model;
-  model.scene = load_scene(comm, scene_file);
-  model.mesh = load_mesh(comm, model.scene);
-  model.partition = partition_nodes(comm, model.mesh);
+  {
+    Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewCounter("efg: scene and mesh"));
+    model.scene = load_scene(comm, scene_file);
+    model.mesh = load_mesh(comm, model.scene);
+  }
+  {
+    Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewCounter("efg: partition (Zoltan2 RCB)"));
+    model.partition = partition_nodes(comm, model.mesh);
+  }
+  run_collectively(comm, [&] {
+    check_parts_do_not_share_nodes(model.mesh, model.scene.parts);
+    for (const auto& part : model.scene.parts) model.parts.push_back(discretize_part(model.mesh, part, model.partition));
+  });
+  std::set<LocalIndex> ghosts;
+  for (const auto& d : model.parts)
+    for (std::size_t i = d.cloud.owned_count; i < d.cloud.size(); ++i) ghosts.insert(d.cloud.mesh_node[i]);
+  model.partition.ghosts.assign(ghosts.begin(), ghosts.end());
   model.maps = make_dof_maps(comm, model.partition, model.mesh.dimension);
   return model;
 }

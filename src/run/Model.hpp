@@ -3,6 +3,7 @@
 // error found) before any output file is touched.
 #pragma once
 
+#include "discretization/PartDiscretization.hpp"
 #include "mesh/BackgroundMesh.hpp"
 #include "parallel/DofMaps.hpp"
 #include "parallel/NodePartition.hpp"
@@ -13,7 +14,8 @@ namespace efg {
 struct Model {
   Scene scene;
   BackgroundMesh mesh;
-  NodePartition partition;
+  NodePartition partition;               ///< ghosts: the union over parts
+  std::vector<PartDiscretization> parts;  ///< one per scene part, in scene order
   DofMaps maps;
 };
 
@@ -22,7 +24,8 @@ struct Model {
 Scene load_scene(const CommPtr& comm, const std::string& scene_file);
 BackgroundMesh load_mesh(const CommPtr& comm, const Scene& scene);
 
-/// load_scene + load_mesh + partition + maps (one displacement dof per dimension).
+/// load_scene + load_mesh + partition + discretization of every part + maps (one displacement
+/// dof per dimension). A numerical failure on any rank stops every rank.
 Model build_model(const CommPtr& comm, const std::string& scene_file);
 
 }  // namespace efg

@@ -1,0 +1,26 @@
+// One meshfree part, discretized on this rank: its particle cloud (owned + ghosts) and the
+// integration points of the owned part of the domain.
+#pragma once
+
+#include <vector>
+
+#include "discretization/IntegrationPoints.hpp"
+#include "parallel/NodePartition.hpp"
+
+namespace efg {
+
+struct PartDiscretization {
+  const PartSpec* part = nullptr;
+  std::vector<LocalIndex> ghosts;  ///< mesh nodes of other ranks this rank needs, ascending
+  ParticleCloud cloud;
+  IntegrationPoints points;
+};
+
+/// Ghost layer from the part's support reach and cell size, particle cloud, integration points.
+PartDiscretization discretize_part(const BackgroundMesh& mesh, const PartSpec& part, const NodePartition& partition);
+
+/// Throws InputError when a mesh node belongs to the blocks of two parts (meshfree parts do not
+/// share particles).
+void check_parts_do_not_share_nodes(const BackgroundMesh& mesh, const std::vector<PartSpec>& parts);
+
+}  // namespace efg
