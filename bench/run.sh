@@ -1,0 +1,6 @@
+#!/usr/bin/env bash
+# Runs the benchmarks (after building) and prints their tables. Not part of the test suite.
+set -euo pipefail
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+"$here/scripts/setup.sh"
+"${EFG_BUILD_DIR:-$here/build}/bench/efg_bench_discretization" "$@"
