@@ -19,15 +19,6 @@ std::vector<LocalIndex> cloud_index(const ParticleCloud& cloud, std::size_t node
   return index;
 }
 
-CsrTable table_from(const ShapeFunctionValues& v, bool gradients, int dim) {
-  CsrTable t;
-  t.width = gradients ? dim : 1;
-  t.offsets = v.neighbors.offsets;
-  t.particles = v.neighbors.particles;
-  t.values = gradients ? v.grad : v.phi;
-  return t;
-}
-
 // Points at particle positions (SCNI and nodal): the owned particles of the cloud.
 void add_nodal_points(const ParticleCloud& cloud, IntegrationPoints& ip) {
   const auto dim = static_cast<std::size_t>(cloud.dimension);
@@ -130,6 +121,15 @@ void build_gauss(const BackgroundMesh& mesh, const PartSpec& part, const Particl
 }
 
 }  // namespace
+
+CsrTable table_from(const ShapeFunctionValues& v, bool gradients, int dim) {
+  CsrTable t;
+  t.width = gradients ? dim : 1;
+  t.offsets = v.neighbors.offsets;
+  t.particles = v.neighbors.particles;
+  t.values = gradients ? v.grad : v.phi;
+  return t;
+}
 
 IntegrationPoints integrate_part(const BackgroundMesh& mesh, const PartSpec& part, const ParticleCloud& cloud,
                                  const std::vector<int>& owner, int rank) {

@@ -34,6 +34,10 @@ struct IntegrationPoints {
   std::size_t size() const { return weight.size(); }
 };
 
+struct ShapeFunctionValues;
+/// The values (gradients = false) or gradients of evaluated shape functions as a table.
+CsrTable table_from(const ShapeFunctionValues& v, bool gradients, int dim);
+
 /// Builds the integration points of the cells of `part` that this rank owns (SCNI and nodal:
 /// owned particles; Gauss: cells whose lowest node is owned), with shape functions from `cloud`
 /// (owned and ghost particles). `owner` is the owning rank of every mesh node.

@@ -3,6 +3,7 @@
 #include <Teuchos_TimeMonitor.hpp>
 
 #include "core/Errors.hpp"
+#include "discretization/ShapeFunctions.hpp"
 
 namespace efg {
 
@@ -16,6 +17,15 @@ PartDiscretization discretize_part(const BackgroundMesh& mesh, const PartSpec& p
   }
   Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewCounter("efg: shape functions and integration"));
   d.points = integrate_part(mesh, part, d.cloud, partition.owner, partition.rank);
+  if (part.section.integration == Integration::gauss) {
+    const auto v = evaluate_shape_functions(d.cloud, d.cloud.position.data(), d.cloud.owned_count, true,
+                                            [&](std::size_t p) { return "particle " + std::to_string(d.cloud.mesh_node[p] + 1); });
+    d.particle_values = table_from(v, false, d.cloud.dimension);
+    d.particle_gradients = table_from(v, true, d.cloud.dimension);
+  } else {
+    d.particle_values = d.points.values;
+    d.particle_gradients = d.points.gradients;
+  }
   return d;
 }
 

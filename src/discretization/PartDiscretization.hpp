@@ -14,6 +14,10 @@ struct PartDiscretization {
   std::vector<LocalIndex> ghosts;  ///< mesh nodes of other ranks this rank needs, ascending
   ParticleCloud cloud;
   IntegrationPoints points;
+  /// Shape functions and gradients at the owned particles (rows in cloud order): physical
+  /// displacements u(X_J) = sum_I phi_I(X_J) d_I for output and essential conditions, and the
+  /// gradients output strains come from (SCNI: the smoothed ones; Gauss: direct).
+  CsrTable particle_values, particle_gradients;
 };
 
 /// Ghost layer from the part's support reach and cell size, particle cloud, integration points.

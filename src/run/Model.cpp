@@ -43,10 +43,19 @@ BackgroundMesh load_mesh(const CommPtr& comm, const Scene& scene) {
 }
 
 Model build_model(const CommPtr& comm, const std::string& scene_file) {
-  Model model;
+  Scene scene;
   {
     Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewCounter("efg: scene and mesh"));
-    model.scene = load_scene(comm, scene_file);
+    scene = load_scene(comm, scene_file);
+  }
+  return build_model(comm, std::move(scene));
+}
+
+Model build_model(const CommPtr& comm, Scene scene) {
+  Model model;
+  model.scene = std::move(scene);
+  {
+    Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewCounter("efg: scene and mesh"));
     model.mesh = load_mesh(comm, model.scene);
   }
   {

@@ -27,5 +27,7 @@ BackgroundMesh load_mesh(const CommPtr& comm, const Scene& scene);
 /// load_scene + load_mesh + partition + discretization of every part + maps (one displacement
 /// dof per dimension). A numerical failure on any rank stops every rank.
 Model build_model(const CommPtr& comm, const std::string& scene_file);
+/// The same from an already parsed scene (tests build scenes from text).
+Model build_model(const CommPtr& comm, Scene scene);
 
 }  // namespace efg

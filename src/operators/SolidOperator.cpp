@@ -1,0 +1,146 @@
+#include "operators/SolidOperator.hpp"
+
+#include <Teuchos_TimeMonitor.hpp>
+
+#include <sstream>
+
+#include "core/Errors.hpp"
+#include "materials/ElasticConstants.hpp"
+
+namespace efg {
+namespace {
+
+template <class T>
+DeviceView<T*> device_copy(const std::vector<T>& host, const std::string& name) {
+  DeviceView<T*> view(Kokkos::view_alloc(Kokkos::WithoutInitializing, name), host.size());
+  auto mirror = Kokkos::create_mirror_view(view);
+  for (std::size_t i = 0; i < host.size(); ++i) mirror(i) = host[i];
+  Kokkos::deep_copy(view, mirror);
+  return view;
+}
+
+auto column(const Vector& v) { return Kokkos::subview(v.getLocalViewDevice(Tpetra::Access::ReadOnly), Kokkos::ALL(), 0); }
+auto column(Vector& v) { return Kokkos::subview(v.getLocalViewDevice(Tpetra::Access::ReadWrite), Kokkos::ALL(), 0); }
+
+}  // namespace
+
+physics::SolidMaterial solid_material(const MaterialSpec& material, const PartSpec& part, int dimension) {
+  const double e = material.constants.at("youngs_modulus"), nu = material.constants.at("poissons_ratio");
+  const bool plane_stress = dimension == 2 && part.plane_stress;
+  const auto c = plane_stress ? physics::plane_stress_constants(e, nu) : physics::elastic_constants(e, nu);
+  physics::SolidMaterial m;
+  m.kind = material.model == "neo_hookean" ? physics::MaterialKind::neo_hookean : physics::MaterialKind::linear_elastic;
+  m.lambda = c.lambda;
+  m.mu = c.mu;
+  m.plane_stress = plane_stress;
+  return m;
+}
+
+SolidOperator::SolidOperator(const Model& model) : dim_(model.mesh.dimension) {
+  const auto& overlap = *model.maps.overlap_nodes;
+  for (const auto& d : model.parts) {
+    PartData p;
+    p.name = d.part->name;
+    for (auto node : d.cloud.mesh_node) {
+      const auto lid = overlap.getLocalElement(static_cast<GlobalOrdinal>(node));
+      if (lid == Teuchos::OrdinalTraits<int>::invalid()) throw std::logic_error("particle missing from the overlap map");
+      p.overlap_node.push_back(lid);
+    }
+    const auto& ip = d.points;
+    const double thickness = dim_ == 2 ? d.part->thickness : 1.0;
+    std::vector<double> weight(ip.weight);
+    for (auto& w : weight) w *= thickness;
+    std::vector<int> node;
+    for (auto particle : ip.gradients.particles) node.push_back(p.overlap_node[static_cast<std::size_t>(particle)]);
+    DeviceView<double**> grad("efg::solid grad", ip.gradients.particles.size(), static_cast<std::size_t>(dim_));
+    auto grad_host = Kokkos::create_mirror_view(grad);
+    for (std::size_t k = 0; k < ip.gradients.particles.size(); ++k)
+      for (int j = 0; j < dim_; ++j) grad_host(k, static_cast<std::size_t>(j)) = ip.gradients.values[k * static_cast<std::size_t>(dim_) + static_cast<std::size_t>(j)];
+    Kokkos::deep_copy(grad, grad_host);
+    p.device.weight = device_copy(weight, "efg::solid weight");
+    p.device.offsets = device_copy(ip.gradients.offsets, "efg::solid offsets");
+    p.device.node = device_copy(node, "efg::solid node");
+    p.device.grad = grad;
+    p.device.material = solid_material(*model.scene.find_material(d.part->material), *d.part, dim_);
+    p.points = ip.size();
+    p.x = ip.x;
+    parts_.push_back(std::move(p));
+  }
+}
+
+void SolidOperator::add_point_couplings(CouplingGraph& graph) const {
+  for (const auto& p : parts_) {
+    auto offsets = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.device.offsets);
+    auto node = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.device.node);
+    for (std::size_t q = 0; q < p.points; ++q)
+      graph.add_clique(node.data() + offsets(q), offsets(q + 1) - offsets(q));
+  }
+}
+
+void SolidOperator::report_inversion(const PartData& part, int point) const {
+  std::ostringstream o;
+  o << "part '" << part.name << "': det F <= 0 (inverted material) at integration point " << point << " at (";
+  for (int d = 0; d < dim_; ++d) o << (d ? ", " : "") << part.x[static_cast<std::size_t>(point * dim_ + d)];
+  o << ")";
+  throw NumericalError(o.str());
+}
+
+void SolidOperator::add_internal_force(const Vector& d_overlap, Vector& f_overlap) const {
+  Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewCounter("efg: internal force"));
+  const auto u = column(d_overlap);
+  auto f = column(f_overlap);
+  for (const auto& p : parts_) {
+    Kokkos::View<int, MemSpace> inverted("efg::inverted");
+    Kokkos::deep_copy(inverted, INT_MAX);
+    const auto n = static_cast<int>(p.points);
+    if (dim_ == 2) {
+      InternalForceKernel<2, decltype(u), decltype(f)> k{p.device, u, f, inverted};
+      Kokkos::parallel_for("efg::internal_force_2d", Kokkos::RangePolicy<ExecSpace>(0, n), k);
+    } else {
+      InternalForceKernel<3, decltype(u), decltype(f)> k{p.device, u, f, inverted};
+      Kokkos::parallel_for("efg::internal_force_3d", Kokkos::RangePolicy<ExecSpace>(0, n), k);
+    }
+    int bad = INT_MAX;
+    Kokkos::deep_copy(bad, inverted);
+    if (bad != INT_MAX) report_inversion(p, bad);
+  }
+}
+
+void SolidOperator::add_tangent(const Vector& d_overlap, FEMatrix& K) const {
+  Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewCounter("efg: tangent assembly"));
+  const auto u = column(d_overlap);
+  auto local = K.getLocalMatrixDevice();
+  for (const auto& p : parts_) {
+    Kokkos::View<int, MemSpace> inverted("efg::inverted");
+    Kokkos::deep_copy(inverted, INT_MAX);
+    const auto n = static_cast<int>(p.points);
+    if (dim_ == 2) {
+      TangentKernel<2, decltype(u), decltype(local)> k{p.device, u, local, inverted};
+      Kokkos::parallel_for("efg::tangent_2d", Kokkos::RangePolicy<ExecSpace>(0, n), k);
+    } else {
+      TangentKernel<3, decltype(u), decltype(local)> k{p.device, u, local, inverted};
+      Kokkos::parallel_for("efg::tangent_3d", Kokkos::RangePolicy<ExecSpace>(0, n), k);
+    }
+    int bad = INT_MAX;
+    Kokkos::deep_copy(bad, inverted);
+    if (bad != INT_MAX) report_inversion(p, bad);
+  }
+}
+
+double SolidOperator::strain_energy(const Vector& d_overlap) const {
+  const auto u = column(d_overlap);
+  double total = 0;
+  for (const auto& p : parts_) {
+    double e = 0;
+    const auto n = static_cast<int>(p.points);
+    if (dim_ == 2) {
+      Kokkos::parallel_reduce("efg::energy_2d", Kokkos::RangePolicy<ExecSpace>(0, n), EnergyKernel<2, decltype(u)>{p.device, u}, e);
+    } else {
+      Kokkos::parallel_reduce("efg::energy_3d", Kokkos::RangePolicy<ExecSpace>(0, n), EnergyKernel<3, decltype(u)>{p.device, u}, e);
+    }
+    total += e;
+  }
+  return total;
+}
+
+}  // namespace efg

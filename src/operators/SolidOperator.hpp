@@ -1,0 +1,57 @@
+// The element-free solid operators of a model: internal force f_int(d), its tangent K(d) and the
+// strain energy, from every part's integration points. Shared by the implicit and the explicit
+// drivers (one function computes the internal force for both). Vectors are Tpetra vectors on the
+// overlap dof map (owned then ghost particles); callers import d and export-add f.
+#pragma once
+
+#include <Tpetra_FECrsMatrix.hpp>
+#include <Tpetra_Vector.hpp>
+
+#include <vector>
+
+#include "operators/CouplingGraph.hpp"
+#include "operators/SolidKernels.hpp"
+#include "run/Model.hpp"
+
+namespace efg {
+
+using Vector = Tpetra::Vector<>;
+using FEMatrix = Tpetra::FECrsMatrix<>;
+
+/// Material constants of a part for the physics kernels (plane stress reduces lambda).
+physics::SolidMaterial solid_material(const MaterialSpec& material, const PartSpec& part, int dimension);
+
+class SolidOperator {
+ public:
+  /// `graph` must contain the couplings of the model's points (see add_point_couplings).
+  explicit SolidOperator(const Model& model);
+
+  /// Couplings of every integration point (all pairs of its particles).
+  void add_point_couplings(CouplingGraph& graph) const;
+
+  /// f += f_int(d). Throws NumericalError naming the point and particle when det F <= 0.
+  void add_internal_force(const Vector& d_overlap, Vector& f_overlap) const;
+  /// Adds K(d) to a matrix in assembly mode (overlap rows, overlap-dof columns).
+  void add_tangent(const Vector& d_overlap, FEMatrix& K) const;
+  /// Strain energy of this rank's points (sum over ranks for the total).
+  double strain_energy(const Vector& d_overlap) const;
+
+  /// Overlap node index of every particle of part p (cloud order).
+  const std::vector<int>& overlap_node(std::size_t part) const { return parts_[part].overlap_node; }
+  int dimension() const { return dim_; }
+
+ private:
+  struct PartData {
+    DevicePoints device;
+    std::vector<int> overlap_node;
+    std::size_t points = 0;
+    std::string name;
+    std::vector<double> x;  // point coordinates, for messages
+  };
+  void report_inversion(const PartData& part, int point) const;
+
+  int dim_;
+  std::vector<PartData> parts_;
+};
+
+}  // namespace efg
