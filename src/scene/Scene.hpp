@@ -55,6 +55,7 @@ struct BoundaryConditionSpec {
   std::string method;
   double penalty = 1e4;
   std::array<std::optional<double>, 3> components;
+  std::array<bool, 3> from_exact{false, false, false};  ///< components taken from the exact solution
   std::string curve;  ///< empty: constant
 };
 
@@ -64,6 +65,7 @@ struct LoadSpec {
   std::string set;   ///< side set or node set; empty for body forces
   std::vector<std::string> parts;
   std::vector<double> value;
+  bool from_exact = false;  ///< traction or body force from the verification block's exact solution
   std::string curve;
 };
 
@@ -108,6 +110,7 @@ struct Scene {
   std::vector<StageSpec> stages;
   OutputSpec output;
   YAML::Node verification;  ///< null when absent
+  std::string exact_solution;  ///< verification.exact_solution, empty when none
 
   YAML::Node document;  ///< as written, with line marks (for cross-reference messages)
   YAML::Node resolved;  ///< validated, defaults filled (printed by `efg check`)

@@ -57,6 +57,9 @@ class Checker {
         if (!inserted)
           fail(at, bpath, "block '" + name + "' already belongs to part '" + it->second + "'; a block belongs to one part");
       }
+      if (m_.dimension == 2 && s_.parts[p].plane_stress && s_.find_material(s_.parts[p].material)->model == "neo_hookean")
+        fail(d["parts"][p]["plane"], path + ".plane",
+             "plane stress is available for small-strain materials only; expected plane: strain with model neo_hookean");
       const auto& dil = s_.parts[p].section.dilation;
       if (dil.size() > 1) require_dimension(d["parts"][p]["section"]["dilation"], path + ".section.dilation", dil.size());
     }
@@ -64,8 +67,9 @@ class Checker {
       const auto& bc = s_.boundary_conditions[i];
       const auto path = "boundary_conditions[" + std::to_string(i) + "]";
       require_name(d["boundary_conditions"][i]["node_set"], path + ".node_set", bc.node_set, "node set", node_sets);
-      if (m_.dimension == 2 && bc.components[2])
-        fail(d["boundary_conditions"][i]["z"], path + ".z", "a z component in a 2D mesh; expected x and y only");
+      if (m_.dimension == 2 && (bc.components[2] || bc.from_exact[2]))
+        fail(bc.components[2] ? d["boundary_conditions"][i]["z"] : d["boundary_conditions"][i]["from_exact_solution"], path,
+             "a z component in a 2D mesh; expected x and y only");
     }
     for (std::size_t i = 0; i < s_.loads.size(); ++i) {
       const auto& load = s_.loads[i];
@@ -74,7 +78,7 @@ class Checker {
       if (load.type == "traction" || load.type == "pressure")
         require_name(ld["side_set"], path + ".side_set", load.set, "side set", side_sets);
       if (load.type == "nodal_force") require_name(ld["node_set"], path + ".node_set", load.set, "node set", node_sets);
-      if (load.type != "pressure") require_dimension(ld["value"], path + ".value", load.value.size());
+      if (load.type != "pressure" && !load.from_exact) require_dimension(ld["value"], path + ".value", load.value.size());
     }
     for (std::size_t i = 0; i < s_.initial_conditions.size(); ++i) {
       const auto path = "initial_conditions[" + std::to_string(i) + "]";

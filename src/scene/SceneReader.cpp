@@ -58,7 +58,20 @@ class SceneBuilder {
     s_.output.file = r["output"]["file"] ? r["output"]["file"].as<std::string>() : s_.name + ".e";
     s_.output.fields = as_vector<std::string>(r["output"]["fields"]);
     s_.output.history = opt_string(r["output"], "history");
-    if (r["verification"]) s_.verification = r["verification"];
+    if (r["verification"]) {
+      s_.verification = r["verification"];
+      if (r["verification"]["exact_solution"]) s_.exact_solution = r["verification"]["exact_solution"].as<std::string>();
+    }
+    for (std::size_t i = 0; i < s_.boundary_conditions.size(); ++i) {
+      const auto& bc = s_.boundary_conditions[i];
+      if ((bc.from_exact[0] || bc.from_exact[1] || bc.from_exact[2]) && s_.exact_solution.empty())
+        fail(d["boundary_conditions"][i]["from_exact_solution"], "boundary_conditions[" + std::to_string(i) + "].from_exact_solution",
+             "needs verification.exact_solution, which the scene does not name");
+    }
+    for (std::size_t i = 0; i < s_.loads.size(); ++i)
+      if (s_.loads[i].from_exact && s_.exact_solution.empty())
+        fail(d["loads"][i]["from_exact_solution"], "loads[" + std::to_string(i) + "].from_exact_solution",
+             "needs verification.exact_solution, which the scene does not name");
   }
 
  private:
@@ -145,6 +158,12 @@ class SceneBuilder {
     if (out.support == SupportShape::sphere && out.dilation.size() > 1)
       fail(doc["section"]["dilation"], path + ".section.dilation",
            "a sphere support takes one dilation value, found " + std::to_string(out.dilation.size()));
+    if (material->model == "linear_elastic" && out.formulation != Formulation::small_strain) {
+      const YAML::Node at = doc["section"] && doc["section"]["formulation"] ? doc["section"]["formulation"] : doc["material"];
+      fail(at, path + ".section.formulation",
+           "material '" + material->name + "' (model linear_elastic) is a small-strain model: expected formulation small_strain, found " +
+               sec["formulation"].as<std::string>());
+    }
     if (material->model == "neo_hookean" && out.formulation != Formulation::total_lagrangian) {
       const YAML::Node at = doc["section"] && doc["section"]["formulation"] ? doc["section"]["formulation"] : doc["material"];
       fail(at, path + ".section.formulation",
@@ -185,6 +204,14 @@ class SceneBuilder {
     const char* axes[3] = {"x", "y", "z"};
     for (std::size_t c = 0; c < 3; ++c)
       if (b[axes[c]]) bc.components[c] = b[axes[c]].as<double>();
+    if (b["from_exact_solution"])
+      for (const auto& c : b["from_exact_solution"]) {
+        const auto axis = static_cast<std::size_t>(c.as<std::string>()[0] - 'x');
+        if (bc.components[axis])
+          fail(doc["from_exact_solution"], path + ".from_exact_solution",
+               "component " + c.as<std::string>() + " is also given a value; give it one or the other");
+        bc.from_exact[axis] = true;
+      }
     bc.curve = opt_string(b, "curve");
     require_curve(doc, path, bc.curve);
     s_.boundary_conditions.push_back(bc);
@@ -197,7 +224,10 @@ class SceneBuilder {
     load.type = l["type"].as<std::string>();
     load.set = l["side_set"] ? l["side_set"].as<std::string>() : opt_string(l, "node_set");
     if (l["parts"]) load.parts = as_vector<std::string>(l["parts"]);
-    load.value = l["value"].IsSequence() ? as_vector<double>(l["value"]) : std::vector<double>{l["value"].as<double>()};
+    if (l["value"]) load.value = l["value"].IsSequence() ? as_vector<double>(l["value"]) : std::vector<double>{l["value"].as<double>()};
+    load.from_exact = l["from_exact_solution"] && l["from_exact_solution"].as<bool>();
+    if ((load.type == "traction" || load.type == "body_force") && load.from_exact == !load.value.empty())
+      fail(doc, path, "expected exactly one of value, from_exact_solution: true");
     load.curve = opt_string(l, "curve");
     require_curve(doc, path, load.curve);
     for (std::size_t k = 0; k < load.parts.size(); ++k) {

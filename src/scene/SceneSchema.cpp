@@ -97,7 +97,10 @@ std::vector<Key> component_keys(const std::string& what, const std::string& unit
 SpecPtr boundary_condition_spec() {
   auto keys = [](const std::string& what, const std::string& unit) {
     auto k = component_keys(what, unit);
-    k.push_back(optional_key("curve", string("Name of a curve scaling the values over time; constant when omitted.")));
+    k.push_back(optional_key("curve", string("Name of a curve scaling the values over time; see the stage drivers for what happens without one.")));
+    k.push_back(optional_key("from_exact_solution",
+                             string_list("Components prescribed from the verification block's exact solution at each node.")
+                                 .choices({"x", "y", "z"}).items(1, 3)));
     return k;
   };
   return map("An essential boundary condition on a node set. Only the components given are constrained.")
@@ -111,26 +114,29 @@ SpecPtr boundary_condition_spec() {
       .discriminated_by("type")
       .variant("displacement", keys("Prescribed displacement", "length"))
       .variant("velocity", keys("Prescribed velocity", "length/time"))
-      .at_least_one_of({"x", "y", "z"});
+      .at_least_one_of({"x", "y", "z", "from_exact_solution"});
 }
 
 SpecPtr load_spec() {
-  auto curve = optional_key("curve", string("Name of a curve scaling the load over time; constant when omitted."));
+  auto curve = optional_key("curve", string("Name of a curve scaling the load over time; see the stage drivers for what happens without one."));
+  auto exact = optional_key("from_exact_solution",
+                            boolean("Take the load from the verification block's exact solution (traction P N, or body force) instead of value."),
+                            "false");
   return map("An external load. Keys after type depend on the type.")
       .required("name", string("Load name, unique."))
       .required("type", choice("Kind of load.", {"traction", "pressure", "nodal_force", "body_force"}))
       .discriminated_by("type")
       .variant("traction", {required_key("side_set", string("Side set the traction acts on.")),
-                            required_key("value", real_list("Traction vector, one entry per dimension.", "stress").items(2, 3)),
-                            curve})
+                            optional_key("value", real_list("Traction vector (force per reference area), one entry per dimension.", "stress").items(2, 3)),
+                            exact, curve})
       .variant("pressure", {required_key("side_set", string("Side set the pressure acts on.")),
                             required_key("value", real("Pressure, positive into the body.", "stress")), curve})
       .variant("nodal_force", {required_key("node_set", string("Node set sharing the force equally.")),
                                required_key("value", real_list("Total force vector, one entry per dimension.", "force").items(2, 3)),
                                curve})
       .variant("body_force", {optional_key("parts", string_list("Parts loaded; all when omitted.")),
-                              required_key("value", real_list("Force per unit volume, one entry per dimension.", "force/length^3").items(2, 3)),
-                              curve});
+                              optional_key("value", real_list("Force per unit reference volume, one entry per dimension.", "force/length^3").items(2, 3)),
+                              exact, curve});
 }
 
 SpecPtr initial_condition_spec() {
@@ -188,7 +194,7 @@ SpecPtr verification_spec() {
       .optional("exact_solution",
                 choice("Named exact solution the error norms are measured against.",
                        {"timoshenko_beam", "bar_1d", "homogeneous_stretch", "linear_patch", "wave_front"}))
-      .optional("parameters", passthrough("Parameters of the exact solution (e.g. L, D, P for the beam)."))
+      .optional("parameters", passthrough("Parameters of the exact solution; see docs/verification.md (e.g. length, depth, load of the beam)."))
       .optional("reference_values", list("Scalar reference values.", reference).unique_names());
 }
 

@@ -1,0 +1,24 @@
+// Exact solutions a scene can verify against (verification.exact_solution) and take boundary
+// data from (from_exact_solution). Each gives the displacement, the nominal (first
+// Piola-Kirchhoff; Cauchy for small strain) stress for tractions P N, and the body force.
+#pragma once
+
+#include <functional>
+#include <string>
+
+#include "scene/Scene.hpp"
+
+namespace efg {
+
+struct ExactSolution {
+  std::string name;
+  std::function<void(const double* X, double* u)> displacement;
+  std::function<void(const double* X, double (&P)[3][3])> nominal_stress;
+  std::function<void(const double* X, double* b)> body_force;  ///< zero when empty
+};
+
+/// The scene's exact solution with its parameters (and the first part's material and plane
+/// assumption). Throws InputError for unknown parameters or values out of range.
+ExactSolution make_exact_solution(const Scene& scene, int dimension);
+
+}  // namespace efg
