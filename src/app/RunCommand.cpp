@@ -11,10 +11,8 @@
 #include "scene/SceneEcho.hpp"
 #include "core/RunSummary.hpp"
 #include "core/Version.hpp"
-#include "io/ResultsOutput.hpp"
-#include "mesh/NodalVolume.hpp"
 #include "run/Model.hpp"
-#include "run/OutputFields.hpp"
+#include "run/Simulation.hpp"
 
 namespace efg {
 namespace {
@@ -50,14 +48,6 @@ void log_discretization(const Model& model, const CommPtr& comm) {
   }
 }
 
-// Drivers join as their issues land; until then a stage is refused before any output is written.
-void require_available_drivers(const Scene& scene) {
-  for (const auto& stage : scene.stages)
-    throw std::runtime_error("stage '" + stage.name + "': the " + stage.driver +
-                             " driver is not available in this version of efg; a scene without stages "
-                             "runs a model check (initial state only)");
-}
-
 }  // namespace
 
 void run_command(const CommPtr& comm, const CommandLine& cl) {
@@ -65,27 +55,10 @@ void run_command(const CommPtr& comm, const CommandLine& cl) {
   log_model(model, comm);
   log_discretization(model, comm);
   require_available_drivers(model.scene);
-
-  const auto dim = model.mesh.dimension;
-  const auto columns = output_columns(model.scene.output.fields, dim);
   const std::filesystem::path path = std::filesystem::path(cl.output_dir) / model.scene.output.file;
   if (comm->getRank() == 0 && path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
-
-  {
-  Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewCounter("efg: output"));
-  ResultsOutput output(comm, path.string(), model.mesh, model.maps.owned_nodes, OutputLayout{columns, {}, {}},
-                       model.scene.title.empty() ? model.scene.name : model.scene.title);
-  const auto values = initial_state_columns(model, lumped_nodal_volumes(model.mesh));
-  ResultsOutput::MultiVector nodal(model.maps.owned_nodes, columns.size());
-  {
-    auto view = nodal.getLocalViewHost(Tpetra::Access::OverwriteAll);
-    for (std::size_t c = 0; c < values.size(); ++c)
-      for (std::size_t i = 0; i < values[c].size(); ++i) view(i, c) = values[c][i];
-  }
-  output.write(0.0, nodal, {});
-  output.close();
-  }
-  Log::info("model check: initial state written (no stages in the scene)");
+  run_stages(comm, model, path.string());
+  if (model.scene.stages.empty()) Log::info("model check: initial state written (no stages in the scene)");
   Log::info("results: " + std::filesystem::absolute(path).lexically_normal().string());
   print_run_summary(comm);
 }

@@ -69,6 +69,23 @@ class Emitter {
   std::vector<SmoothingPoint>& out_;
 };
 
+// The boundary facets of one side, split among its nodes (see side_smoothing_points).
+void emit_side(Emitter& emit, const std::vector<Vec>& x, const std::vector<LocalIndex>& node) {
+  auto mid = [&](std::size_t a, std::size_t b) { return average({x[a], x[b]}); };
+  if (emit.dim() == 2) {
+    const Vec m = mid(0, 1);
+    emit.segment(x[0], m, node[0], -1);
+    emit.segment(m, x[1], node[1], -1);
+    return;
+  }
+  const Vec sc = average(x);
+  const std::size_t m = x.size();
+  for (std::size_t i = 0; i < m; ++i) {
+    const std::size_t prev = (i + m - 1) % m, next = (i + 1) % m;
+    emit.quad({x[i], mid(i, next), sc, mid(prev, i)}, node[i], -1);
+  }
+}
+
 // Sides of the blocks not shared with another cell of the blocks: the part's boundary.
 std::map<std::vector<LocalIndex>, int> count_sides(const BackgroundMesh& mesh, const std::vector<std::string>& blocks) {
   std::map<std::vector<LocalIndex>, int> count;
@@ -154,23 +171,44 @@ std::vector<SmoothingPoint> smoothing_points(const BackgroundMesh& mesh, const s
         for (int k : sn) key.push_back(node[k]);
         std::sort(key.begin(), key.end());
         if (side_count.at(key) != 1) continue;
-        if (emit.dim() == 2) {
-          const Vec m = mid(sn[0], sn[1]);
-          emit.segment(x[static_cast<std::size_t>(sn[0])], m, node[sn[0]], -1);
-          emit.segment(m, x[static_cast<std::size_t>(sn[1])], node[sn[1]], -1);
-        } else {
-          std::vector<Vec> pts;
-          for (int k : sn) pts.push_back(x[static_cast<std::size_t>(k)]);
-          const Vec sc = average(pts);
-          const std::size_t m = sn.size();
-          for (std::size_t i = 0; i < m; ++i) {
-            const int prev = sn[(i + m - 1) % m], here = sn[i], next = sn[(i + 1) % m];
-            emit.quad({x[static_cast<std::size_t>(here)], mid(here, next), sc, mid(prev, here)}, node[here], -1);
-          }
+        std::vector<Vec> side_x;
+        std::vector<LocalIndex> side_nodes;
+        for (int k : sn) {
+          side_x.push_back(x[static_cast<std::size_t>(k)]);
+          side_nodes.push_back(node[k]);
         }
+        emit_side(emit, side_x, side_nodes);
       }
     }
   }
+  return out;
+}
+
+std::vector<std::pair<std::size_t, int>> boundary_sides(const BackgroundMesh& mesh, const std::vector<std::string>& blocks) {
+  const auto count = count_sides(mesh, blocks);
+  std::vector<std::pair<std::size_t, int>> sides;
+  std::size_t global = 0;
+  for (const auto& b : mesh.blocks) {
+    const bool in = std::find(blocks.begin(), blocks.end(), b.name) != blocks.end();
+    const auto npc = static_cast<std::size_t>(cell_node_count(b.type));
+    for (std::size_t c = 0; c < b.cell_count(); ++c, ++global) {
+      if (!in) continue;
+      for (int s = 0; s < cell_side_count(b.type); ++s) {
+        std::vector<LocalIndex> key;
+        for (int k : cell_side_nodes(b.type, s)) key.push_back(b.connectivity[c * npc + static_cast<std::size_t>(k)]);
+        std::sort(key.begin(), key.end());
+        if (count.at(key) == 1) sides.emplace_back(global, s);
+      }
+    }
+  }
+  return sides;
+}
+
+std::vector<SmoothingPoint> side_smoothing_points(const std::vector<std::array<double, 3>>& side_x,
+                                                  const std::vector<LocalIndex>& side_nodes, int dim) {
+  std::vector<SmoothingPoint> out;
+  Emitter emit(dim, out);
+  emit_side(emit, side_x, side_nodes);
   return out;
 }
 

@@ -3,8 +3,38 @@
 #include <stdexcept>
 
 #include "io/ExodusWriter.hpp"
+#include "materials/SolidMaterial.hpp"
+#include "mesh/NodalVolume.hpp"
 
 namespace efg {
+namespace {
+
+template <int Dim>
+void particle_state(const physics::SolidMaterial& m, bool finite, const double* h, double (&strain)[3][3], double (&sigma)[3][3]) {
+  double H[Dim][Dim];
+  for (int i = 0; i < Dim; ++i)
+    for (int j = 0; j < Dim; ++j) H[i][j] = h[i * 3 + j];
+  physics::cauchy_stress<Dim>(m, H, sigma);
+  for (auto& row : strain)
+    for (auto& v : row) v = 0.0;
+  for (int i = 0; i < Dim; ++i)
+    for (int j = 0; j < Dim; ++j) {
+      strain[i][j] = 0.5 * (H[i][j] + H[j][i]);
+      if (finite)  // Green-Lagrange: E = (H + H^T + H^T H) / 2
+        for (int k = 0; k < Dim; ++k) strain[i][j] += 0.5 * H[k][i] * H[k][j];
+    }
+  if (Dim == 2 && m.plane_stress && !finite)  // eps_zz = -lambda*/(lambda* + 2 mu) (eps_xx + eps_yy)
+    strain[2][2] = -m.lambda / (m.lambda + 2 * m.mu) * (strain[0][0] + strain[1][1]);
+}
+
+void push_tensor(std::vector<double>& out, const double (&t)[3][3], int dim, std::size_t component) {
+  static const int map3[6][2] = {{0, 0}, {1, 1}, {2, 2}, {0, 1}, {1, 2}, {2, 0}};
+  static const int map2[4][2] = {{0, 0}, {1, 1}, {2, 2}, {0, 1}};
+  const auto& ij = dim == 2 ? map2[component] : map3[component];
+  out.push_back(t[ij[0]][ij[1]]);
+}
+
+}  // namespace
 
 std::vector<std::string> field_columns(const std::string& field, int dimension) {
   if (field == "displacement" || field == "velocity" || field == "acceleration" || field == "reaction")
@@ -27,19 +57,64 @@ std::vector<std::string> output_columns(const std::vector<std::string>& fields, 
   return columns;
 }
 
-std::vector<std::vector<double>> initial_state_columns(const Model& model, const std::vector<double>& nodal_volume) {
+std::vector<std::vector<double>> state_columns(const Model& model, const SolidOperator& op, const Vector& d_overlap,
+                                               const Vector* reaction_owned) {
+  const int dim = model.mesh.dimension;
+  const auto udim = static_cast<std::size_t>(dim);
   const auto& owned = model.partition.owned;
+  const auto volume = lumped_nodal_volumes(model.mesh);
+  // Per owned particle (in partition order): u, H, material.
+  std::vector<std::array<double, 3>> u(owned.size(), {0, 0, 0});
+  std::vector<std::array<double, 9>> h(owned.size(), std::array<double, 9>{});
+  std::vector<int> part_of(owned.size(), -1);
+  std::vector<std::size_t> slot(model.mesh.node_count(), 0);
+  for (std::size_t i = 0; i < owned.size(); ++i) slot[static_cast<std::size_t>(owned[i])] = i;
+  const auto d = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
+  for (std::size_t p = 0; p < model.parts.size(); ++p) {
+    const auto& part = model.parts[p];
+    const auto& node = op.overlap_node(p);
+    for (std::size_t j = 0; j < part.cloud.owned_count; ++j) {
+      const auto s = slot[static_cast<std::size_t>(part.cloud.mesh_node[j])];
+      part_of[s] = static_cast<int>(p);
+      for (auto k = part.particle_values.offsets[j]; k < part.particle_values.offsets[j + 1]; ++k) {
+        const auto n = static_cast<std::size_t>(node[static_cast<std::size_t>(part.particle_values.particles[k])]);
+        for (std::size_t i = 0; i < udim; ++i) u[s][i] += part.particle_values.values[k] * d(n * udim + i, 0);
+      }
+      for (auto k = part.particle_gradients.offsets[j]; k < part.particle_gradients.offsets[j + 1]; ++k) {
+        const auto n = static_cast<std::size_t>(node[static_cast<std::size_t>(part.particle_gradients.particles[k])]);
+        for (std::size_t i = 0; i < udim; ++i)
+          for (std::size_t c = 0; c < udim; ++c) h[s][i * 3 + c] += d(n * udim + i, 0) * part.particle_gradients.values[k * udim + c];
+      }
+    }
+  }
   std::vector<std::vector<double>> columns;
-  for (const auto& field : model.scene.output.fields)
-    for (std::size_t c = 0; c < field_columns(field, model.mesh.dimension).size(); ++c) {
-      std::vector<double> values(owned.size(), 0.0);
-      for (std::size_t i = 0; i < owned.size(); ++i) {
-        const auto node = static_cast<std::size_t>(owned[i]);
-        if (field == "nodal_volume") values[i] = nodal_volume[node];
-        if (field == "owner_rank") values[i] = model.partition.rank;
+  for (const auto& field : model.scene.output.fields) {
+    const auto count = field_columns(field, dim).size();
+    for (std::size_t c = 0; c < count; ++c) {
+      std::vector<double> values;
+      values.reserve(owned.size());
+      for (std::size_t s = 0; s < owned.size(); ++s) {
+        double strain[3][3] = {}, sigma[3][3] = {};
+        if ((field == "stress" || field == "strain" || field == "von_mises") && part_of[s] >= 0) {
+          const auto& pd = model.parts[static_cast<std::size_t>(part_of[s])];
+          const auto m = solid_material(*model.scene.find_material(pd.part->material), *pd.part, dim);
+          const bool finite = pd.part->section.formulation == Formulation::total_lagrangian;
+          if (dim == 2) particle_state<2>(m, finite, h[s].data(), strain, sigma);
+          else particle_state<3>(m, finite, h[s].data(), strain, sigma);
+        }
+        if (field == "displacement") values.push_back(u[s][c]);
+        else if (field == "velocity" || field == "acceleration") values.push_back(0.0);
+        else if (field == "reaction")
+          values.push_back(reaction_owned ? reaction_owned->getLocalViewHost(Tpetra::Access::ReadOnly)(s * udim + c, 0) : 0.0);
+        else if (field == "stress") push_tensor(values, sigma, dim, c);
+        else if (field == "strain") push_tensor(values, strain, dim, c);
+        else if (field == "von_mises") values.push_back(physics::von_mises(sigma));
+        else if (field == "nodal_volume") values.push_back(volume[static_cast<std::size_t>(owned[s])]);
+        else if (field == "owner_rank") values.push_back(model.partition.rank);
       }
       columns.push_back(std::move(values));
     }
+  }
   return columns;
 }
 

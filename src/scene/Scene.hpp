@@ -53,7 +53,7 @@ struct BoundaryConditionSpec {
   std::string type;  ///< displacement | velocity
   std::string node_set;
   std::string method;
-  double penalty = 1e4;
+  std::optional<double> penalty;  ///< alpha of beta = alpha E / h; method default when empty
   std::array<std::optional<double>, 3> components;
   std::array<bool, 3> from_exact{false, false, false};  ///< components taken from the exact solution
   std::string curve;  ///< empty: constant

@@ -200,7 +200,7 @@ class SceneBuilder {
     bc.type = b["type"].as<std::string>();
     bc.node_set = b["node_set"].as<std::string>();
     bc.method = b["method"].as<std::string>();
-    bc.penalty = b["penalty"].as<double>();
+    if (b["penalty"]) bc.penalty = b["penalty"].as<double>();
     const char* axes[3] = {"x", "y", "z"};
     for (std::size_t c = 0; c < 3; ++c)
       if (b[axes[c]]) bc.components[c] = b[axes[c]].as<double>();

@@ -108,9 +108,11 @@ SpecPtr boundary_condition_spec() {
       .required("type", choice("Prescribed quantity.", {"displacement", "velocity"}))
       .required("node_set", string("Node set of the mesh the condition applies to."))
       .optional("method",
-                choice("Enforcement with non-interpolating shape functions.", {"transformation", "penalty", "nitsche"}),
+                choice("Enforcement with non-interpolating shape functions (docs/boundary_conditions.md).",
+                       {"transformation", "nitsche", "penalty"}),
                 "transformation")
-      .optional("penalty", real("Penalty factor relative to the largest Young's modulus / spacing (method: penalty).", "-").above(0), "1e4")
+      .optional("penalty", real("Factor alpha of the boundary stiffness beta = alpha E / h (nitsche: default 100; penalty: "
+                                "default 1e4).", "-").above(0))
       .discriminated_by("type")
       .variant("displacement", keys("Prescribed displacement", "length"))
       .variant("velocity", keys("Prescribed velocity", "length/time"))

@@ -1,0 +1,64 @@
+#include "drivers/ImplicitDriver.hpp"
+
+#include <Teuchos_TimeMonitor.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "core/Errors.hpp"
+#include "core/Log.hpp"
+#include "core/Progress.hpp"
+
+namespace efg {
+
+ImplicitDriver::ImplicitDriver(StaticProblem& problem, const StageSpec& stage, double start_time, double first_stage_end)
+    : problem_(problem), stage_(stage), start_(start_time), first_end_(first_stage_end) {}
+
+StageSummary ImplicitDriver::run(Vector& d, const OutputHook& output) {
+  const auto& scene = problem_.model().scene;
+  const double end = stage_.end_time, span = end - start_;
+  const int steps = stage_.settings["load_steps"].as<int>();
+  const double min_step = stage_.settings["min_step_fraction"].as<double>() * span;
+  const double interval = stage_.output_interval.value_or(span);
+  NewtonSolver newton(problem_, stage_.settings, scene.file, "stage '" + stage_.name + "'");
+  Progress progress("stage '" + stage_.name + "'", span);
+  StageSummary summary;
+  double t = start_, dt = span / steps, next_output = std::min(end, start_ + interval);
+  Vector saved(d, Teuchos::Copy);
+  while (t < end - 1e-12 * span) {
+    const double target = std::min(end, t + dt);
+    const double ramp = std::min(1.0, target / first_end_);
+    problem_.set_load_factor(curve_factor(scene, target, ramp));
+    Log::info("  stage '" + stage_.name + "' step " + std::to_string(summary.steps + 1) + ": t = " + std::to_string(target));
+    Tpetra::deep_copy(saved, d);
+    const auto result = newton.solve(d);
+    summary.newton_iterations += result.iterations;
+    summary.linear_iterations += result.linear_iterations;
+    if (!result.converged) {
+      Tpetra::deep_copy(d, saved);
+      ++summary.cutbacks;
+      dt /= 2;
+      std::ostringstream why;
+      why << "stage '" << stage_.name << "': Newton did not converge at t = " << target << " (load step " << summary.steps + 1
+          << ", " << result.iterations << " iterations, ||r||:";
+      for (double r : result.residual_history) why << " " << r;
+      why << ")";
+      if (!result.failure.empty()) why << ": " << result.failure;
+      if (dt < min_step * (1 - 1e-12)) throw NumericalError(why.str() + "; the minimum step " + std::to_string(min_step) + " is reached");
+      Log::warning(why.str() + "; cutting the step to " + std::to_string(dt));
+      continue;
+    }
+    t = target;
+    ++summary.steps;
+    progress.update(t - start_);
+    if (t >= next_output - 1e-12 * span) {
+      output(t, d);
+      next_output = std::min(end, next_output + interval);
+    }
+  }
+  progress.finish();
+  return summary;
+}
+
+}  // namespace efg

@@ -1,0 +1,71 @@
+#include "drivers/SolidModelEvaluator.hpp"
+
+#include <Teuchos_CommHelpers.hpp>
+#include <Thyra_TpetraThyraWrappers.hpp>
+#include <Thyra_VectorStdOps.hpp>
+
+#include <limits>
+
+#include "core/Errors.hpp"
+
+namespace efg {
+namespace {
+using Extract = Thyra::TpetraOperatorVectorExtraction<double, Map::local_ordinal_type, GlobalOrdinal, Map::node_type>;
+}
+
+SolidModelEvaluator::SolidModelEvaluator(StaticProblem& problem, const Vector& initial_guess)
+    : problem_(problem), space_(Thyra::createVectorSpace<double>(problem.owned_dofs())) {
+  set_initial_guess(initial_guess);
+}
+
+void SolidModelEvaluator::set_initial_guess(const Vector& guess) {
+  auto x0 = Teuchos::rcp(new Vector(guess, Teuchos::Copy));
+  Thyra::ModelEvaluatorBase::InArgsSetup<double> nominal = createInArgs();
+  nominal.set_x(Thyra::createVector(Teuchos::rcp_implicit_cast<Tpetra::Vector<>>(x0), space_));
+  nominal_ = nominal;
+}
+
+Thyra::ModelEvaluatorBase::InArgs<double> SolidModelEvaluator::createInArgs() const {
+  Thyra::ModelEvaluatorBase::InArgsSetup<double> in;
+  in.setModelEvalDescription(this->description());
+  in.setSupports(Thyra::ModelEvaluatorBase::IN_ARG_x);
+  return std::move(in);
+}
+
+Thyra::ModelEvaluatorBase::OutArgs<double> SolidModelEvaluator::createOutArgsImpl() const {
+  Thyra::ModelEvaluatorBase::OutArgsSetup<double> out;
+  out.setModelEvalDescription(this->description());
+  out.setSupports(Thyra::ModelEvaluatorBase::OUT_ARG_f);
+  out.setSupports(Thyra::ModelEvaluatorBase::OUT_ARG_W_op);
+  return std::move(out);
+}
+
+Teuchos::RCP<Thyra::LinearOpBase<double>> SolidModelEvaluator::create_W_op() const {
+  auto K = problem_.create_matrix();
+  K->beginAssembly();  // leave it fill-complete in owned mode, as Thyra expects
+  K->endAssembly();
+  Teuchos::RCP<Tpetra::Operator<>> op = K;
+  return Thyra::createLinearOp<double>(op, space_, space_);
+}
+
+void SolidModelEvaluator::evalModelImpl(const Thyra::ModelEvaluatorBase::InArgs<double>& in,
+                                        const Thyra::ModelEvaluatorBase::OutArgs<double>& out) const {
+  const auto x = Extract::getConstTpetraVector(in.get_x());
+  const auto f_thyra = out.get_f();
+  const auto w_thyra = out.get_W_op();
+  int failed = 0;
+  try {
+    if (!f_thyra.is_null()) problem_.residual(*x, *Extract::getTpetraVector(f_thyra));
+    if (!w_thyra.is_null())
+      problem_.jacobian(*x, *Teuchos::rcp_dynamic_cast<FEMatrix>(Extract::getTpetraOperator(w_thyra), true));
+  } catch (const NumericalError& e) {
+    failure_ = e.what();
+    failed = 1;
+  }
+  int any = 0;
+  Teuchos::reduceAll(*problem_.owned_dofs()->getComm(), Teuchos::REDUCE_MAX, failed, Teuchos::outArg(any));
+  if (any && !f_thyra.is_null()) Thyra::assign(f_thyra.ptr(), std::numeric_limits<double>::quiet_NaN());
+  if (any && failure_.empty()) failure_ = "numerical failure on another rank";
+}
+
+}  // namespace efg

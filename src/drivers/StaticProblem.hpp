@@ -1,0 +1,53 @@
+// The discrete equilibrium problem of an implicit stage at one load level:
+//   r(d) = f_int(d) - lambda f_ext (+ penalty springs), with the constrained rows replaced by
+//   the kinematic constraints (transformation method),
+// and its Jacobian on a graph built once. Knows nothing of the nonlinear solver that drives it.
+#pragma once
+
+#include <Tpetra_Export.hpp>
+#include <Tpetra_Import.hpp>
+
+#include <memory>
+
+#include "operators/EssentialConditions.hpp"
+#include "operators/ExternalLoads.hpp"
+#include "operators/SolidOperator.hpp"
+
+namespace efg {
+
+class StaticProblem {
+ public:
+  explicit StaticProblem(const Model& model);
+
+  /// Prescribed values and loads at the current load level.
+  void set_load_factor(const LoadFactor& factor);
+  /// r = residual(d) on the owned dofs.
+  void residual(const Vector& d_owned, Vector& r_owned);
+  /// K = dr/dd, refilled in place (the graph never changes).
+  void jacobian(const Vector& d_owned, FEMatrix& K);
+  Teuchos::RCP<FEMatrix> create_matrix() const { return Teuchos::rcp(new FEMatrix(graph_)); }
+
+  /// Reactions of every boundary condition at d (after a converged solve).
+  std::vector<std::array<double, 3>> reactions(const Vector& d_owned);
+
+  const Teuchos::RCP<const Map>& owned_dofs() const { return model_.maps.owned_dofs; }
+  const SolidOperator& solid() const { return solid_; }
+  const Model& model() const { return model_; }
+  /// Imports owned values to the overlap map (owned then ghost particles).
+  void to_overlap(const Vector& owned, Vector& overlap) const { overlap.doImport(owned, *import_, Tpetra::INSERT); }
+
+ private:
+  void unconstrained_residual(const Vector& d_owned, Vector& r_owned);
+
+  const Model& model_;
+  std::unique_ptr<ExactSolution> exact_;
+  SolidOperator solid_;
+  ExternalLoads loads_;
+  EssentialConditions conditions_;
+  Teuchos::RCP<const FEGraph> graph_;
+  Teuchos::RCP<Tpetra::Import<>> import_;
+  Teuchos::RCP<Tpetra::Export<>> export_;
+  Vector d_overlap_, r_overlap_, f_ext_;
+};
+
+}  // namespace efg

@@ -1,0 +1,305 @@
+#include "operators/EssentialConditions.hpp"
+
+#include <Teuchos_CommHelpers.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/Errors.hpp"
+#include "discretization/ShapeFunctions.hpp"
+#include "discretization/SmoothingFacets.hpp"
+#include "operators/SideQuadrature.hpp"
+
+namespace efg {
+namespace {
+
+int method_of(const std::string& m) { return m == "transformation" ? 0 : m == "nitsche" ? 1 : 2; }
+
+// The particle spacing h of an owned particle of a part (support over dilation, largest direction).
+double spacing_of(const PartDiscretization& d, std::size_t particle) {
+  double h = 0;
+  const auto& dil = d.part->section.dilation;
+  for (int k = 0; k < d.cloud.dimension; ++k)
+    h = std::max(h, d.cloud.a(particle)[k] / (dil.size() == 1 ? dil[0] : dil[static_cast<std::size_t>(k)]));
+  return h;
+}
+
+}  // namespace
+
+EssentialConditions::EssentialConditions(const Model& model, const SolidOperator& op, const ExactSolution* exact)
+    : dim_(model.mesh.dimension), conditions_(model.scene.boundary_conditions.size()), overlap_dofs_(model.maps.overlap_dofs) {
+  const auto& mesh = model.mesh;
+  const auto udim = static_cast<std::size_t>(dim_);
+  const int rank = model.partition.rank;
+  double largest_modulus = 0;
+  for (const auto& m : model.scene.materials) largest_modulus = std::max(largest_modulus, m.constants.at("youngs_modulus"));
+  const auto owned_rows = model.maps.owned_dofs;
+  for (std::size_t c = 0; c < model.scene.boundary_conditions.size(); ++c) {
+    const auto& bc = model.scene.boundary_conditions[c];
+    if (bc.type != "displacement") continue;  // velocity conditions belong to the explicit driver
+    const int method = method_of(bc.method);
+    const double alpha = bc.penalty.value_or(method == 1 ? 100.0 : 1e4);
+    const auto& set = mesh.find_node_set(bc.node_set)->nodes;
+    std::vector<char> in_set(mesh.node_count(), 0);
+    for (auto n : set) in_set[static_cast<std::size_t>(n)] = 1;
+    std::array<bool, 3> mask{};
+    for (std::size_t k = 0; k < 3; ++k) mask[k] = bc.components[k].has_value() || bc.from_exact[k];
+    auto prescribed = [&](const double* X, std::size_t k) {
+      if (!bc.from_exact[k]) return bc.components[k].value_or(0.0);
+      double u[3] = {0, 0, 0};
+      exact->displacement(X, u);
+      return u[k];
+    };
+
+    // Collocated nodes (transformation).
+    if (method == 0)
+      for (auto node : set) {
+        if (model.partition.owner[static_cast<std::size_t>(node)] != rank) continue;
+        bool found = false;
+        for (std::size_t p = 0; p < model.parts.size() && !found; ++p) {
+          const auto& d = model.parts[p];
+          const auto end = d.cloud.mesh_node.begin() + static_cast<std::ptrdiff_t>(d.cloud.owned_count);
+          const auto it = std::find(d.cloud.mesh_node.begin(), end, node);
+          if (it == end) continue;
+          found = true;
+          const auto row = static_cast<std::size_t>(it - d.cloud.mesh_node.begin());
+          const double s = largest_modulus * std::pow(spacing_of(d, row), dim_ - 2) * (dim_ == 2 ? d.part->thickness : 1.0);
+          for (int i = 0; i < dim_; ++i) {
+            if (!mask[static_cast<std::size_t>(i)]) continue;
+            NodeConstraint nc;
+            nc.owned_row = owned_rows->getLocalElement(static_cast<GlobalOrdinal>(node) * dim_ + i);
+            nc.component = i;
+            nc.scale = s;
+            nc.base = prescribed(d.cloud.x(row), static_cast<std::size_t>(i));
+            nc.curve = bc.curve;
+            for (auto k = d.particle_values.offsets[row]; k < d.particle_values.offsets[row + 1]; ++k) {
+              nc.nodes.push_back(op.overlap_node(p)[static_cast<std::size_t>(d.particle_values.particles[k])]);
+              nc.phi.push_back(d.particle_values.values[k]);
+            }
+            nodes_.push_back(std::move(nc));
+          }
+        }
+        if (!found)
+          throw InputError(model.scene.file + ": boundary condition '" + bc.name + "': node " + std::to_string(node + 1) +
+                           " of node set '" + bc.node_set + "' is not a particle of any meshfree part");
+      }
+
+    // Boundary points on the sides the node set covers.
+    long long sides_found = 0;
+    for (std::size_t p = 0; p < model.parts.size(); ++p) {
+      const auto& d = model.parts[p];
+      const auto material = solid_material(*model.scene.find_material(d.part->material), *d.part, dim_);
+      const double thickness = dim_ == 2 ? d.part->thickness : 1.0;
+      std::vector<SidePoint> pts;
+      std::vector<double> beta;
+      for (const auto& [cell, side] : boundary_sides(mesh, d.part->blocks)) {
+        const auto nodes = mesh.side_node_indices(cell, side);
+        if (!std::all_of(nodes.begin(), nodes.end(), [&](LocalIndex n) { return in_set[static_cast<std::size_t>(n)] != 0; })) continue;
+        ++sides_found;
+        if (model.partition.owner[static_cast<std::size_t>(*std::min_element(nodes.begin(), nodes.end()))] != rank) continue;
+        // h of the side: its longest edge to a neighbouring side node.
+        double h = 0;
+        for (std::size_t a = 0; a < nodes.size(); ++a) {
+          double d2 = 0;
+          for (std::size_t k = 0; k < udim; ++k) {
+            const double dx = mesh.coordinates[static_cast<std::size_t>(nodes[a]) * udim + k] -
+                              mesh.coordinates[static_cast<std::size_t>(nodes[(a + 1) % nodes.size()]) * udim + k];
+            d2 += dx * dx;
+          }
+          h = std::max(h, std::sqrt(d2));
+        }
+        for (const auto& q : side_quadrature(mesh, cell, side)) {
+          pts.push_back(q);
+          beta.push_back(alpha * largest_modulus / h);
+        }
+      }
+      if (pts.empty()) continue;
+      std::vector<double> x;
+      for (const auto& q : pts) x.insert(x.end(), q.x.begin(), q.x.begin() + static_cast<std::ptrdiff_t>(udim));
+      const auto v = evaluate_shape_functions(d.cloud, x.data(), pts.size(), true, [&](std::size_t q) {
+        return "boundary point " + std::to_string(q) + " of condition '" + bc.name + "'";
+      });
+      for (std::size_t q = 0; q < pts.size(); ++q) {
+        BoundaryPoint b;
+        b.condition = c;
+        for (std::size_t k = 0; k < 3; ++k) b.weighted_normal[k] = pts[q].normal[k] * pts[q].weight * thickness;
+        b.area = pts[q].weight * thickness;
+        b.constrained = mask;
+        for (std::size_t k = 0; k < udim; ++k)
+          if (mask[k]) b.base[k] = prescribed(pts[q].x.data(), k);
+        b.curve = bc.curve;
+        b.method = method;
+        b.beta = beta[q];
+        b.material = material;
+        for (auto k = v.neighbors.offsets[q]; k < v.neighbors.offsets[q + 1]; ++k) {
+          b.nodes.push_back(op.overlap_node(p)[static_cast<std::size_t>(v.neighbors.particles[k])]);
+          b.phi.push_back(v.phi[k]);
+          b.grad.insert(b.grad.end(), v.grad.begin() + static_cast<std::ptrdiff_t>(k * udim),
+                        v.grad.begin() + static_cast<std::ptrdiff_t>((k + 1) * udim));
+        }
+        points_.push_back(std::move(b));
+      }
+    }
+    if (method != 0 && sides_found == 0)
+      throw InputError(model.scene.file + ": boundary condition '" + bc.name + "': node set '" + bc.node_set +
+                       "' covers no side of a meshfree part, which method " + bc.method +
+                       " integrates over; use method transformation for point constraints");
+  }
+}
+
+void EssentialConditions::add_couplings(CouplingGraph& graph) const {
+  for (const auto& c : nodes_) graph.add_row(c.owned_row / dim_, c.nodes.data(), c.nodes.size());  // owned nodes lead the overlap order
+  for (const auto& p : points_) graph.add_clique(p.nodes.data(), p.nodes.size());
+}
+
+void EssentialConditions::set_factor(const LoadFactor& factor) {
+  for (auto& c : nodes_) c.value = c.base * factor(c.curve);
+  for (auto& p : points_) {
+    const double f = factor(p.curve);
+    for (std::size_t k = 0; k < 3; ++k) p.value[k] = p.base[k] * f;
+  }
+}
+
+double EssentialConditions::constrained_value(const NodeConstraint& c, const Vector& d_overlap) const {
+  const auto u = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
+  double value = 0;
+  for (std::size_t k = 0; k < c.nodes.size(); ++k) value += c.phi[k] * u(static_cast<std::size_t>(c.nodes[k] * dim_ + c.component), 0);
+  return value;
+}
+
+template <int Dim>
+void EssentialConditions::point_terms(const BoundaryPoint& p, const Vector& d_overlap, Vector* r_overlap, FEMatrix* K) const {
+  const auto d = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
+  const std::size_t n = p.nodes.size();
+  double H[Dim][Dim] = {}, u[Dim] = {};
+  for (std::size_t a = 0; a < n; ++a)
+    for (int i = 0; i < Dim; ++i) {
+      const double di = d(static_cast<std::size_t>(p.nodes[a] * Dim + i), 0);
+      u[i] += p.phi[a] * di;
+      for (int j = 0; j < Dim; ++j) H[i][j] += di * p.grad[a * Dim + static_cast<std::size_t>(j)];
+    }
+  double P[Dim][Dim] = {}, A[Dim][Dim][Dim][Dim] = {};
+  if (!physics::stress_and_tangent<Dim>(p.material, H, P, A)) throw NumericalError("det F <= 0 at a boundary point of an essential condition");
+  double gap[Dim] = {}, Pn[Dim] = {};
+  for (int i = 0; i < Dim; ++i) {
+    gap[i] = p.constrained[static_cast<std::size_t>(i)] ? u[i] - p.value[static_cast<std::size_t>(i)] : 0.0;
+    for (int j = 0; j < Dim; ++j) Pn[i] += P[i][j] * p.weighted_normal[static_cast<std::size_t>(j)];
+  }
+  // S_a[k][i] = sum_jl A_kjil dphi_a/dX_l n_j dA: the traction of a virtual displacement phi_a e_i.
+  auto S = [&](std::size_t a, int k, int i) {
+    double s = 0;
+    for (int j = 0; j < Dim; ++j)
+      for (int l = 0; l < Dim; ++l) s += A[k][j][i][l] * p.grad[a * Dim + static_cast<std::size_t>(l)] * p.weighted_normal[static_cast<std::size_t>(j)];
+    return s;
+  };
+  const bool consistency = p.method != 2, stabilized = p.method != 0, symmetric = p.method == 1;
+  if (r_overlap) {
+    auto r = r_overlap->getLocalViewHost(Tpetra::Access::ReadWrite);
+    for (std::size_t a = 0; a < n; ++a)
+      for (int i = 0; i < Dim; ++i) {
+        double v = 0;
+        if (p.constrained[static_cast<std::size_t>(i)]) {
+          if (consistency) v -= p.phi[a] * Pn[i];
+          if (stabilized) v += p.beta * p.phi[a] * gap[i] * p.area;
+        }
+        if (symmetric)
+          for (int k = 0; k < Dim; ++k) v -= gap[k] * S(a, k, i);
+        r(static_cast<std::size_t>(p.nodes[a] * Dim + i), 0) += v;
+      }
+  }
+  if (K) {
+    int cols[Dim];
+    double vals[Dim];
+    for (std::size_t a = 0; a < n; ++a)
+      for (int i = 0; i < Dim; ++i) {
+        for (std::size_t b = 0; b < n; ++b) {
+          for (int k = 0; k < Dim; ++k) {
+            double v = 0;
+            if (p.constrained[static_cast<std::size_t>(i)]) {
+              if (consistency) v -= p.phi[a] * S(b, i, k);
+              if (stabilized && i == k) v += p.beta * p.phi[a] * p.phi[b] * p.area;
+            }
+            if (symmetric && p.constrained[static_cast<std::size_t>(k)]) v -= S(a, k, i) * p.phi[b];
+            cols[k] = p.nodes[b] * Dim + k;
+            vals[k] = v;
+          }
+          K->sumIntoLocalValues(p.nodes[a] * Dim + i, Dim, vals, cols);
+        }
+      }
+  }
+}
+
+void EssentialConditions::add_boundary_terms(const Vector& d_overlap, Vector& r_overlap) const {
+  for (const auto& p : points_) {
+    if (dim_ == 2) point_terms<2>(p, d_overlap, &r_overlap, nullptr);
+    else point_terms<3>(p, d_overlap, &r_overlap, nullptr);
+  }
+}
+
+void EssentialConditions::add_boundary_terms(const Vector& d_overlap, FEMatrix& K) const {
+  for (const auto& p : points_) {
+    if (dim_ == 2) point_terms<2>(p, d_overlap, nullptr, &K);
+    else point_terms<3>(p, d_overlap, nullptr, &K);
+  }
+}
+
+void EssentialConditions::replace_rows(const Vector& d_overlap, Vector& r_owned) const {
+  for (const auto& c : nodes_) r_owned.replaceLocalValue(c.owned_row, c.scale * (constrained_value(c, d_overlap) - c.value));
+}
+
+void EssentialConditions::replace_rows(FEMatrix& K) const {
+  // In modify mode only local indices are accepted: rows are owned dofs, columns the matrix's
+  // column map.
+  const auto& cols_map = *K.getColMap();
+  std::vector<int> cols;
+  std::vector<double> vals;
+  for (const auto& c : nodes_) {
+    const auto n = K.getNumEntriesInLocalRow(c.owned_row);
+    Teuchos::Array<int> all_cols(n);
+    Teuchos::Array<double> all_vals(n);
+    std::size_t count = 0;
+    K.getLocalRowCopy(c.owned_row, all_cols(), all_vals(), count);
+    std::fill(all_vals.begin(), all_vals.end(), 0.0);
+    K.replaceLocalValues(c.owned_row, all_cols(), all_vals());
+    cols.clear();
+    vals.clear();
+    for (std::size_t k = 0; k < c.nodes.size(); ++k) {
+      cols.push_back(cols_map.getLocalElement(overlap_dofs_->getGlobalElement(c.nodes[k] * dim_ + c.component)));
+      vals.push_back(c.scale * c.phi[k]);
+    }
+    K.replaceLocalValues(c.owned_row, static_cast<int>(cols.size()), vals.data(), cols.data());
+  }
+}
+
+std::vector<std::array<double, 3>> EssentialConditions::reactions(const Vector& d_overlap) const {
+  const std::size_t n = conditions_ * 3;
+  std::vector<double> local(n, 0.0);
+  std::vector<double> global(n, 0.0);
+  const auto d = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
+  for (const auto& p : points_) {
+    double H[3][3] = {};
+    for (std::size_t a = 0; a < p.nodes.size(); ++a)
+      for (int i = 0; i < dim_; ++i)
+        for (int j = 0; j < dim_; ++j)
+          H[i][j] += d(static_cast<std::size_t>(p.nodes[a] * dim_ + i), 0) * p.grad[a * static_cast<std::size_t>(dim_) + static_cast<std::size_t>(j)];
+    double traction[3] = {0, 0, 0};
+    if (dim_ == 2) {
+      double H2[2][2] = {{H[0][0], H[0][1]}, {H[1][0], H[1][1]}}, P[2][2] = {}, A[2][2][2][2] = {};
+      physics::stress_and_tangent<2>(p.material, H2, P, A);
+      for (int i = 0; i < 2; ++i)
+        for (int j = 0; j < 2; ++j) traction[i] += P[i][j] * p.weighted_normal[static_cast<std::size_t>(j)];
+    } else {
+      double P[3][3] = {}, A[3][3][3][3] = {};
+      physics::stress_and_tangent<3>(p.material, H, P, A);
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) traction[i] += P[i][j] * p.weighted_normal[static_cast<std::size_t>(j)];
+    }
+    for (std::size_t k = 0; k < 3; ++k) local[p.condition * 3 + k] += traction[k];
+  }
+  if (n > 0) Teuchos::reduceAll(*overlap_dofs_->getComm(), Teuchos::REDUCE_SUM, static_cast<int>(n), local.data(), global.data());
+  std::vector<std::array<double, 3>> out(conditions_);
+  for (std::size_t c = 0; c < conditions_; ++c) out[c] = {global[3 * c], global[3 * c + 1], global[3 * c + 2]};
+  return out;
+}
+
+}  // namespace efg

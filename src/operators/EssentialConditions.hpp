@@ -1,0 +1,87 @@
+// Prescribed displacements with non-interpolating shape functions: the physical displacement at
+// X is u^h(X) = sum_I phi_I(X) d_I, so u^h = u_bar cannot be imposed on the d_I directly.
+// Three methods, chosen per condition (docs/boundary_conditions.md):
+//
+//  transformation - the kinematic constraint is collocated at the condition's nodes: the
+//    equation of each constrained dof (J, i) is replaced by s (u^h_i(X_J) - u_bar_i(X_J)) = 0
+//    (the boundary transformation of Chen & Wang 2000 in collocation form, scaled by
+//    s = E h^(d-2) to match the stiffness rows), and the remaining equations get the boundary
+//    traction term -integral over Gamma_u of phi_I (P n)_i, without which test functions that
+//    do not vanish on Gamma_u break consistency (Wagner & Liu 2000). Exact nodal values;
+//    nonsymmetric system.
+//  nitsche - symmetric Nitsche (Nitsche 1971; Fernandez-Mendez & Huerta 2004):
+//    - integral phi_I (P n)_i - integral (dP(phi_I e_i) n).(u^h - u_bar) + beta integral phi_I (u^h - u_bar)_i,
+//    beta = alpha E / h (alpha default 100). Consistent and symmetric.
+//  penalty - beta integral phi_I (u^h - u_bar)_i only (alpha default 1e4): symmetric, simple,
+//    but not consistent: the error decreases like 1/alpha.
+//
+// Boundary integrals run over the sides of the part whose nodes all lie in the condition's node
+// set, with the SCNI boundary points (operators/SideQuadrature). The reaction of a condition is
+// the integral of the traction P n over those sides.
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "operators/SolidOperator.hpp"
+#include "run/Curves.hpp"
+#include "verification/ExactSolutions.hpp"
+
+namespace efg {
+
+class EssentialConditions {
+ public:
+  EssentialConditions(const Model& model, const SolidOperator& op, const ExactSolution* exact);
+
+  /// Couplings the constraint rows and boundary integrals add to the stiffness graph.
+  void add_couplings(CouplingGraph& graph) const;
+
+  /// Prescribed values at the current time: value x factor(curve).
+  void set_factor(const LoadFactor& factor);
+
+  /// Boundary integral terms into an overlap residual / a matrix in assembly mode.
+  void add_boundary_terms(const Vector& d_overlap, Vector& r_overlap) const;
+  void add_boundary_terms(const Vector& d_overlap, FEMatrix& K) const;
+  /// Transformation rows: replaces the owned residual rows (after export) ...
+  void replace_rows(const Vector& d_overlap, Vector& r_owned) const;
+  /// ... and the owned matrix rows (after endAssembly).
+  void replace_rows(FEMatrix& K) const;
+
+  /// Reaction force of every condition, summed over ranks.
+  std::vector<std::array<double, 3>> reactions(const Vector& d_overlap) const;
+
+ private:
+  struct NodeConstraint {  // transformation: one collocated dof
+    int owned_row;
+    int component;
+    double scale, base, value = 0;
+    std::string curve;
+    std::vector<int> nodes;
+    std::vector<double> phi;
+  };
+  struct BoundaryPoint {
+    std::size_t condition;
+    std::array<double, 3> weighted_normal{};  // n dA (x thickness in 2D)
+    double area = 0;                          // dA (x thickness)
+    std::array<bool, 3> constrained{};
+    std::array<double, 3> base{}, value{};
+    std::string curve;
+    int method;  // 0 transformation, 1 nitsche, 2 penalty
+    double beta;
+    physics::SolidMaterial material;
+    std::vector<int> nodes;
+    std::vector<double> phi, grad;  // grad: dim per entry
+  };
+  template <int Dim>
+  void point_terms(const BoundaryPoint& p, const Vector& d_overlap, Vector* r, FEMatrix* K) const;
+  double constrained_value(const NodeConstraint& c, const Vector& d_overlap) const;
+
+  int dim_;
+  std::size_t conditions_;
+  Teuchos::RCP<const Map> overlap_dofs_;
+  std::vector<NodeConstraint> nodes_;
+  std::vector<BoundaryPoint> points_;
+};
+
+}  // namespace efg
