@@ -51,6 +51,7 @@ StageSummary ImplicitDriver::run(Vector& d, const OutputHook& output) {
     }
     t = target;
     ++summary.steps;
+    summary.residual_histories.push_back(result.residual_history);
     progress.update(t - start_);
     if (t >= next_output - 1e-12 * span) {
       output(t, d);

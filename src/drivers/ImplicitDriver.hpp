@@ -17,6 +17,7 @@ using OutputHook = std::function<void(double, const Vector&)>;
 
 struct StageSummary {
   int steps = 0, cutbacks = 0, newton_iterations = 0, linear_iterations = 0;
+  std::vector<std::vector<double>> residual_histories;  ///< ||r|| per Newton iteration, per converged step
 };
 
 class ImplicitDriver {

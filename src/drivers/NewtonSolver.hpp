@@ -1,6 +1,6 @@
 // NOX Newton with line search on the solid model evaluator, linear solves by Belos with an
 // Ifpack2 or MueLu preconditioner through Stratimikos. Defaults suit the nonsymmetric systems of
-// the transformation method (GMRES + ILU(1)); the stage's nonlinear_solver, linear_solver and
+// the transformation method (GMRES + ILU(2)); the stage's nonlinear_solver, linear_solver and
 // preconditioner maps override them (see docs/scene.md).
 #pragma once
 

@@ -1,5 +1,7 @@
 #include "drivers/StaticProblem.hpp"
 
+#include <Teuchos_TimeMonitor.hpp>
+
 namespace efg {
 namespace {
 std::unique_ptr<ExactSolution> exact_of(const Model& model) {
@@ -34,7 +36,10 @@ void StaticProblem::unconstrained_residual(const Vector& d_owned, Vector& r_owne
   to_overlap(d_owned, d_overlap_);
   r_overlap_.putScalar(0.0);
   solid_.add_internal_force(d_overlap_, r_overlap_);
-  conditions_.add_boundary_terms(d_overlap_, r_overlap_);
+  {
+    Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewCounter("efg: essential conditions"));
+    conditions_.add_boundary_terms(d_overlap_, r_overlap_);
+  }
   r_owned.putScalar(0.0);
   r_owned.doExport(r_overlap_, *export_, Tpetra::ADD);
   r_owned.update(-1.0, f_ext_, 1.0);
@@ -50,8 +55,12 @@ void StaticProblem::jacobian(const Vector& d_owned, FEMatrix& K) {
   K.beginAssembly();
   K.setAllToScalar(0.0);
   solid_.add_tangent(d_overlap_, K);
-  conditions_.add_boundary_terms(d_overlap_, K);
+  {
+    Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewCounter("efg: essential conditions"));
+    conditions_.add_boundary_terms(d_overlap_, K);
+  }
   K.endAssembly();
+  Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewCounter("efg: essential conditions"));
   K.beginModify();
   conditions_.replace_rows(K);
   K.endModify();

@@ -185,13 +185,18 @@ void EssentialConditions::point_terms(const BoundaryPoint& p, const Vector& d_ov
     gap[i] = p.constrained[static_cast<std::size_t>(i)] ? u[i] - p.value[static_cast<std::size_t>(i)] : 0.0;
     for (int j = 0; j < Dim; ++j) Pn[i] += P[i][j] * p.weighted_normal[static_cast<std::size_t>(j)];
   }
-  // S_a[k][i] = sum_jl A_kjil dphi_a/dX_l n_j dA: the traction of a virtual displacement phi_a e_i.
-  auto S = [&](std::size_t a, int k, int i) {
-    double s = 0;
-    for (int j = 0; j < Dim; ++j)
-      for (int l = 0; l < Dim; ++l) s += A[k][j][i][l] * p.grad[a * Dim + static_cast<std::size_t>(l)] * p.weighted_normal[static_cast<std::size_t>(j)];
-    return s;
-  };
+  // S_a[k][i] = sum_jl A_kjil dphi_a/dX_l n_j dA: traction component k of the virtual
+  // displacement phi_a e_i, computed once per entry (the matrix loop is quadratic in entries).
+  std::vector<double> S_table(n * Dim * Dim, 0.0);
+  for (std::size_t a = 0; a < n; ++a)
+    for (int k = 0; k < Dim; ++k)
+      for (int i = 0; i < Dim; ++i) {
+        double v = 0;
+        for (int j = 0; j < Dim; ++j)
+          for (int l = 0; l < Dim; ++l) v += A[k][j][i][l] * p.grad[a * Dim + static_cast<std::size_t>(l)] * p.weighted_normal[static_cast<std::size_t>(j)];
+        S_table[(a * Dim + static_cast<std::size_t>(k)) * Dim + static_cast<std::size_t>(i)] = v;
+      }
+  auto S = [&](std::size_t a, int k, int i) { return S_table[(a * Dim + static_cast<std::size_t>(k)) * Dim + static_cast<std::size_t>(i)]; };
   const bool consistency = p.method != 2, stabilized = p.method != 0, symmetric = p.method == 1;
   if (r_overlap) {
     auto r = r_overlap->getLocalViewHost(Tpetra::Access::ReadWrite);
@@ -208,11 +213,14 @@ void EssentialConditions::point_terms(const BoundaryPoint& p, const Vector& d_ov
       }
   }
   if (K) {
-    int cols[Dim];
-    double vals[Dim];
+    // One call per matrix row with all of the point's columns (a call per entry is slow).
+    std::vector<int> cols(n * Dim);
+    std::vector<double> vals(n * Dim);
+    for (std::size_t b = 0; b < n; ++b)
+      for (int k = 0; k < Dim; ++k) cols[b * Dim + static_cast<std::size_t>(k)] = p.nodes[b] * Dim + k;
     for (std::size_t a = 0; a < n; ++a)
       for (int i = 0; i < Dim; ++i) {
-        for (std::size_t b = 0; b < n; ++b) {
+        for (std::size_t b = 0; b < n; ++b)
           for (int k = 0; k < Dim; ++k) {
             double v = 0;
             if (p.constrained[static_cast<std::size_t>(i)]) {
@@ -220,11 +228,9 @@ void EssentialConditions::point_terms(const BoundaryPoint& p, const Vector& d_ov
               if (stabilized && i == k) v += p.beta * p.phi[a] * p.phi[b] * p.area;
             }
             if (symmetric && p.constrained[static_cast<std::size_t>(k)]) v -= S(a, k, i) * p.phi[b];
-            cols[k] = p.nodes[b] * Dim + k;
-            vals[k] = v;
+            vals[b * Dim + static_cast<std::size_t>(k)] = v;
           }
-          K->sumIntoLocalValues(p.nodes[a] * Dim + i, Dim, vals, cols);
-        }
+        K->sumIntoLocalValues(p.nodes[a] * Dim + i, static_cast<int>(cols.size()), vals.data(), cols.data());
       }
   }
 }

@@ -96,21 +96,27 @@ struct TangentKernel {
             for (int j = 0; j < Dim; ++j) s += p.grad(a, j) * A[i][j][k][l];
             G[i][k][l] = s;
           }
+      // One sumIntoValues per row and chunk of 32 column particles: far fewer sorted-row searches
+      // than one call per entry block, with a fixed-size scratch that fits any execution space.
+      constexpr int chunk = 32;
+      int cols[chunk * Dim];
+      double vals[chunk * Dim];
       const int row_node = p.node(a);
-      for (std::size_t b = p.offsets(q); b < p.offsets(q + 1); ++b) {
-        const int col_node = p.node(b);
-        for (int i = 0; i < Dim; ++i) {
-          int cols[Dim];
-          double vals[Dim];
-          for (int k = 0; k < Dim; ++k) {
-            double s = 0.0;
-            for (int l = 0; l < Dim; ++l) s += G[i][k][l] * p.grad(b, l);
-            cols[k] = col_node * Dim + k;
-            vals[k] = w * s;
+      for (int i = 0; i < Dim; ++i)
+        for (std::size_t first = p.offsets(q); first < p.offsets(q + 1); first += chunk) {
+          const std::size_t last = first + chunk < p.offsets(q + 1) ? first + chunk : p.offsets(q + 1);
+          int m = 0;
+          for (std::size_t b = first; b < last; ++b) {
+            const int col_node = p.node(b);
+            for (int k = 0; k < Dim; ++k, ++m) {
+              double s = 0.0;
+              for (int l = 0; l < Dim; ++l) s += G[i][k][l] * p.grad(b, l);
+              cols[m] = col_node * Dim + k;
+              vals[m] = w * s;
+            }
           }
-          K.sumIntoValues(row_node * Dim + i, cols, Dim, vals, false, true);
+          K.sumIntoValues(row_node * Dim + i, cols, m, vals, false, true);
         }
-      }
     }
   }
 };

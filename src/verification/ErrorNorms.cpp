@@ -1,0 +1,142 @@
+#include "verification/ErrorNorms.hpp"
+
+#include <Teuchos_CommHelpers.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "discretization/ShapeFunctions.hpp"
+#include "mesh/GaussRules.hpp"
+
+namespace efg {
+
+ErrorNorms error_norms(const Model& model, const SolidOperator& op, const Vector& d_overlap, const ExactSolution& exact) {
+  const auto& mesh = model.mesh;
+  const int dim = mesh.dimension;
+  const auto udim = static_cast<std::size_t>(dim);
+  const auto d = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
+  // sums: |e|^2, |u|^2, a(e,e), a(u,u)
+  double local[4] = {0, 0, 0, 0}, max_nodal = 0;
+  for (std::size_t p = 0; p < model.parts.size(); ++p) {
+    const auto& part = model.parts[p];
+    const auto m = solid_material(*model.scene.find_material(part.part->material), *part.part, dim);
+    const double thickness = dim == 2 ? part.part->thickness : 1.0;
+    std::vector<double> x, w;
+    for (const auto& b : mesh.blocks) {
+      if (std::find(part.part->blocks.begin(), part.part->blocks.end(), b.name) == part.part->blocks.end()) continue;
+      const auto npc = static_cast<std::size_t>(cell_node_count(b.type));
+      const auto rule = reference_rule(b.type, 5);
+      std::vector<double> cx(npc * udim);
+      for (std::size_t c = 0; c < b.cell_count(); ++c) {
+        const auto* node = &b.connectivity[c * npc];
+        if (model.partition.owner[static_cast<std::size_t>(*std::min_element(node, node + npc))] != model.partition.rank) continue;
+        for (std::size_t a = 0; a < npc; ++a)
+          for (std::size_t k = 0; k < udim; ++k) cx[a * udim + k] = mesh.coordinates[static_cast<std::size_t>(node[a]) * udim + k];
+        for (std::size_t q = 0; q < rule.weight.size(); ++q) {
+          double point[3];
+          const double det = map_to_cell(b.type, cx.data(), &rule.xi[q * udim], point);
+          x.insert(x.end(), point, point + udim);
+          w.push_back(rule.weight[q] * det * thickness);
+        }
+      }
+    }
+    const auto v = evaluate_shape_functions(part.cloud, x.data(), w.size(), true);
+    const auto& nodes = op.overlap_node(p);
+    // a(e, e) with the elasticity tensor: eps : C : eps = lambda tr(eps)^2 + 2 mu eps : eps.
+    auto energy = [&](const double (&g)[3][3]) {
+      double tr = 0, ee = 0;
+      for (std::size_t i = 0; i < udim; ++i) tr += g[i][i];
+      for (std::size_t i = 0; i < udim; ++i)
+        for (std::size_t j = 0; j < udim; ++j) ee += 0.25 * (g[i][j] + g[j][i]) * (g[i][j] + g[j][i]);
+      return m.lambda * tr * tr + 2 * m.mu * ee;
+    };
+    for (std::size_t q = 0; q < w.size(); ++q) {
+      double uh[3] = {0, 0, 0}, gh[3][3] = {};
+      for (auto k = v.neighbors.offsets[q]; k < v.neighbors.offsets[q + 1]; ++k) {
+        const auto n = static_cast<std::size_t>(nodes[static_cast<std::size_t>(v.neighbors.particles[k])]);
+        for (std::size_t i = 0; i < udim; ++i) {
+          uh[i] += v.phi[k] * d(n * udim + i, 0);
+          for (std::size_t j = 0; j < udim; ++j) gh[i][j] += d(n * udim + i, 0) * v.grad[k * udim + j];
+        }
+      }
+      double u[3] = {0, 0, 0}, g[3][3] = {};
+      exact.displacement(&x[q * udim], u);
+      // Exact gradient by central differences of the exact displacement (smooth, cheap).
+      const double h = 1e-6 * (1.0 + std::abs(x[q * udim]));
+      for (std::size_t j = 0; j < udim; ++j) {
+        double xp[3] = {0, 0, 0}, xm[3] = {0, 0, 0}, up[3], um[3];
+        for (std::size_t k = 0; k < udim; ++k) xp[k] = xm[k] = x[q * udim + k];
+        xp[j] += h;
+        xm[j] -= h;
+        exact.displacement(xp, up);
+        exact.displacement(xm, um);
+        for (std::size_t i = 0; i < udim; ++i) g[i][j] = (up[i] - um[i]) / (2 * h);
+      }
+      double e[3][3] = {};
+      for (std::size_t i = 0; i < udim; ++i) {
+        local[0] += w[q] * (uh[i] - u[i]) * (uh[i] - u[i]);
+        local[1] += w[q] * u[i] * u[i];
+        for (std::size_t j = 0; j < udim; ++j) e[i][j] = gh[i][j] - g[i][j];
+      }
+      local[2] += w[q] * energy(e);
+      local[3] += w[q] * energy(g);
+    }
+    // Nodal errors at the owned particles.
+    for (std::size_t j = 0; j < part.cloud.owned_count; ++j) {
+      double uh[3] = {0, 0, 0}, u[3] = {0, 0, 0};
+      for (auto k = part.particle_values.offsets[j]; k < part.particle_values.offsets[j + 1]; ++k) {
+        const auto n = static_cast<std::size_t>(nodes[static_cast<std::size_t>(part.particle_values.particles[k])]);
+        for (std::size_t i = 0; i < udim; ++i) uh[i] += part.particle_values.values[k] * d(n * udim + i, 0);
+      }
+      exact.displacement(part.cloud.x(j), u);
+      for (std::size_t i = 0; i < udim; ++i) max_nodal = std::max(max_nodal, std::abs(uh[i] - u[i]));
+    }
+  }
+  const auto& comm = *model.maps.owned_dofs->getComm();
+  double global[4] = {0, 0, 0, 0}, max_all = 0;
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, 4, local, global);
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_MAX, max_nodal, Teuchos::outArg(max_all));
+  ErrorNorms out;
+  out.l2_relative = std::sqrt(global[0] / global[1]);
+  out.energy_relative = std::sqrt(global[2] / global[3]);
+  out.max_nodal = max_all;
+  return out;
+}
+
+std::array<double, 3> displacement_at(const Model& model, const SolidOperator& op, const Vector& d_overlap, const double* point) {
+  const int dim = model.mesh.dimension;
+  const auto udim = static_cast<std::size_t>(dim);
+  // The rank owning the particle nearest to the point evaluates (it has the whole support).
+  double best = std::numeric_limits<double>::max();
+  int best_part = -1;
+  for (std::size_t p = 0; p < model.parts.size(); ++p)
+    for (std::size_t j = 0; j < model.parts[p].cloud.owned_count; ++j) {
+      double d2 = 0;
+      for (std::size_t k = 0; k < udim; ++k) d2 += std::pow(model.parts[p].cloud.x(j)[k] - point[k], 2);
+      if (d2 < best) {
+        best = d2;
+        best_part = static_cast<int>(p);
+      }
+    }
+  const auto& comm = *model.maps.owned_dofs->getComm();
+  // Lowest distance wins; ties go to the lowest rank.
+  double global_best = 0;
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_MIN, best, Teuchos::outArg(global_best));
+  int candidate = best == global_best ? comm.getRank() : comm.getSize(), winner = 0;
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_MIN, candidate, Teuchos::outArg(winner));
+  double local[3] = {0, 0, 0}, global[3] = {0, 0, 0};
+  if (comm.getRank() == winner && best_part >= 0) {
+    const auto& part = model.parts[static_cast<std::size_t>(best_part)];
+    const auto v = evaluate_shape_functions(part.cloud, point, 1, false);
+    const auto d = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
+    for (auto k = v.neighbors.offsets[0]; k < v.neighbors.offsets[1]; ++k) {
+      const auto n = static_cast<std::size_t>(op.overlap_node(static_cast<std::size_t>(best_part))[static_cast<std::size_t>(v.neighbors.particles[k])]);
+      for (std::size_t i = 0; i < udim; ++i) local[i] += v.phi[k] * d(n * udim + i, 0);
+    }
+  }
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, 3, local, global);
+  return {global[0], global[1], global[2]};
+}
+
+}  // namespace efg

@@ -1,0 +1,80 @@
+// Timoshenko cantilever (../shared/reference/benchmarks.md): L = 48, D = 12, E = 3e7, nu = 0.3,
+// P = 1000, plane stress; exact displacement imposed on x = 0, exact traction on x = L (and the
+// traction-free long sides). Linear basis, SCNI, dilation 2: L2 displacement error O(h^2),
+// energy O(h) (least-squares slopes over 4 levels, h = 3 to 0.375).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <sstream>
+
+#include "core/Log.hpp"
+#include "support/StaticSolve.hpp"
+#include "verification/ErrorNorms.hpp"
+
+namespace efg {
+namespace {
+
+std::string beam_scene(int nx, int ny, double perturbation, const char* method, const char* basis, const char* integration,
+                       double dilation) {
+  std::ostringstream s;
+  s << "mesh:\n  generate: {element: quad4, lower: [0, -6], upper: [48, 6], cells: [" << nx << ", " << ny
+    << "], perturbation: " << perturbation << ", seed: 11}\n"
+    << "parts:\n  - {name: beam, blocks: [block_1], material: m, plane: stress, section: {basis: " << basis
+    << ", integration: " << integration << ", dilation: " << dilation << "}}\n"
+    << "materials:\n  - {name: m, model: linear_elastic, youngs_modulus: 3.0e7, poissons_ratio: 0.3}\n"
+    << "boundary_conditions:\n  - {name: clamp, type: displacement, node_set: xmin, from_exact_solution: [x, y], method: " << method << "}\n"
+    << "loads:\n  - {name: tip, type: traction, side_set: xmax, from_exact_solution: true}\n"
+    << "stages:\n  - {name: load, driver: implicit, end_time: 1}\n"
+    << "verification:\n  exact_solution: timoshenko_beam\n  parameters: {length: 48, depth: 12, load: 1000}\n";
+  return s.str();
+}
+
+struct Level {
+  double h, l2, energy, tip;
+};
+
+std::vector<Level> series(double perturbation, const char* method, const char* basis, double dilation) {
+  std::vector<Level> levels;
+  for (int ny : {4, 8, 16, 32}) {
+    auto s = test::solve_static(beam_scene(4 * ny, ny, perturbation, method, basis, "scni", dilation));
+    const auto exact = make_exact_solution(s.model->scene, 2);
+    const auto e = error_norms(*s.model, s.problem->solid(), *s.d_overlap, exact);
+    const double tip_point[3] = {48.0, 0.0, 0.0};
+    const auto tip = displacement_at(*s.model, s.problem->solid(), *s.d_overlap, tip_point);
+    levels.push_back({12.0 / ny, e.l2_relative, e.energy_relative, tip[1]});
+    std::ostringstream o;
+    o << "timoshenko " << method << " " << basis << " perturbation " << perturbation << ": h = " << 12.0 / ny
+      << "  L2 " << e.l2_relative << "  energy " << e.energy_relative << "  tip u_y " << tip[1];
+    Log::info(o.str());
+  }
+  return levels;
+}
+
+// Least-squares slope of log(error) against log(h).
+double rate(const std::vector<Level>& levels, double Level::*error) {
+  double sx = 0, sy = 0, sxx = 0, sxy = 0;
+  const double n = static_cast<double>(levels.size());
+  for (const auto& l : levels) {
+    const double x = std::log(l.h), y = std::log(l.*error);
+    sx += x, sy += y, sxx += x * x, sxy += x * y;
+  }
+  return (n * sxy - sx * sy) / (n * sxx - sx * sx);
+}
+
+class Timoshenko : public ::testing::TestWithParam<double> {};
+
+TEST_P(Timoshenko, LinearBasisScniConvergesAtTheExpectedRates) {
+  const auto levels = series(GetParam(), "transformation", "linear", 2.0);
+  const double l2_rate = rate(levels, &Level::l2), energy_rate = rate(levels, &Level::energy);
+  Log::info("  rates: L2 " + std::to_string(l2_rate) + ", energy " + std::to_string(energy_rate));
+  EXPECT_GE(l2_rate, 1.9);
+  EXPECT_GE(energy_rate, 0.95);
+  EXPECT_NEAR(levels[2].tip, 0.0089, 0.005 * 0.0089) << "tip deflection on the second-finest level";
+  for (std::size_t i = 1; i < levels.size(); ++i) EXPECT_LT(levels[i].l2, levels[i - 1].l2);
+}
+
+INSTANTIATE_TEST_SUITE_P(RegularAndPerturbed, Timoshenko, ::testing::Values(0.0, 0.2),
+                         [](const auto& p) { return p.param == 0.0 ? std::string("regular") : std::string("perturbed"); });
+
+}  // namespace
+}  // namespace efg
