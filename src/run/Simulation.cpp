@@ -9,6 +9,9 @@
 #include "io/ResultsOutput.hpp"
 #include "parallel/Collective.hpp"
 #include "run/OutputFields.hpp"
+#include "verification/ErrorNorms.hpp"
+
+#include <sstream>
 
 namespace efg {
 namespace {
@@ -36,7 +39,8 @@ int run_stages(const CommPtr& comm, const Model& model, const std::string& path)
   run_collectively(comm, [&] { problem = std::make_unique<StaticProblem>(model); });
   ResultsOutput output(comm, path, model.mesh, model.maps.owned_nodes, OutputLayout{columns, {}, global_names(model)},
                        model.scene.title.empty() ? model.scene.name : model.scene.title);
-  Vector d(model.maps.owned_dofs), d_overlap(model.maps.overlap_dofs), residual(model.maps.owned_dofs);
+  Vector d(model.maps.owned_dofs), d_overlap(model.maps.overlap_dofs);
+  int output_records = 0;
 
   auto write = [&](double time, const Vector& state) {
     Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewCounter("efg: output"));
@@ -55,6 +59,7 @@ int run_stages(const CommPtr& comm, const Model& model, const std::string& path)
         for (std::size_t i = 0; i < values[c].size(); ++i) view(i, c) = values[c][i];
     }
     output.write(time, nodal, globals);
+    ++output_records;
   };
 
   write(0.0, d);
@@ -69,8 +74,17 @@ int run_stages(const CommPtr& comm, const Model& model, const std::string& path)
               " linear iterations");
     start = stage.end_time;
   }
+  if (!model.scene.exact_solution.empty()) {
+    problem->to_overlap(d, d_overlap);
+    const auto exact = make_exact_solution(model.scene, model.mesh.dimension);
+    const auto e = error_norms(model, problem->solid(), d_overlap, exact);
+    std::ostringstream o;
+    o << "verification against " << model.scene.exact_solution << ": relative L2 displacement error " << e.l2_relative
+      << ", relative energy-norm error " << e.energy_relative << ", largest nodal displacement error " << e.max_nodal;
+    Log::info(o.str());
+  }
   output.close();
-  return 0;
+  return output_records;
 }
 
 }  // namespace efg

@@ -146,6 +146,34 @@ ExactSolution homogeneous_stretch(const Scene& scene, int dim) {
   return s;
 }
 
+// Kambur 2004 ch. 4 / Belytschko, Lu, Gu 1994: u'' + x = 0 on (0, 1), u(0) = 0, u'(1) = 0, so
+// u = x/2 - x^3/6 for E A = 1. As a 2D strip (or 3D bar) with nu = 0 the 1D solution is exact:
+// u_x = (x/2 - x^3/6) / E under the body force b_x = x, other components zero.
+ExactSolution bar_1d(const Scene& scene) {
+  const Parameters p(scene, {});
+  const auto& m = first_material(scene);
+  const double E = m.constants.at("youngs_modulus");
+  if (m.constants.at("poissons_ratio") != 0.0)
+    throw InputError(scene.file + ": verification.exact_solution: bar_1d is exact for poissons_ratio 0 only");
+  ExactSolution s;
+  s.name = "bar_1d";
+  s.displacement = [=](const double* X, double* u) {
+    const double x = X[0];
+    u[0] = (x / 2 - x * x * x / 6) / E;
+    u[1] = u[2] = 0.0;
+  };
+  s.nominal_stress = [=](const double* X, double (&S)[3][3]) {
+    for (auto& row : S)
+      for (auto& v : row) v = 0.0;
+    S[0][0] = 0.5 - X[0] * X[0] / 2;
+  };
+  s.body_force = [](const double* X, double* b) {
+    b[0] = X[0];
+    b[1] = b[2] = 0.0;
+  };
+  return s;
+}
+
 }  // namespace
 
 ExactSolution make_exact_solution(const Scene& scene, int dimension) {
@@ -155,9 +183,10 @@ ExactSolution make_exact_solution(const Scene& scene, int dimension) {
     return timoshenko(scene);
   }
   if (name == "linear_patch") return linear_patch(scene, dimension);
+  if (name == "bar_1d") return bar_1d(scene);
   if (name == "homogeneous_stretch") return homogeneous_stretch(scene, dimension);
   throw InputError(scene.file + ": verification.exact_solution: '" + name +
-                   "' has no implementation yet; available: timoshenko_beam, linear_patch, homogeneous_stretch");
+                   "' has no implementation yet; available: timoshenko_beam, bar_1d, linear_patch, homogeneous_stretch");
 }
 
 }  // namespace efg
