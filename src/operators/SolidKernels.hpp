@@ -41,6 +41,18 @@ KOKKOS_INLINE_FUNCTION void displacement_gradient(const DevicePoints& p, const D
   }
 }
 
+/// Stress P and tangent A at point q; false (and `inverted` lowered to q) when det F <= 0.
+template <int Dim, class DisplacementView>
+KOKKOS_INLINE_FUNCTION bool material_state(const DevicePoints& p, const DisplacementView& u, const int q,
+                                           const Kokkos::View<int, MemSpace>& inverted, double (&P)[Dim][Dim],
+                                           double (&A)[Dim][Dim][Dim][Dim]) {
+  double H[Dim][Dim];
+  displacement_gradient<Dim>(p, u, q, H);
+  if (physics::stress_and_tangent<Dim>(p.material, H, P, A)) return true;
+  Kokkos::atomic_fetch_min(&inverted(), q);
+  return false;
+}
+
 /// f (overlap dofs) += internal force; `inverted` receives the smallest point index with
 /// det F <= 0 (INT_MAX when none).
 template <int Dim, class DisplacementView, class ForceView>
@@ -51,12 +63,8 @@ struct InternalForceKernel {
   Kokkos::View<int, MemSpace> inverted;
 
   KOKKOS_INLINE_FUNCTION void operator()(const int q) const {
-    double H[Dim][Dim], P[Dim][Dim], A[Dim][Dim][Dim][Dim];
-    displacement_gradient<Dim>(p, u, q, H);
-    if (!physics::stress_and_tangent<Dim>(p.material, H, P, A)) {
-      Kokkos::atomic_fetch_min(&inverted(), q);
-      return;
-    }
+    double P[Dim][Dim], A[Dim][Dim][Dim][Dim];
+    if (!material_state<Dim>(p, u, q, inverted, P, A)) return;
     const double w = p.weight(q);
     for (std::size_t k = p.offsets(q); k < p.offsets(q + 1); ++k) {
       const int n = p.node(k);
@@ -79,12 +87,8 @@ struct TangentKernel {
   Kokkos::View<int, MemSpace> inverted;
 
   KOKKOS_INLINE_FUNCTION void operator()(const int q) const {
-    double H[Dim][Dim], P[Dim][Dim], A[Dim][Dim][Dim][Dim];
-    displacement_gradient<Dim>(p, u, q, H);
-    if (!physics::stress_and_tangent<Dim>(p.material, H, P, A)) {
-      Kokkos::atomic_fetch_min(&inverted(), q);
-      return;
-    }
+    double P[Dim][Dim], A[Dim][Dim][Dim][Dim];
+    if (!material_state<Dim>(p, u, q, inverted, P, A)) return;
     const double w = p.weight(q);
     for (std::size_t a = p.offsets(q); a < p.offsets(q + 1); ++a) {
       // G_ikl = sum_j B_a,j A_ijkl: the row block of particle a, reused for every column particle.

@@ -85,46 +85,38 @@ void SolidOperator::report_inversion(const PartData& part, int point) const {
   throw NumericalError(o.str());
 }
 
-void SolidOperator::add_internal_force(const Vector& d_overlap, Vector& f_overlap) const {
-  Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewCounter("efg: internal force"));
-  const auto u = column(d_overlap);
-  auto f = column(f_overlap);
+template <class Launch>
+void SolidOperator::for_each_part(const Launch& launch) const {
   for (const auto& p : parts_) {
     Kokkos::View<int, MemSpace> inverted("efg::inverted");
     Kokkos::deep_copy(inverted, INT_MAX);
-    const auto n = static_cast<int>(p.points);
-    if (dim_ == 2) {
-      InternalForceKernel<2, decltype(u), decltype(f)> k{p.device, u, f, inverted};
-      Kokkos::parallel_for("efg::internal_force_2d", Kokkos::RangePolicy<ExecSpace>(0, n), k);
-    } else {
-      InternalForceKernel<3, decltype(u), decltype(f)> k{p.device, u, f, inverted};
-      Kokkos::parallel_for("efg::internal_force_3d", Kokkos::RangePolicy<ExecSpace>(0, n), k);
-    }
+    const auto policy = Kokkos::RangePolicy<ExecSpace>(0, static_cast<int>(p.points));
+    if (dim_ == 2) launch(std::integral_constant<int, 2>(), policy, p.device, inverted);
+    else launch(std::integral_constant<int, 3>(), policy, p.device, inverted);
     int bad = INT_MAX;
     Kokkos::deep_copy(bad, inverted);
     if (bad != INT_MAX) report_inversion(p, bad);
   }
 }
 
+void SolidOperator::add_internal_force(const Vector& d_overlap, Vector& f_overlap) const {
+  Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewCounter("efg: internal force"));
+  const auto u = column(d_overlap);
+  auto f = column(f_overlap);
+  for_each_part([&](auto dim, const auto& policy, const DevicePoints& p, const auto& inverted) {
+    using Kernel = InternalForceKernel<decltype(dim)::value, decltype(u), decltype(f)>;
+    Kokkos::parallel_for("efg::internal_force", policy, Kernel{p, u, f, inverted});
+  });
+}
+
 void SolidOperator::add_tangent(const Vector& d_overlap, FEMatrix& K) const {
   Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewCounter("efg: tangent assembly"));
   const auto u = column(d_overlap);
   auto local = K.getLocalMatrixDevice();
-  for (const auto& p : parts_) {
-    Kokkos::View<int, MemSpace> inverted("efg::inverted");
-    Kokkos::deep_copy(inverted, INT_MAX);
-    const auto n = static_cast<int>(p.points);
-    if (dim_ == 2) {
-      TangentKernel<2, decltype(u), decltype(local)> k{p.device, u, local, inverted};
-      Kokkos::parallel_for("efg::tangent_2d", Kokkos::RangePolicy<ExecSpace>(0, n), k);
-    } else {
-      TangentKernel<3, decltype(u), decltype(local)> k{p.device, u, local, inverted};
-      Kokkos::parallel_for("efg::tangent_3d", Kokkos::RangePolicy<ExecSpace>(0, n), k);
-    }
-    int bad = INT_MAX;
-    Kokkos::deep_copy(bad, inverted);
-    if (bad != INT_MAX) report_inversion(p, bad);
-  }
+  for_each_part([&](auto dim, const auto& policy, const DevicePoints& p, const auto& inverted) {
+    using Kernel = TangentKernel<decltype(dim)::value, decltype(u), decltype(local)>;
+    Kokkos::parallel_for("efg::tangent", policy, Kernel{p, u, local, inverted});
+  });
 }
 
 double SolidOperator::strain_energy(const Vector& d_overlap) const {

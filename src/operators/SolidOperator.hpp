@@ -49,6 +49,9 @@ class SolidOperator {
     std::vector<double> x;  // point coordinates, for messages
   };
   void report_inversion(const PartData& part, int point) const;
+  /// launch(dimension tag, policy, points, inverted) for every part, then reports inversions.
+  template <class Launch>
+  void for_each_part(const Launch& launch) const;
 
   int dim_;
   std::vector<PartData> parts_;
