@@ -24,7 +24,7 @@ StageSummary ImplicitDriver::run(Vector& d, const OutputHook& output) {
   NewtonSolver newton(problem_, stage_.settings, scene.file, "stage '" + stage_.name + "'");
   Progress progress("stage '" + stage_.name + "'", span);
   StageSummary summary;
-  double t = start_, dt = span / steps, next_output = std::min(end, start_ + interval);
+  double t = start_, dt = span / steps, next_output = std::min(end, start_ + interval), last_output = start_;
   Vector saved(d, Teuchos::Copy);
   while (t < end - 1e-12 * span) {
     const double target = std::min(end, t + dt);
@@ -42,10 +42,20 @@ StageSummary ImplicitDriver::run(Vector& d, const OutputHook& output) {
       std::ostringstream why;
       why << "stage '" << stage_.name << "': Newton did not converge at t = " << target << " (load step " << summary.steps + 1
           << ", " << result.iterations << " iterations, ||r||:";
-      for (double r : result.residual_history) why << " " << r;
+      const auto& h = result.residual_history;
+      for (std::size_t k = 0; k < h.size(); ++k) {
+        if (h.size() > 6 && k == 3) {
+          why << " ...";
+          k = h.size() - 3;
+        }
+        why << " " << h[k];
+      }
       why << ")";
       if (!result.failure.empty()) why << ": " << result.failure;
-      if (dt < min_step * (1 - 1e-12)) throw NumericalError(why.str() + "; the minimum step " + std::to_string(min_step) + " is reached");
+      if (dt < min_step * (1 - 1e-12)) {
+        if (t > last_output) output(t, d);  // keep the last converged state in the results
+        throw NumericalError(why.str() + "; the minimum step " + std::to_string(min_step) + " is reached");
+      }
       Log::warning(why.str() + "; cutting the step to " + std::to_string(dt));
       continue;
     }
@@ -55,6 +65,7 @@ StageSummary ImplicitDriver::run(Vector& d, const OutputHook& output) {
     progress.update(t - start_);
     if (t >= next_output - 1e-12 * span) {
       output(t, d);
+      last_output = t;
       next_output = std::min(end, next_output + interval);
     }
   }

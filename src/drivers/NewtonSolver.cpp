@@ -198,9 +198,11 @@ NewtonResult NewtonSolver::solve(Vector& d) {
   } catch (const std::exception& e) {
     result.failure = std::string("linear or nonlinear solver failed: ") + e.what();
   }
-  result.converged = status == NOX::StatusTest::Converged && model->failure().empty();
+  // A failed evaluation at a line-search trial point (an inverted point, say) is no failure of
+  // the step when NOX still converges: the trial point was rejected.
+  result.converged = status == NOX::StatusTest::Converged;
   result.iterations = solver->getNumIterations();
-  if (!model->failure().empty()) result.failure = model->failure();
+  if (!result.converged && !model->failure().empty()) result.failure = model->failure();
   using Extract = Thyra::TpetraOperatorVectorExtraction<double, Map::local_ordinal_type, GlobalOrdinal, Map::node_type>;
   const auto& x = dynamic_cast<const NOX::Thyra::Vector&>(solver->getSolutionGroup().getX());
   Tpetra::deep_copy(d, *Extract::getConstTpetraVector(x.getThyraRCPVector()));

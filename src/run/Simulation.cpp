@@ -4,6 +4,7 @@
 
 #include <memory>
 
+#include "core/Errors.hpp"
 #include "core/Log.hpp"
 #include "drivers/ImplicitDriver.hpp"
 #include "io/ResultsOutput.hpp"
@@ -68,7 +69,14 @@ int run_stages(const CommPtr& comm, const Model& model, const std::string& path)
   for (const auto& stage : model.scene.stages) {
     Log::info("stage '" + stage.name + "' (" + stage.driver + "), t = " + std::to_string(start) + " to " + std::to_string(stage.end_time));
     ImplicitDriver driver(*problem, stage, start, first_end);
-    const auto s = driver.run(d, write);
+    StageSummary s;
+    try {
+      s = driver.run(d, write);
+    } catch (const NumericalError&) {
+      output.close();  // the records up to the failure, the last converged state included
+      Log::info("results up to the failure: " + path);
+      throw;
+    }
     Log::info("stage '" + stage.name + "' done: " + std::to_string(s.steps) + " steps, " + std::to_string(s.cutbacks) +
               " cutbacks, " + std::to_string(s.newton_iterations) + " Newton iterations, " + std::to_string(s.linear_iterations) +
               " linear iterations");
