@@ -4,19 +4,17 @@
 // and its Jacobian on a graph built once. Knows nothing of the nonlinear solver that drives it.
 #pragma once
 
-#include <Tpetra_Export.hpp>
-#include <Tpetra_Import.hpp>
-
 #include <memory>
 
 #include "operators/EssentialConditions.hpp"
-#include "operators/ExternalLoads.hpp"
-#include "operators/SolidOperator.hpp"
+#include "operators/ModelOperators.hpp"
 
 namespace efg {
 
 class StaticProblem {
  public:
+  /// Shares the run's operators; builds the essential conditions and the stiffness graph.
+  explicit StaticProblem(std::shared_ptr<const ModelOperators> operators);
   explicit StaticProblem(const Model& model);
 
   /// Prescribed values and loads at the current load level.
@@ -31,22 +29,18 @@ class StaticProblem {
   std::vector<std::array<double, 3>> reactions(const Vector& d_owned);
 
   const Teuchos::RCP<const Map>& owned_dofs() const { return model_.maps.owned_dofs; }
-  const SolidOperator& solid() const { return solid_; }
+  const SolidOperator& solid() const { return ops_->solid(); }
   const Model& model() const { return model_; }
   /// Imports owned values to the overlap map (owned then ghost particles).
-  void to_overlap(const Vector& owned, Vector& overlap) const { overlap.doImport(owned, *import_, Tpetra::INSERT); }
+  void to_overlap(const Vector& owned, Vector& overlap) const { ops_->to_overlap(owned, overlap); }
 
  private:
   void unconstrained_residual(const Vector& d_owned, Vector& r_owned);
 
+  std::shared_ptr<const ModelOperators> ops_;
   const Model& model_;
-  std::unique_ptr<ExactSolution> exact_;
-  SolidOperator solid_;
-  ExternalLoads loads_;
   EssentialConditions conditions_;
   Teuchos::RCP<const FEGraph> graph_;
-  Teuchos::RCP<Tpetra::Import<>> import_;
-  Teuchos::RCP<Tpetra::Export<>> export_;
   Vector d_overlap_, r_overlap_, f_ext_;
 };
 

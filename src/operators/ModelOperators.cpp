@@ -1,0 +1,28 @@
+#include "operators/ModelOperators.hpp"
+
+namespace efg {
+namespace {
+std::unique_ptr<ExactSolution> exact_of(const Model& model) {
+  if (model.scene.exact_solution.empty()) return nullptr;
+  return std::make_unique<ExactSolution>(make_exact_solution(model.scene, model.mesh.dimension));
+}
+}  // namespace
+
+ModelOperators::ModelOperators(const Model& model)
+    : model_(model),
+      exact_(exact_of(model)),
+      solid_(model),
+      loads_(model, solid_, exact_.get()),
+      import_(Teuchos::rcp(new Tpetra::Import<>(model.maps.owned_dofs, model.maps.overlap_dofs))),
+      export_(Teuchos::rcp(new Tpetra::Export<>(model.maps.overlap_dofs, model.maps.owned_dofs))),
+      d_overlap_(model.maps.overlap_dofs),
+      f_overlap_(model.maps.overlap_dofs) {}
+
+void ModelOperators::internal_force(const Vector& d_owned, Vector& f_owned) const {
+  to_overlap(d_owned, d_overlap_);
+  f_overlap_.putScalar(0.0);
+  solid_.add_internal_force(d_overlap_, f_overlap_);
+  to_owned(f_overlap_, f_owned);
+}
+
+}  // namespace efg

@@ -1,0 +1,45 @@
+// The operators every stage driver shares, built once per run: the solid internal force (the
+// same function for the implicit residual and the explicit step), the external loads, the exact
+// solution when the scene names one, and the owned <-> overlap transfers.
+#pragma once
+
+#include <Tpetra_Export.hpp>
+#include <Tpetra_Import.hpp>
+
+#include <memory>
+
+#include "operators/ExternalLoads.hpp"
+#include "operators/SolidOperator.hpp"
+
+namespace efg {
+
+class ModelOperators {
+ public:
+  explicit ModelOperators(const Model& model);
+
+  const Model& model() const { return model_; }
+  const SolidOperator& solid() const { return solid_; }
+  const ExternalLoads& loads() const { return loads_; }
+  const ExactSolution* exact() const { return exact_.get(); }
+
+  /// Owned values to the overlap map (owned then ghost particles).
+  void to_overlap(const Vector& owned, Vector& overlap) const { overlap.doImport(owned, *import_, Tpetra::INSERT); }
+  /// Overlap contributions summed into the owned map (owned = sum, overwritten).
+  void to_owned(const Vector& overlap, Vector& owned) const {
+    owned.putScalar(0.0);
+    owned.doExport(overlap, *export_, Tpetra::ADD);
+  }
+  /// f_int(d) on the owned dofs: the one internal-force evaluation of both drivers.
+  void internal_force(const Vector& d_owned, Vector& f_owned) const;
+
+ private:
+  const Model& model_;
+  std::unique_ptr<ExactSolution> exact_;
+  SolidOperator solid_;
+  ExternalLoads loads_;
+  Teuchos::RCP<Tpetra::Import<>> import_;
+  Teuchos::RCP<Tpetra::Export<>> export_;
+  mutable Vector d_overlap_, f_overlap_;
+};
+
+}  // namespace efg
