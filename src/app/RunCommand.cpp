@@ -54,7 +54,6 @@ void run_command(const CommPtr& comm, const CommandLine& cl) {
   const Model model = build_model(comm, cl.scene);
   log_model(model, comm);
   log_discretization(model, comm);
-  require_available_drivers(model.scene);
   const std::filesystem::path path = std::filesystem::path(cl.output_dir) / model.scene.output.file;
   if (comm->getRank() == 0 && path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
   run_stages(comm, model, path.string());

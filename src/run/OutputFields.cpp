@@ -37,7 +37,7 @@ void push_tensor(std::vector<double>& out, const double (&t)[3][3], int dim, std
 }  // namespace
 
 std::vector<std::string> field_columns(const std::string& field, int dimension) {
-  if (field == "displacement" || field == "velocity" || field == "acceleration" || field == "reaction")
+  if (field == "displacement" || field == "velocity" || field == "acceleration")
     return vector_component_names(field, dimension);
   if (field == "stress" || field == "strain") {
     // Symmetric tensors; zz is kept in 2D (plane strain stress, plane stress strain).
@@ -58,18 +58,22 @@ std::vector<std::string> output_columns(const std::vector<std::string>& fields, 
 }
 
 std::vector<std::vector<double>> state_columns(const Model& model, const SolidOperator& op, const Vector& d_overlap,
-                                               const Vector* reaction_owned) {
+                                               const Vector* v_overlap, const Vector* a_overlap) {
   const int dim = model.mesh.dimension;
   const auto udim = static_cast<std::size_t>(dim);
   const auto& owned = model.partition.owned;
   const auto volume = lumped_nodal_volumes(model.mesh);
   // Per owned particle (in partition order): u, H, material.
-  std::vector<std::array<double, 3>> u(owned.size(), {0, 0, 0});
+  std::vector<std::array<double, 3>> u(owned.size(), {0, 0, 0}), vel(owned.size(), {0, 0, 0}), acc(owned.size(), {0, 0, 0});
   std::vector<std::array<double, 9>> h(owned.size(), std::array<double, 9>{});
   std::vector<int> part_of(owned.size(), -1);
   std::vector<std::size_t> slot(model.mesh.node_count(), 0);
   for (std::size_t i = 0; i < owned.size(); ++i) slot[static_cast<std::size_t>(owned[i])] = i;
   const auto d = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
+  using HostView = decltype(d);
+  const HostView no_values;
+  const auto v = v_overlap ? v_overlap->getLocalViewHost(Tpetra::Access::ReadOnly) : no_values;
+  const auto acc_view = a_overlap ? a_overlap->getLocalViewHost(Tpetra::Access::ReadOnly) : no_values;
   for (std::size_t p = 0; p < model.parts.size(); ++p) {
     const auto& part = model.parts[p];
     const auto& node = op.overlap_node(p);
@@ -78,7 +82,12 @@ std::vector<std::vector<double>> state_columns(const Model& model, const SolidOp
       part_of[s] = static_cast<int>(p);
       for (auto k = part.particle_values.offsets[j]; k < part.particle_values.offsets[j + 1]; ++k) {
         const auto n = static_cast<std::size_t>(node[static_cast<std::size_t>(part.particle_values.particles[k])]);
-        for (std::size_t i = 0; i < udim; ++i) u[s][i] += part.particle_values.values[k] * d(n * udim + i, 0);
+        for (std::size_t i = 0; i < udim; ++i) {
+          const double phi = part.particle_values.values[k];
+          u[s][i] += phi * d(n * udim + i, 0);
+          if (v_overlap) vel[s][i] += phi * v(n * udim + i, 0);
+          if (a_overlap) acc[s][i] += phi * acc_view(n * udim + i, 0);
+        }
       }
       for (auto k = part.particle_gradients.offsets[j]; k < part.particle_gradients.offsets[j + 1]; ++k) {
         const auto n = static_cast<std::size_t>(node[static_cast<std::size_t>(part.particle_gradients.particles[k])]);
@@ -103,9 +112,8 @@ std::vector<std::vector<double>> state_columns(const Model& model, const SolidOp
           else particle_state<3>(m, finite, h[s].data(), strain, sigma);
         }
         if (field == "displacement") values.push_back(u[s][c]);
-        else if (field == "velocity" || field == "acceleration") values.push_back(0.0);
-        else if (field == "reaction")
-          values.push_back(reaction_owned ? reaction_owned->getLocalViewHost(Tpetra::Access::ReadOnly)(s * udim + c, 0) : 0.0);
+        else if (field == "velocity") values.push_back(vel[s][c]);
+        else if (field == "acceleration") values.push_back(acc[s][c]);
         else if (field == "stress") push_tensor(values, sigma, dim, c);
         else if (field == "strain") push_tensor(values, strain, dim, c);
         else if (field == "von_mises") values.push_back(physics::von_mises(sigma));

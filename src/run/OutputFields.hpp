@@ -1,6 +1,6 @@
 // The output columns of each named field and their values at the owned particles for a state:
 // physical displacements u(X_J) = sum_I phi_I(X_J) d_I (not the generalized d_J), strains and
-// Cauchy stresses from the particle gradients (SCNI: smoothed), von Mises, reactions.
+// Cauchy stresses from the particle gradients (SCNI: smoothed), von Mises.
 #pragma once
 
 #include <string>
@@ -18,9 +18,9 @@ std::vector<std::string> field_columns(const std::string& field, int dimension);
 std::vector<std::string> output_columns(const std::vector<std::string>& fields, int dimension);
 
 /// Values of every output column at the owned particles (column after column), for generalized
-/// displacements d (overlap dofs) and constraint forces (owned dofs; null: zero). Velocities and
-/// accelerations are zero in a static state.
+/// displacements d, velocities v and accelerations a (overlap dofs; v and a may be null: zero).
+/// Reactions are global variables per boundary condition (R_<name>_x, ...), not a nodal field.
 std::vector<std::vector<double>> state_columns(const Model& model, const SolidOperator& op, const Vector& d_overlap,
-                                               const Vector* reaction_owned);
+                                               const Vector* v_overlap = nullptr, const Vector* a_overlap = nullptr);
 
 }  // namespace efg

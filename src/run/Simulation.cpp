@@ -1,98 +1,117 @@
 #include "run/Simulation.hpp"
 
+#include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_TimeMonitor.hpp>
 
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
 #include <memory>
+#include <sstream>
 
 #include "core/Errors.hpp"
 #include "core/Log.hpp"
+#include "drivers/ExplicitDriver.hpp"
 #include "drivers/ImplicitDriver.hpp"
 #include "io/ResultsOutput.hpp"
 #include "parallel/Collective.hpp"
+#include "run/InitialConditions.hpp"
 #include "run/OutputFields.hpp"
+#include "run/RunHistory.hpp"
 #include "verification/ErrorNorms.hpp"
 
-#include <sstream>
-
 namespace efg {
-namespace {
-
-std::vector<std::string> global_names(const Model& model) {
-  std::vector<std::string> names = {"strain_energy"};
-  const auto axes = std::string("xyz");
-  for (const auto& bc : model.scene.boundary_conditions)
-    for (int d = 0; d < model.mesh.dimension; ++d) names.push_back(("R_" + bc.name).substr(0, 30) + "_" + axes[static_cast<std::size_t>(d)]);
-  return names;
-}
-
-}  // namespace
-
-void require_available_drivers(const Scene& scene) {
-  for (const auto& stage : scene.stages)
-    if (stage.driver != "implicit")
-      throw std::runtime_error("stage '" + stage.name + "': the " + stage.driver +
-                               " driver is not available in this version of efg (only implicit stages run)");
-}
 
 int run_stages(const CommPtr& comm, const Model& model, const std::string& path) {
   const auto columns = output_columns(model.scene.output.fields, model.mesh.dimension);
+  // A scene builds only what it needs: the stiffness graph and solvers only for implicit stages.
+  std::shared_ptr<ModelOperators> ops;
   std::unique_ptr<StaticProblem> problem;
-  run_collectively(comm, [&] { problem = std::make_unique<StaticProblem>(model); });
-  ResultsOutput output(comm, path, model.mesh, model.maps.owned_nodes, OutputLayout{columns, {}, global_names(model)},
+  run_collectively(comm, [&] {
+    ops = std::make_shared<ModelOperators>(model);
+    for (const auto& s : model.scene.stages)
+      if (s.driver == "implicit" && !problem) problem = std::make_unique<StaticProblem>(ops);
+  });
+  RunHistory history(model);
+  ResultsOutput output(comm, path, model.mesh, model.maps.owned_nodes, OutputLayout{columns, {}, history.names()},
                        model.scene.title.empty() ? model.scene.name : model.scene.title);
-  Vector d(model.maps.owned_dofs), d_overlap(model.maps.overlap_dofs);
-  int output_records = 0;
+  std::unique_ptr<std::ofstream> csv;
+  if (!model.scene.output.history.empty() && comm->getRank() == 0) {
+    const auto csv_path = (std::filesystem::path(path).parent_path() / model.scene.output.history).string();
+    csv = std::make_unique<std::ofstream>(csv_path);
+    *csv << history.csv_header() << "\n";
+  }
+  RunState state(model.maps.owned_dofs);
+  apply_initial_conditions(model, state);
+  Vector d_overlap(model.maps.overlap_dofs), v_overlap(model.maps.overlap_dofs), a_overlap(model.maps.overlap_dofs);
+  int records = 0;
 
-  auto write = [&](double time, const Vector& state) {
+  auto write = [&](const RunState& s) {
     Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewCounter("efg: output"));
-    problem->to_overlap(state, d_overlap);
-    const auto reactions = problem->reactions(state);
-    std::vector<double> globals = {0.0};
-    const double mine = problem->solid().strain_energy(d_overlap);
-    Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, mine, Teuchos::outArg(globals[0]));
-    for (const auto& r : reactions)
-      for (int k = 0; k < model.mesh.dimension; ++k) globals.push_back(r[static_cast<std::size_t>(k)]);
-    const auto values = state_columns(model, problem->solid(), d_overlap, nullptr);
+    ops->to_overlap(s.d, d_overlap);
+    ops->to_overlap(s.v, v_overlap);
+    ops->to_overlap(s.a, a_overlap);
+    const auto reactions = problem ? problem->reactions(s.d) : std::vector<std::array<double, 3>>();
+    const auto globals = history.values(*ops, s, d_overlap, v_overlap, reactions);
+    const auto values = state_columns(model, ops->solid(), d_overlap, &v_overlap, &a_overlap);
     ResultsOutput::MultiVector nodal(model.maps.owned_nodes, columns.size());
     {
       auto view = nodal.getLocalViewHost(Tpetra::Access::OverwriteAll);
       for (std::size_t c = 0; c < values.size(); ++c)
         for (std::size_t i = 0; i < values[c].size(); ++i) view(i, c) = values[c][i];
     }
-    output.write(time, nodal, globals);
-    ++output_records;
+    output.write(s.time, nodal, globals);
+    if (csv) {
+      *csv << std::setprecision(12) << s.time;
+      for (double g : globals) *csv << "," << g;
+      *csv << "\n" << std::flush;
+    }
+    ++records;
   };
 
-  write(0.0, d);
-  double start = 0.0;
+  write(state);
   const double first_end = model.scene.stages.empty() ? 1.0 : model.scene.stages.front().end_time;
   for (const auto& stage : model.scene.stages) {
-    Log::info("stage '" + stage.name + "' (" + stage.driver + "), t = " + std::to_string(start) + " to " + std::to_string(stage.end_time));
-    ImplicitDriver driver(*problem, stage, start, first_end);
-    StageSummary s;
+    Log::info("stage '" + stage.name + "' (" + stage.driver + "), t = " + std::to_string(state.time) + " to " +
+              std::to_string(stage.end_time));
     try {
-      s = driver.run(d, write);
+      if (stage.driver == "implicit") {
+        state.v.putScalar(0.0);
+        state.a.putScalar(0.0);
+        ImplicitDriver driver(*problem, stage, state.time, first_end);
+        const auto s = driver.run(state.d, [&](double t, const Vector&) {
+          state.time = t;
+          write(state);
+        });
+        Log::info("stage '" + stage.name + "' done: " + std::to_string(s.steps) + " steps, " + std::to_string(s.cutbacks) +
+                  " cutbacks, " + std::to_string(s.newton_iterations) + " Newton iterations, " +
+                  std::to_string(s.linear_iterations) + " linear iterations");
+      } else {
+        std::unique_ptr<ExplicitDriver> driver;
+        run_collectively(comm, [&] { driver = std::make_unique<ExplicitDriver>(*ops, stage); });
+        const auto s = driver->run(state, write);
+        std::ostringstream o;
+        o << "stage '" << stage.name << "' done: " << s.steps << " steps, dt " << s.smallest_dt << " to " << s.largest_dt
+          << ", worst energy balance error " << 100 * s.worst_balance_error << " %";
+        Log::info(o.str());
+      }
     } catch (const NumericalError&) {
-      output.close();  // the records up to the failure, the last converged state included
+      output.close();  // the records up to the failure, the last good state included
       Log::info("results up to the failure: " + path);
       throw;
     }
-    Log::info("stage '" + stage.name + "' done: " + std::to_string(s.steps) + " steps, " + std::to_string(s.cutbacks) +
-              " cutbacks, " + std::to_string(s.newton_iterations) + " Newton iterations, " + std::to_string(s.linear_iterations) +
-              " linear iterations");
-    start = stage.end_time;
+    state.time = stage.end_time;
   }
-  if (!model.scene.exact_solution.empty()) {
-    problem->to_overlap(d, d_overlap);
-    const auto exact = make_exact_solution(model.scene, model.mesh.dimension);
-    const auto e = error_norms(model, problem->solid(), d_overlap, exact);
+  if (!model.scene.exact_solution.empty() && ops->exact()) {
+    ops->to_overlap(state.d, d_overlap);
+    const auto e = error_norms(model, ops->solid(), d_overlap, *ops->exact());
     std::ostringstream o;
     o << "verification against " << model.scene.exact_solution << ": relative L2 displacement error " << e.l2_relative
       << ", relative energy-norm error " << e.energy_relative << ", largest nodal displacement error " << e.max_nodal;
     Log::info(o.str());
   }
   output.close();
-  return output_records;
+  return records;
 }
 
 }  // namespace efg

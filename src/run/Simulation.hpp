@@ -12,7 +12,4 @@ namespace efg {
 /// Runs every stage of the model and writes the results to `path`; returns the number of records.
 int run_stages(const CommPtr& comm, const Model& model, const std::string& path);
 
-/// Throws (exit code 1) for a stage whose driver this build does not have, before any output.
-void require_available_drivers(const Scene& scene);
-
 }  // namespace efg

@@ -80,6 +80,13 @@ struct CurveSpec {
   std::vector<double> time, value;
 };
 
+struct RigidWallSpec {
+  std::string name;
+  std::vector<double> point, normal;
+  std::string node_set;  ///< empty: every particle
+  double penalty = 0.5;
+};
+
 struct StageSpec {
   std::string name;
   std::string driver;  ///< implicit | explicit
@@ -92,6 +99,7 @@ struct OutputSpec {
   std::string file;
   std::vector<std::string> fields;
   std::string history;
+  std::vector<std::string> history_node_sets;
 };
 
 struct Scene {
@@ -107,6 +115,7 @@ struct Scene {
   std::vector<LoadSpec> loads;
   std::vector<InitialConditionSpec> initial_conditions;
   std::vector<CurveSpec> curves;
+  std::vector<RigidWallSpec> rigid_walls;
   std::vector<StageSpec> stages;
   OutputSpec output;
   YAML::Node verification;  ///< null when absent

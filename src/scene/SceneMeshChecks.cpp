@@ -80,6 +80,20 @@ class Checker {
       if (load.type == "nodal_force") require_name(ld["node_set"], path + ".node_set", load.set, "node set", node_sets);
       if (load.type != "pressure" && !load.from_exact) require_dimension(ld["value"], path + ".value", load.value.size());
     }
+    for (std::size_t i = 0; i < s_.rigid_walls.size(); ++i) {
+      const auto& w = s_.rigid_walls[i];
+      const auto path = "rigid_walls[" + std::to_string(i) + "]";
+      const auto& wd = d["rigid_walls"][i];
+      require_dimension(wd["point"], path + ".point", w.point.size());
+      require_dimension(wd["normal"], path + ".normal", w.normal.size());
+      double n2 = 0;
+      for (double v : w.normal) n2 += v * v;
+      if (!(n2 > 0)) fail(wd["normal"], path + ".normal", "expected a nonzero normal");
+      if (!w.node_set.empty()) require_name(wd["node_set"], path + ".node_set", w.node_set, "node set", node_sets);
+    }
+    for (std::size_t i = 0; i < s_.output.history_node_sets.size(); ++i)
+      require_name(d["output"]["history_node_sets"][i], "output.history_node_sets[" + std::to_string(i) + "]",
+                   s_.output.history_node_sets[i], "node set", node_sets);
     for (std::size_t i = 0; i < s_.initial_conditions.size(); ++i) {
       const auto path = "initial_conditions[" + std::to_string(i) + "]";
       const auto& ic = d["initial_conditions"][i];

@@ -58,6 +58,10 @@ class SceneBuilder {
     s_.output.file = r["output"]["file"] ? r["output"]["file"].as<std::string>() : s_.name + ".e";
     s_.output.fields = as_vector<std::string>(r["output"]["fields"]);
     s_.output.history = opt_string(r["output"], "history");
+    s_.output.history_node_sets = as_vector<std::string>(r["output"]["history_node_sets"]);
+    for (const auto& w : r["rigid_walls"])
+      s_.rigid_walls.push_back({w["name"].as<std::string>(), as_vector<double>(w["point"]), as_vector<double>(w["normal"]),
+                                opt_string(w, "node_set"), w["penalty"].as<double>()});
     if (r["verification"]) {
       s_.verification = r["verification"];
       if (r["verification"]["exact_solution"]) s_.exact_solution = r["verification"]["exact_solution"].as<std::string>();

@@ -161,7 +161,7 @@ SpecPtr stage_spec() {
       .required("name", string("Stage name, unique."))
       .required("driver", choice("Time integration.", {"implicit", "explicit"}))
       .required("end_time", real("Stage end time (pseudo-time for static implicit stages).", "time").above(0))
-      .optional("output_interval", real("Time between output records; stage end only when omitted.", "time").above(0))
+      .optional("output_interval", real("Time between output records; when omitted, implicit stages write the stage end and explicit stages 20 records.", "time").above(0))
       .discriminated_by("driver")
       .variant("implicit",
                {optional_key("load_steps", integer("Initial number of load steps.").at_least(1), "1"),
@@ -172,7 +172,18 @@ SpecPtr stage_spec() {
       .variant("explicit",
                {optional_key("dt_scale", real("Factor on the stable time step.", "-").above(0).at_most(1), "0.9"),
                 optional_key("dt", real("Fixed time step instead of the stable estimate.", "time").above(0)),
-                optional_key("allow_unstable_dt", boolean("Run a fixed dt above the stable limit (detected and stopped if it blows up)."), "false")});
+                optional_key("allow_unstable_dt", boolean("Run a fixed dt above the stable limit (detected and stopped if it blows up)."), "false"),
+                optional_key("dt_update_interval", integer("Steps between re-estimates of the stable time step.").at_least(1), "100")});
+}
+
+SpecPtr rigid_wall_spec() {
+  return map("A fixed planar rigid wall (LS-DYNA *RIGIDWALL_PLANAR): particles may not cross the plane through point "
+             "against normal; enforced by a penalty force in explicit stages.")
+      .required("name", string("Wall name, unique."))
+      .required("point", real_list("A point of the plane.", "length").items(2, 3))
+      .required("normal", real_list("Normal pointing to the side the particles stay on (need not be unit).", "-").items(2, 3))
+      .optional("node_set", string("Node set of the particles the wall acts on; all particles when omitted."))
+      .optional("penalty", real("Wall stiffness per particle as a fraction of its mass / dt^2 (stable up to about 1).", "-").above(0).at_most(1), "0.5");
 }
 
 SpecPtr output_spec() {
@@ -181,9 +192,11 @@ SpecPtr output_spec() {
       .optional("fields",
                 string_list("Nodal (particle) fields written at each record.")
                     .choices({"displacement", "velocity", "acceleration", "stress", "strain",
-                              "von_mises", "reaction", "nodal_volume", "owner_rank"}),
+                              "von_mises", "nodal_volume", "owner_rank"}),
                 "[displacement, nodal_volume, owner_rank]")
-      .optional("history", string("CSV file of global quantities per record; none when omitted."));
+      .optional("history", string("CSV file, relative to the output folder, of the global quantities (energies, wall forces, "
+                                  "reactions) and the node sets' mean displacement and velocity at every record; none when omitted."))
+      .optional("history_node_sets", string_list("Node sets whose mean displacement and velocity go to the history file."), "[]");
 }
 
 SpecPtr verification_spec() {
@@ -211,6 +224,7 @@ Spec build_scene_schema() {
           .optional("loads", list("External loads.", load_spec()).unique_names(), "[]")
           .optional("initial_conditions", list("Initial conditions.", initial_condition_spec()), "[]")
           .optional("curves", list("Load curves.", curve_spec()).unique_names(), "[]")
+          .optional("rigid_walls", list("Planar rigid walls (explicit stages).", rigid_wall_spec()).unique_names(), "[]")
           .optional("stages", list("Analysis stages, run in order. With none, the run writes the "
                                    "initial state only (a model check).", stage_spec()).unique_names(), "[]")
           .optional("output", output_spec(), "{}")

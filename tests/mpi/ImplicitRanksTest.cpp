@@ -30,7 +30,7 @@ std::map<LocalIndex, std::array<double, 3>> solve(const CommPtr& comm, const std
     start = stage.end_time;
   }
   problem.to_overlap(d, d_overlap);
-  const auto columns = state_columns(model, problem.solid(), d_overlap, nullptr);
+  const auto columns = state_columns(model, problem.solid(), d_overlap);
   std::map<LocalIndex, std::array<double, 3>> u;
   for (std::size_t i = 0; i < model.partition.owned.size(); ++i)
     for (int k = 0; k < model.mesh.dimension; ++k) u[model.partition.owned[i]][static_cast<std::size_t>(k)] = columns[static_cast<std::size_t>(k)][i];

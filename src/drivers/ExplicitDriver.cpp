@@ -1,0 +1,202 @@
+#include "drivers/ExplicitDriver.hpp"
+
+#include <Teuchos_CommHelpers.hpp>
+#include <Teuchos_TimeMonitor.hpp>
+
+#include <cmath>
+#include <sstream>
+
+#include "core/Errors.hpp"
+#include "core/Log.hpp"
+#include "core/Progress.hpp"
+
+namespace efg {
+
+ExplicitDriver::ExplicitDriver(const ModelOperators& ops, const StageSpec& stage)
+    : ops_(ops),
+      stage_(stage),
+      mass_(lumped_mass(ops)),
+      inverse_mass_(mass_.getMap()),
+      walls_(ops, mass_),
+      motion_(ops.model()),
+      stable_(ops, mass_),
+      f_ext_(mass_.getMap()),
+      f_ext_old_(mass_.getMap()),
+      f_wall_(mass_.getMap()),
+      f_wall_old_(mass_.getMap()),
+      f_int_(mass_.getMap()),
+      wall_overlap_(ops.model().maps.overlap_dofs),
+      d_overlap_(ops.model().maps.overlap_dofs) {
+  inverse_mass_.reciprocal(mass_);
+}
+
+std::vector<double> ExplicitDriver::acceleration(double time, double dt, const Vector& d, Vector& a) {
+  ops_.loads().assemble(curve_factor(ops_.model().scene, time, 1.0), f_ext_);
+  ops_.internal_force(d, f_int_);
+  std::vector<double> wall_forces;
+  f_wall_.putScalar(0.0);
+  if (!walls_.empty()) {
+    ops_.to_overlap(d, d_overlap_);
+    wall_overlap_.putScalar(0.0);
+    wall_forces = walls_.add_forces(d_overlap_, dt, wall_overlap_);
+    ops_.to_owned(wall_overlap_, f_wall_);
+  }
+  a.update(1.0, f_ext_, -1.0, f_int_, 0.0);
+  a.update(1.0, f_wall_, 1.0);
+  a.elementWiseMultiply(1.0, inverse_mass_, a, 0.0);
+  return wall_forces;
+}
+
+bool ExplicitDriver::finite(const RunState& state) const {
+  const auto d = state.d.getLocalViewHost(Tpetra::Access::ReadOnly);
+  const auto v = state.v.getLocalViewHost(Tpetra::Access::ReadOnly);
+  int ok = 1;
+  for (std::size_t k = 0; k < d.extent(0) && ok; ++k) ok = std::isfinite(d(k, 0)) && std::isfinite(v(k, 0));
+  int all = 0;
+  Teuchos::reduceAll(*state.d.getMap()->getComm(), Teuchos::REDUCE_MIN, ok, Teuchos::outArg(all));
+  return all == 1;
+}
+
+void ExplicitDriver::report_non_finite(const RunState& state, long long step) const {
+  const auto& map = *state.d.getMap();
+  const auto d = state.d.getLocalViewHost(Tpetra::Access::ReadOnly);
+  const auto v = state.v.getLocalViewHost(Tpetra::Access::ReadOnly);
+  long long bad = -1;
+  for (std::size_t k = 0; k < d.extent(0) && bad < 0; ++k)
+    if (!std::isfinite(d(k, 0)) || !std::isfinite(v(k, 0))) bad = map.getGlobalElement(static_cast<int>(k));
+  long long any = -1;
+  Teuchos::reduceAll(*map.getComm(), Teuchos::REDUCE_MAX, bad, Teuchos::outArg(any));
+  const int dim = ops_.model().mesh.dimension;
+  const auto node = static_cast<std::size_t>(any / dim);
+  std::ostringstream o;
+  o << "stage '" << stage_.name << "': a displacement or velocity is not finite at particle " << node + 1 << " (X = (";
+  for (int k = 0; k < dim; ++k) o << (k ? ", " : "") << ops_.model().mesh.coordinates[node * static_cast<std::size_t>(dim) + static_cast<std::size_t>(k)];
+  o << ")) at step " << step << ", t = " << state.time << "; the last good state is in the results";
+  throw NumericalError(o.str());
+}
+
+void ExplicitDriver::account_energy(RunState& state, const Vector& delta_d) const {
+  // Trapezoidal work of the external and wall forces over the step.
+  state.external_work += 0.5 * (f_ext_old_.dot(delta_d) + f_ext_.dot(delta_d));
+  state.wall_work += 0.5 * (f_wall_old_.dot(delta_d) + f_wall_.dot(delta_d));
+}
+
+ExplicitSummary ExplicitDriver::run(RunState& state, const StateOutput& output) {
+  const auto& scene = ops_.model().scene;
+  const auto& comm = *mass_.getMap()->getComm();
+  const double start = state.time, end = stage_.end_time, span = end - start;
+  const double interval = stage_.output_interval.value_or(span / 20);
+  const double scale = stage_.settings["dt_scale"].as<double>();
+  const bool fixed = static_cast<bool>(stage_.settings["dt"]);
+  const double fixed_dt = fixed ? stage_.settings["dt"].as<double>() : 0.0;
+  const bool allow_unstable = stage_.settings["allow_unstable_dt"].as<bool>();
+  const long long refresh = stage_.settings["dt_update_interval"].as<long long>();
+  Vector delta(mass_.getMap()), v_half(mass_.getMap()), previous_d(mass_.getMap()), previous_v(mass_.getMap()),
+      previous_a(mass_.getMap());
+
+  auto accelerate = [&](double time, double dt) { return acceleration(time, dt, state.d, state.a); };
+  auto energies = [&] {
+    state.kinetic = 0;
+    Vector mv(mass_.getMap());
+    mv.elementWiseMultiply(1.0, mass_, state.v, 0.0);
+    state.kinetic = 0.5 * mv.dot(state.v);
+    ops_.to_overlap(state.d, d_overlap_);
+    const double mine = ops_.solid().strain_energy(d_overlap_);
+    Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, mine, Teuchos::outArg(state.internal));
+  };
+
+  double dt_crit = stable_.estimate(state.d);
+  double dt = fixed ? fixed_dt : scale * dt_crit;
+  std::ostringstream o;
+  o << "stage '" << stage_.name << "': stable time step " << dt_crit << " (largest frequency " << stable_.largest_frequency()
+    << " rad/time), dt = " << dt;
+  Log::info(o.str());
+  if (fixed && fixed_dt > dt_crit && !allow_unstable)
+    throw NumericalError("stage '" + stage_.name + "': dt = " + std::to_string(fixed_dt) + " exceeds the stable time step " +
+                         std::to_string(dt_crit) + " at step 0, t = " + std::to_string(start) +
+                         "; lower dt, or set allow_unstable_dt: true to run it anyway");
+
+  state.wall_forces = accelerate(state.time, dt);
+  motion_.constrain_end(curve_factor(scene, state.time, 1.0), state.v, state.a);
+  energies();
+  if (!state.energy_started) {
+    state.initial_energy = state.kinetic + state.internal;
+    state.energy_started = true;
+  }
+  state.dt = dt;
+
+  Progress progress("stage '" + stage_.name + "'", span);
+  ExplicitSummary summary;
+  summary.smallest_dt = summary.largest_dt = dt;
+  double next_output = std::min(end, start + interval);
+  double reference_energy = std::max(state.initial_energy, 1e-300);
+  Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewCounter("efg: explicit time steps"));
+  while (state.time < end - 1e-12 * span) {
+    if (!fixed && summary.steps > 0 && summary.steps % refresh == 0) {
+      dt_crit = stable_.estimate(state.d);
+      dt = scale * dt_crit;
+    }
+    const double step_dt = std::min(dt, end - state.time);
+    const auto mid = curve_factor(scene, state.time + 0.5 * step_dt, 1.0);
+    const auto at_end = curve_factor(scene, state.time + step_dt, 1.0);
+    Tpetra::deep_copy(previous_d, state.d);
+    Tpetra::deep_copy(previous_v, state.v);
+    Tpetra::deep_copy(previous_a, state.a);
+    Tpetra::deep_copy(v_half, state.v);
+    v_half.update(0.5 * step_dt, state.a, 1.0);
+    motion_.constrain_velocity(mid, at_end, step_dt, state.d, v_half);
+    delta.update(step_dt, v_half, 0.0);
+    state.d.update(1.0, delta, 1.0);
+    Tpetra::deep_copy(f_ext_old_, f_ext_);
+    Tpetra::deep_copy(f_wall_old_, f_wall_);
+    state.wall_forces = accelerate(state.time + step_dt, step_dt);
+    Tpetra::deep_copy(state.v, v_half);
+    state.v.update(0.5 * step_dt, state.a, 1.0);
+    motion_.constrain_end(at_end, state.v, state.a);
+    state.time += step_dt;
+    state.dt = step_dt;
+    ++summary.steps;
+    summary.smallest_dt = std::min(summary.smallest_dt, step_dt);
+    summary.largest_dt = std::max(summary.largest_dt, step_dt);
+    account_energy(state, delta);
+    if (!finite(state)) {
+      // Write the last good state, then name the particle, step and time.
+      RunState failed(state.d.getMap());
+      Tpetra::deep_copy(failed.d, state.d);
+      Tpetra::deep_copy(failed.v, state.v);
+      const double failed_time = state.time;
+      Tpetra::deep_copy(state.d, previous_d);
+      Tpetra::deep_copy(state.v, previous_v);
+      Tpetra::deep_copy(state.a, previous_a);
+      state.time -= step_dt;
+      output(state);
+      failed.time = failed_time;
+      report_non_finite(failed, summary.steps);
+    }
+    const bool record = state.time >= next_output - 1e-12 * span;
+    if (record || allow_unstable) {
+      energies();
+      summary.worst_balance_error = std::max(summary.worst_balance_error, state.balance_error());
+      reference_energy = std::max({reference_energy, state.initial_energy + std::abs(state.external_work) + std::abs(state.wall_work)});
+      // An unstable step size shows as energy growing far beyond what the loads put in.
+      if (state.kinetic + state.internal > 10.0 * reference_energy && state.balance_error() > 0.5) {
+        output(state);
+        std::ostringstream why;
+        why << "stage '" << stage_.name << "': unstable: the energy grew to " << state.kinetic + state.internal << " (loads and initial state put in "
+            << reference_energy << ") at step " << summary.steps << ", t = " << state.time << " with dt = " << step_dt
+            << " above the stable time step " << dt_crit;
+        throw NumericalError(why.str());
+      }
+    }
+    if (record) {
+      if (state.balance_error() > 0.01) Log::warning("energy balance error " + std::to_string(100 * state.balance_error()) + " % at t = " + std::to_string(state.time));
+      output(state);
+      next_output = std::min(end, next_output + interval);
+    }
+    progress.update(state.time - start);
+  }
+  progress.finish();
+  return summary;
+}
+
+}  // namespace efg

@@ -1,0 +1,55 @@
+// An explicit stage: central differences in velocity-Verlet form on the generalized particle
+// dofs with the lumped mass,
+//   v^(n+1/2) = v^n + dt/2 a^n,  d^(n+1) = d^n + dt v^(n+1/2),
+//   a^(n+1) = M^-1 (f_ext - f_int(d^(n+1)) + f_wall),  v^(n+1) = v^(n+1/2) + dt/2 a^(n+1),
+// with the same internal force function as the implicit driver. The time step is
+// dt_scale x dt_crit (StableTimeStep), refreshed every dt_update_interval steps, or a fixed dt;
+// a fixed dt above dt_crit runs only with allow_unstable_dt, and then an energy blow-up stops
+// the run. Loads without a curve act at full value from the start (a step load).
+// Every step checks for NaN or Inf; failures stop the run (exit 3) naming the particle, its
+// position, the step and the time, after the last good state is written.
+#pragma once
+
+#include <functional>
+
+#include "drivers/PrescribedMotion.hpp"
+#include "drivers/RunState.hpp"
+#include "drivers/StableTimeStep.hpp"
+#include "operators/LumpedMass.hpp"
+#include "operators/RigidWalls.hpp"
+
+namespace efg {
+
+using StateOutput = std::function<void(const RunState&)>;
+
+struct ExplicitSummary {
+  long long steps = 0;
+  double smallest_dt = 0, largest_dt = 0, worst_balance_error = 0;
+};
+
+class ExplicitDriver {
+ public:
+  ExplicitDriver(const ModelOperators& ops, const StageSpec& stage);
+
+  /// Advances the state from state.time to the stage's end time.
+  ExplicitSummary run(RunState& state, const StateOutput& output);
+
+  const Vector& mass() const { return mass_; }
+  /// a = M^-1 (f_ext(t) - f_int(d) + f_wall(d)); returns the wall forces. Exposed for tests.
+  std::vector<double> acceleration(double time, double dt, const Vector& d, Vector& a);
+
+ private:
+  bool finite(const RunState& state) const;  // collective
+  [[noreturn]] void report_non_finite(const RunState& state, long long step) const;
+  void account_energy(RunState& state, const Vector& delta_d) const;
+
+  const ModelOperators& ops_;
+  const StageSpec& stage_;
+  Vector mass_, inverse_mass_;
+  RigidWalls walls_;
+  PrescribedMotion motion_;
+  StableTimeStep stable_;
+  Vector f_ext_, f_ext_old_, f_wall_, f_wall_old_, f_int_, wall_overlap_, d_overlap_;
+};
+
+}  // namespace efg

@@ -1,0 +1,39 @@
+#include "drivers/PrescribedMotion.hpp"
+
+namespace efg {
+
+PrescribedMotion::PrescribedMotion(const Model& model) {
+  const int dim = model.mesh.dimension;
+  for (const auto& bc : model.scene.boundary_conditions)
+    for (auto node : model.mesh.find_node_set(bc.node_set)->nodes) {
+      if (model.partition.owner[static_cast<std::size_t>(node)] != model.partition.rank) continue;
+      for (int i = 0; i < dim; ++i) {
+        const auto& c = bc.components[static_cast<std::size_t>(i)];
+        if (!c) continue;  // values from an exact solution are for static verification
+        const int row = model.maps.owned_dofs->getLocalElement(static_cast<GlobalOrdinal>(node) * dim + i);
+        dofs_.push_back({row, bc.type == "velocity", *c, bc.curve});
+      }
+    }
+}
+
+void PrescribedMotion::constrain_velocity(const LoadFactor& mid, const LoadFactor& end, double dt, const Vector& d,
+                                          Vector& v_half) const {
+  const auto dv = d.getLocalViewHost(Tpetra::Access::ReadOnly);
+  auto v = v_half.getLocalViewHost(Tpetra::Access::ReadWrite);
+  for (const auto& c : dofs_) {
+    const auto k = static_cast<std::size_t>(c.row);
+    v(k, 0) = c.velocity ? c.value * mid(c.curve) : (c.value * end(c.curve) - dv(k, 0)) / dt;
+  }
+}
+
+void PrescribedMotion::constrain_end(const LoadFactor& end, Vector& v_end, Vector& a_end) const {
+  auto v = v_end.getLocalViewHost(Tpetra::Access::ReadWrite);
+  auto a = a_end.getLocalViewHost(Tpetra::Access::ReadWrite);
+  for (const auto& c : dofs_) {
+    const auto k = static_cast<std::size_t>(c.row);
+    a(k, 0) = 0.0;
+    if (c.velocity) v(k, 0) = c.value * end(c.curve);
+  }
+}
+
+}  // namespace efg

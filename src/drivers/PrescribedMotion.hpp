@@ -1,0 +1,38 @@
+// Prescribed displacements and velocities in explicit stages, on the generalized dofs of the
+// condition's particles: velocity conditions set v_I, displacement conditions move d_I to the
+// prescribed value each step. With non-interpolating shape functions this imposes the values on
+// the generalized dofs, not exactly on the physical displacement at the nodes (LS-DYNA's EFG
+// uses a boundary transformation); for fixed ends and uniform motions of a whole set the two
+// agree.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "run/Curves.hpp"
+#include "run/Model.hpp"
+#include "operators/SolidOperator.hpp"
+
+namespace efg {
+
+class PrescribedMotion {
+ public:
+  explicit PrescribedMotion(const Model& model);
+
+  /// Overwrites the constrained entries of the half-step velocity so that d reaches its
+  /// prescribed value (displacement) or moves with the prescribed velocity at `time + dt/2`.
+  void constrain_velocity(const LoadFactor& factor_mid, const LoadFactor& factor_end, double dt, const Vector& d, Vector& v_half) const;
+  /// Zeroes the constrained entries of an acceleration and sets the constrained velocities.
+  void constrain_end(const LoadFactor& factor_end, Vector& v, Vector& a) const;
+
+ private:
+  struct Dof {
+    int row;
+    bool velocity;
+    double value;
+    std::string curve;
+  };
+  std::vector<Dof> dofs_;
+};
+
+}  // namespace efg

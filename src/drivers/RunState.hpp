@@ -1,0 +1,33 @@
+// The state a run carries from stage to stage: generalized displacements, velocities and
+// accelerations of the particles (owned dofs), the time, and the energy account of the explicit
+// driver. An implicit stage leaves velocities and accelerations at zero.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "operators/SolidOperator.hpp"
+
+namespace efg {
+
+struct RunState {
+  explicit RunState(const Teuchos::RCP<const Map>& owned_dofs) : d(owned_dofs), v(owned_dofs), a(owned_dofs) {}
+
+  Vector d, v, a;
+  double time = 0;
+  double dt = 0;
+  // Energy account (explicit): E_kin + E_int = E_0 + W_ext + W_wall when balanced.
+  double kinetic = 0, internal = 0, external_work = 0, wall_work = 0, initial_energy = 0;
+  bool energy_started = false;
+  std::vector<double> wall_forces;
+
+  /// |E_kin + E_int - E_0 - W_ext - W_wall| relative to the largest energy involved.
+  double balance_error() const {
+    const double total = kinetic + internal - initial_energy - external_work - wall_work;
+    const double scale = std::max({std::abs(kinetic), std::abs(internal), std::abs(initial_energy) + std::abs(external_work) + std::abs(wall_work)});
+    return scale > 0 ? std::abs(total) / scale : 0.0;
+  }
+};
+
+}  // namespace efg

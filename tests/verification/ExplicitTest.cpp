@@ -1,0 +1,105 @@
+// Explicit dynamics against the closed forms of ../shared/reference/benchmarks.md section 3:
+// the 1D wave in a bar and the bar hitting a rigid wall (input/wave_bar.yaml,
+// input/bar_wall_impact.yaml), plus the one-internal-force check between the two drivers.
+#include <gtest/gtest.h>
+
+#include <Tpetra_Core.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+#include "drivers/ExplicitDriver.hpp"
+#include "drivers/StaticProblem.hpp"
+#include "io/ExodusReader.hpp"
+#include "run/Simulation.hpp"
+#include "scene/SceneReader.hpp"
+#include "support/TestMeshes.hpp"
+
+namespace efg {
+namespace {
+
+ExodusResults run_scene(const std::string& input, const std::string& name) {
+  const auto comm = Tpetra::getDefaultComm();
+  const auto model = build_model(comm, std::string(EFG_SOURCE_DIR) + "/input/" + input);
+  const auto path = test::scratch_dir("explicit") + "/" + name + ".e";
+  run_stages(comm, model, path);
+  return read_exodus_results(path);
+}
+
+TEST(Explicit, WaveFrontAndLoadedEndFollowTheClosedForm) {
+  const auto r = run_scene("wave_bar.yaml", "wave");
+  const auto mesh = read_exodus_mesh(test::scratch_dir("explicit") + "/wave.e");
+  const double c = 10.0, p = 1.0, E = 100.0, L = 1.0, h = 0.005;
+  int fronts = 0, ends = 0;
+  for (std::size_t k = 1; k < r.times.size(); ++k) {
+    const double t = r.times[k];
+    // Front: where sigma_xx on the axis row y = 0 crosses half the load, interpolated between
+    // the last particle beyond it and the next one.
+    if (t < 0.9 * L / c && t > 0.1 * L / c) {
+      std::vector<std::pair<double, double>> row;  // (x, sigma_xx)
+      for (std::size_t n = 0; n < mesh.node_count(); ++n)
+        if (mesh.coordinates[2 * n + 1] == 0.0) row.emplace_back(mesh.coordinates[2 * n], r.nodal.at("stress_xx")[k][n]);
+      std::sort(row.begin(), row.end());
+      std::size_t j = 0;
+      for (std::size_t m = 0; m + 1 < row.size(); ++m)
+        if (row[m].second < -0.5 * p) j = m;
+      const double front = row[j].first + (row[j].second + 0.5 * p) / (row[j].second - row[j + 1].second) * (row[j + 1].first - row[j].first);
+      EXPECT_NEAR(front, c * t, 2 * h) << "t = " << t;
+      ++fronts;
+    }
+    // Loaded end, once the wave has travelled 10 % of the way (40 spacings) and before it returns.
+    if (t > 0.2 * L / c && t < 2 * L / c) {
+      EXPECT_NEAR(r.global.at("u_xmin_x")[k], p * c * t / E, 0.02 * p * c * t / E) << "t = " << t;
+      ++ends;
+    }
+  }
+  EXPECT_GE(fronts, 10);
+  EXPECT_GE(ends, 20);
+}
+
+TEST(Explicit, BarHittingAWallReboundsAfterTwoTransitTimes) {
+  const auto r = run_scene("bar_wall_impact.yaml", "impact");
+  const double c = 10.0, L = 1.0, v0 = 1.0;
+  double first = -1, last = -1, worst_balance = 0;
+  for (std::size_t k = 0; k < r.times.size(); ++k) {
+    if (r.global.at("wall_wall_force")[k] > 0) {
+      if (first < 0) first = r.times[k - 1];  // contact began after the previous record
+      last = r.times[k];
+    }
+    worst_balance = std::max(worst_balance, r.global.at("energy_balance_error")[k]);
+  }
+  EXPECT_NEAR(last - first, 2 * L / c, 0.03 * 2 * L / c);
+  EXPECT_NEAR(r.global.at("v_all_x").back(), v0, 0.03 * v0);
+  EXPECT_LT(worst_balance, 0.01);
+}
+
+TEST(Explicit, InternalForceIsTheImplicitOne) {
+  const auto comm = Tpetra::getDefaultComm();
+  auto scene = parse_scene(R"(
+mesh:
+  generate: {element: hex8, lower: [0, 0, 0], upper: [2, 1, 1], cells: [4, 2, 2], perturbation: 0.2}
+parts:
+  - {name: block, blocks: [block_1], material: rubber, section: {formulation: total_lagrangian}}
+materials:
+  - {name: rubber, model: neo_hookean, density: 1.0, youngs_modulus: 10.0, poissons_ratio: 0.3}
+stages:
+  - {name: go, driver: explicit, end_time: 1.0}
+)",
+                           "same_force.yaml");
+  const auto model = build_model(comm, scene);
+  auto ops = std::make_shared<ModelOperators>(model);
+  StaticProblem problem(ops);
+  ExplicitDriver driver(*ops, model.scene.stages.front());
+  Vector d(model.maps.owned_dofs), residual(model.maps.owned_dofs), a(model.maps.owned_dofs);
+  d.randomize(-0.05, 0.05);
+  problem.set_load_factor([](const std::string&) { return 0.0; });
+  problem.residual(d, residual);  // f_int(d): no loads, no conditions
+  driver.acceleration(0.0, 1.0, d, a);  // M^-1 (0 - f_int(d))
+  a.elementWiseMultiply(1.0, driver.mass(), a, 0.0);
+  a.update(1.0, residual, 1.0);  // -f_int + f_int
+  EXPECT_LT(a.normInf(), 1e-12 * residual.normInf());
+  EXPECT_GT(residual.normInf(), 0.0);
+}
+
+}  // namespace
+}  // namespace efg
