@@ -4,3 +4,4 @@ set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 "$here/scripts/setup.sh"
 "${EFG_BUILD_DIR:-$here/build}/bench/efg_bench_discretization" "$@"
+"${EFG_BUILD_DIR:-$here/build}/bench/efg_bench_explicit"
