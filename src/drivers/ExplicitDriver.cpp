@@ -137,6 +137,7 @@ ExplicitSummary ExplicitDriver::run(RunState& state, const StateOutput& output) 
       dt = scale * dt_crit;
     }
     const double step_dt = std::min(dt, end - state.time);
+    const auto begin = curve_factor(scene, state.time, 1.0);
     const auto mid = curve_factor(scene, state.time + 0.5 * step_dt, 1.0);
     const auto at_end = curve_factor(scene, state.time + step_dt, 1.0);
     Tpetra::deep_copy(previous_d, state.d);
@@ -144,7 +145,7 @@ ExplicitSummary ExplicitDriver::run(RunState& state, const StateOutput& output) 
     Tpetra::deep_copy(previous_a, state.a);
     Tpetra::deep_copy(v_half, state.v);
     v_half.update(0.5 * step_dt, state.a, 1.0);
-    motion_.constrain_velocity(mid, at_end, step_dt, state.d, v_half);
+    motion_.constrain_velocity(begin, mid, at_end, step_dt, v_half);
     delta.update(step_dt, v_half, 0.0);
     state.d.update(1.0, delta, 1.0);
     Tpetra::deep_copy(f_ext_old_, f_ext_);

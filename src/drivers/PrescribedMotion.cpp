@@ -16,13 +16,12 @@ PrescribedMotion::PrescribedMotion(const Model& model) {
     }
 }
 
-void PrescribedMotion::constrain_velocity(const LoadFactor& mid, const LoadFactor& end, double dt, const Vector& d,
+void PrescribedMotion::constrain_velocity(const LoadFactor& start, const LoadFactor& mid, const LoadFactor& end, double dt,
                                           Vector& v_half) const {
-  const auto dv = d.getLocalViewHost(Tpetra::Access::ReadOnly);
   auto v = v_half.getLocalViewHost(Tpetra::Access::ReadWrite);
   for (const auto& c : dofs_) {
     const auto k = static_cast<std::size_t>(c.row);
-    v(k, 0) = c.velocity ? c.value * mid(c.curve) : (c.value * end(c.curve) - dv(k, 0)) / dt;
+    v(k, 0) = c.velocity ? c.value * mid(c.curve) : c.value * (end(c.curve) - start(c.curve)) / dt;
   }
 }
 
