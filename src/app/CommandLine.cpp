@@ -16,6 +16,10 @@ Usage:
   efg run SCENE.yaml [-o OUTDIR]   run a scene; results go to OUTDIR (default: the current folder)
   efg check SCENE.yaml             validate the scene and its mesh, print the resolved scene
   efg mesh SCENE.yaml OUT.exo      write the scene's background mesh (generated or read) as Exodus II
+  efg study SCENE.yaml [-o OUTDIR] [--levels N] [--factor F] [--sweep KEY=V1,V2 ...]
+                                   refinement series (and sweeps of scene keys, e.g.
+                                   parts.0.section.basis=linear,quadratic): CSV of errors and
+                                   times per run, and error-vs-dofs / error-vs-time plots
   efg schema                       print the scene file reference (docs/scene.md)
   efg --help                       this text
   efg --version                    version and git revision
@@ -28,6 +32,7 @@ Exit codes:
   2  bad input: command line, scene file or mesh file (nothing is written)
   3  numerical failure (singular moment matrix, unstable time step, negative Jacobian, NaN,
      Newton divergence), reported with particle, step and time
+  4  the run completed, but a reference value of the scene's verification block was missed
 )";
 }
 
@@ -43,14 +48,28 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
     cl.command = "version";
     return cl;
   }
-  if (first != "run" && first != "check" && first != "mesh" && first != "schema")
-    usage_error("unknown command '" + first + "'; expected run, check, mesh, schema, --help or --version");
+  if (first != "run" && first != "check" && first != "mesh" && first != "schema" && first != "study")
+    usage_error("unknown command '" + first + "'; expected run, check, mesh, study, schema, --help or --version");
   cl.command = first;
   std::vector<std::string> positional;
   for (std::size_t i = 1; i < args.size(); ++i) {
     const auto& a = args[i];
-    if (a == "-o" || a == "--output") {
-      if (cl.command != "run") usage_error("option " + a + " belongs to 'efg run'");
+    if ((a == "--levels" || a == "--factor" || a == "--sweep") && cl.command == "study") {
+      if (i + 1 >= args.size()) usage_error("option " + a + " needs a value");
+      const auto& value = args[++i];
+      try {
+        if (a == "--levels") cl.levels = std::stoi(value);
+        if (a == "--factor") cl.factor = std::stod(value);
+      } catch (const std::exception&) {
+        usage_error("option " + a + " expects a number, found '" + value + "'");
+      }
+      if (a == "--sweep") {
+        if (value.find('=') == std::string::npos) usage_error("--sweep expects KEY=V1,V2,..., found '" + value + "'");
+        cl.sweeps.push_back(value);
+      }
+      if (cl.levels < 1 || !(cl.factor > 1.0)) usage_error("--levels must be >= 1 and --factor > 1");
+    } else if (a == "-o" || a == "--output") {
+      if (cl.command != "run" && cl.command != "study") usage_error("option " + a + " belongs to 'efg run' and 'efg study'");
       if (i + 1 >= args.size()) usage_error("option " + a + " needs a folder");
       cl.output_dir = args[++i];
     } else if (!a.empty() && a[0] == '-') {

@@ -11,6 +11,9 @@ struct CommandLine {
   std::string scene;        ///< scene file (run, check, mesh)
   std::string output_dir;   ///< run: -o/--output, default "."
   std::string mesh_output;  ///< mesh: the Exodus file to write
+  int levels = 4;           ///< study: refinement levels
+  double factor = 2.0;      ///< study: refinement factor per level
+  std::vector<std::string> sweeps;  ///< study: KEY=V1,V2,...
 };
 
 /// Throws InputError with a usage hint on a malformed command line.

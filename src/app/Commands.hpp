@@ -10,5 +10,6 @@ void run_command(const CommPtr& comm, const CommandLine& cl);
 void check_command(const CommPtr& comm, const CommandLine& cl);
 void mesh_command(const CommPtr& comm, const CommandLine& cl);
 void schema_command();
+void study_command(const CommPtr& comm, const CommandLine& cl);
 
 }  // namespace efg

@@ -2,11 +2,13 @@
 #include <Teuchos_TimeMonitor.hpp>
 #include <yaml-cpp/yaml.h>
 
+#include <chrono>
 #include <filesystem>
 #include <sstream>
 #include <stdexcept>
 
 #include "app/Commands.hpp"
+#include "core/Errors.hpp"
 #include "core/Log.hpp"
 #include "scene/SceneEcho.hpp"
 #include "core/RunSummary.hpp"
@@ -51,15 +53,20 @@ void log_discretization(const Model& model, const CommPtr& comm) {
 }  // namespace
 
 void run_command(const CommPtr& comm, const CommandLine& cl) {
+  const auto started = std::chrono::steady_clock::now();
   const Model model = build_model(comm, cl.scene);
   log_model(model, comm);
   log_discretization(model, comm);
   const std::filesystem::path path = std::filesystem::path(cl.output_dir) / model.scene.output.file;
   if (comm->getRank() == 0 && path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
-  run_stages(comm, model, path.string());
+  const double setup = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  const auto outcome = run_stages(comm, model, path.string(), setup);
   if (model.scene.stages.empty()) Log::info("model check: initial state written (no stages in the scene)");
   Log::info("results: " + std::filesystem::absolute(path).lexically_normal().string());
   print_run_summary(comm);
+  if (!outcome.failed_checks.empty())
+    throw VerificationError(std::to_string(outcome.failed_checks.size()) + " reference value(s) missed; first: " +
+                            outcome.failed_checks.front());
 }
 
 }  // namespace efg

@@ -25,6 +25,8 @@ int dispatch(const efg::CommPtr& comm, const std::vector<std::string>& args) {
       efg::run_command(comm, cl);
     } else if (cl.command == "check") {
       efg::check_command(comm, cl);
+    } else if (cl.command == "study") {
+      efg::study_command(comm, cl);
     } else if (cl.command == "mesh") {
       efg::mesh_command(comm, cl);
     } else if (cl.command == "schema") {
@@ -36,6 +38,9 @@ int dispatch(const efg::CommPtr& comm, const std::vector<std::string>& args) {
   } catch (const efg::InputError& e) {
     if (comm->getRank() == 0) std::cerr << "efg: error: " << e.what() << std::endl;
     return static_cast<int>(ExitCode::bad_input);
+  } catch (const efg::VerificationError& e) {
+    if (comm->getRank() == 0) std::cerr << "efg: verification failed: " << e.what() << std::endl;
+    return static_cast<int>(ExitCode::verification);
   } catch (const efg::NumericalError& e) {
     std::cerr << "efg: numerical failure: " << e.what() << std::endl;
     return static_cast<int>(ExitCode::numerical);

@@ -58,8 +58,10 @@ void StaticProblem::jacobian(const Vector& d_owned, FEMatrix& K) {
 }
 
 std::vector<std::array<double, 3>> StaticProblem::reactions(const Vector& d_owned) {
-  to_overlap(d_owned, d_overlap_);
-  return conditions_.reactions(d_overlap_);
+  Vector r(model_.maps.owned_dofs);
+  ops_->internal_force(d_owned, r);
+  r.update(-1.0, f_ext_, 1.0);  // f_int - f_ext, without the conditions' own terms
+  return conditions_.reactions(r);
 }
 
 }  // namespace efg

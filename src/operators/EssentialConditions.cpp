@@ -1,6 +1,8 @@
 #include "operators/EssentialConditions.hpp"
 
 #include <Teuchos_CommHelpers.hpp>
+#include <Tpetra_Export.hpp>
+#include <Tpetra_MultiVector.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -67,6 +69,7 @@ EssentialConditions::EssentialConditions(const Model& model, const SolidOperator
           for (int i = 0; i < dim_; ++i) {
             if (!mask[static_cast<std::size_t>(i)]) continue;
             NodeConstraint nc;
+            nc.condition = c;
             nc.owned_row = owned_rows->getLocalElement(static_cast<GlobalOrdinal>(node) * dim_ + i);
             nc.component = i;
             nc.scale = s;
@@ -145,6 +148,7 @@ EssentialConditions::EssentialConditions(const Model& model, const SolidOperator
                        "' covers no side of a meshfree part, which method " + bc.method +
                        " integrates over; use method transformation for point constraints");
   }
+  build_reaction_weights(model);
 }
 
 void EssentialConditions::add_couplings(CouplingGraph& graph) const {
@@ -277,31 +281,43 @@ void EssentialConditions::replace_rows(FEMatrix& K) const {
   }
 }
 
-std::vector<std::array<double, 3>> EssentialConditions::reactions(const Vector& d_overlap) const {
+void EssentialConditions::build_reaction_weights(const Model& model) {
+  // s_Ic = integral over condition c's boundary of |phi_I| (or |phi_I(X_J)| at its collocated
+  // nodes when it covers no side): every particle the condition reaches, MLS shape functions
+  // being negative in places. Assembled on the overlap nodes and summed on their owners.
+  const auto n = static_cast<std::size_t>(std::max<std::size_t>(conditions_, 1));
+  Tpetra::MultiVector<> overlap(model.maps.overlap_nodes, n), owned(model.maps.owned_nodes, n);
+  std::vector<char> has_sides(conditions_, 0);
+  for (const auto& p : points_) has_sides[p.condition] = 1;
+  {
+    auto s = overlap.getLocalViewHost(Tpetra::Access::ReadWrite);
+    for (const auto& p : points_)
+      for (std::size_t a = 0; a < p.nodes.size(); ++a) s(static_cast<std::size_t>(p.nodes[a]), p.condition) += std::abs(p.phi[a]) * p.area;
+    for (const auto& c : nodes_)
+      if (!has_sides[c.condition])
+        for (std::size_t a = 0; a < c.nodes.size(); ++a) s(static_cast<std::size_t>(c.nodes[a]), c.condition) += std::abs(c.phi[a]);
+  }
+  owned.doExport(overlap, Tpetra::Export<>(model.maps.overlap_nodes, model.maps.owned_nodes), Tpetra::ADD);
+  const auto s = owned.getLocalViewHost(Tpetra::Access::ReadOnly);
+  reaction_weight_.assign(s.extent(0), std::vector<double>(conditions_, 0.0));
+  for (std::size_t i = 0; i < s.extent(0); ++i) {
+    double total = 0;
+    for (std::size_t c = 0; c < conditions_; ++c) total += s(i, c);
+    if (total > 0)
+      for (std::size_t c = 0; c < conditions_; ++c) reaction_weight_[i][c] = s(i, c) / total;
+  }
+}
+
+std::vector<std::array<double, 3>> EssentialConditions::reactions(const Vector& residual_owned) const {
   const std::size_t n = conditions_ * 3;
   std::vector<double> local(n, 0.0);
   std::vector<double> global(n, 0.0);
-  const auto d = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
-  for (const auto& p : points_) {
-    double H[3][3] = {};
-    for (std::size_t a = 0; a < p.nodes.size(); ++a)
-      for (int i = 0; i < dim_; ++i)
-        for (int j = 0; j < dim_; ++j)
-          H[i][j] += d(static_cast<std::size_t>(p.nodes[a] * dim_ + i), 0) * p.grad[a * static_cast<std::size_t>(dim_) + static_cast<std::size_t>(j)];
-    double traction[3] = {0, 0, 0};
-    if (dim_ == 2) {
-      double H2[2][2] = {{H[0][0], H[0][1]}, {H[1][0], H[1][1]}}, P[2][2] = {}, A[2][2][2][2] = {};
-      physics::stress_and_tangent<2>(p.material, H2, P, A);
-      for (int i = 0; i < 2; ++i)
-        for (int j = 0; j < 2; ++j) traction[i] += P[i][j] * p.weighted_normal[static_cast<std::size_t>(j)];
-    } else {
-      double P[3][3] = {}, A[3][3][3][3] = {};
-      physics::stress_and_tangent<3>(p.material, H, P, A);
-      for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) traction[i] += P[i][j] * p.weighted_normal[static_cast<std::size_t>(j)];
-    }
-    for (std::size_t k = 0; k < 3; ++k) local[p.condition * 3 + k] += traction[k];
-  }
+  const auto r = residual_owned.getLocalViewHost(Tpetra::Access::ReadOnly);
+  const auto udim = static_cast<std::size_t>(dim_);
+  for (std::size_t i = 0; i < reaction_weight_.size(); ++i)
+    for (std::size_t c = 0; c < conditions_; ++c)
+      if (reaction_weight_[i][c] > 0)
+        for (std::size_t k = 0; k < udim; ++k) local[c * 3 + k] += reaction_weight_[i][c] * r(i * udim + k, 0);
   if (n > 0) Teuchos::reduceAll(*overlap_dofs_->getComm(), Teuchos::REDUCE_SUM, static_cast<int>(n), local.data(), global.data());
   std::vector<std::array<double, 3>> out(conditions_);
   for (std::size_t c = 0; c < conditions_; ++c) out[c] = {global[3 * c], global[3 * c + 1], global[3 * c + 2]};

@@ -17,7 +17,9 @@
 //
 // Boundary integrals run over the sides of the part whose nodes all lie in the condition's node
 // set, with the SCNI boundary points (operators/SideQuadrature). The reaction of a condition is
-// the integral of the traction P n over those sides.
+// the sum of the out-of-balance forces f_int - f_ext of the particles its boundary reaches, each
+// particle's share split among conditions by the weight of its shape function on their
+// boundaries (so the reactions of all conditions balance the applied loads exactly).
 #pragma once
 
 #include <array>
@@ -48,11 +50,13 @@ class EssentialConditions {
   /// ... and the owned matrix rows (after endAssembly).
   void replace_rows(FEMatrix& K) const;
 
-  /// Reaction force of every condition, summed over ranks.
-  std::vector<std::array<double, 3>> reactions(const Vector& d_overlap) const;
+  /// Reaction force of every condition, summed over ranks, from the owned residual of the
+  /// unconstrained equations r = f_int - f_ext.
+  std::vector<std::array<double, 3>> reactions(const Vector& residual_owned) const;
 
  private:
   struct NodeConstraint {  // transformation: one collocated dof
+    std::size_t condition;
     int owned_row;
     int component;
     double scale, base, value = 0;
@@ -77,8 +81,11 @@ class EssentialConditions {
   void point_terms(const BoundaryPoint& p, const Vector& d_overlap, Vector* r, FEMatrix* K) const;
   double constrained_value(const NodeConstraint& c, const Vector& d_overlap) const;
 
+  void build_reaction_weights(const Model& model);
+
   int dim_;
   std::size_t conditions_;
+  std::vector<std::vector<double>> reaction_weight_;  // per owned particle (node order), per condition
   Teuchos::RCP<const Map> overlap_dofs_;
   std::vector<NodeConstraint> nodes_;
   std::vector<BoundaryPoint> points_;

@@ -3,7 +3,9 @@
 #include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_TimeMonitor.hpp>
 
+#include <chrono>
 #include <filesystem>
+#include <optional>
 #include <fstream>
 #include <iomanip>
 #include <memory>
@@ -18,11 +20,13 @@
 #include "run/InitialConditions.hpp"
 #include "run/OutputFields.hpp"
 #include "run/RunHistory.hpp"
+#include "run/RunReport.hpp"
 #include "verification/ErrorNorms.hpp"
 
 namespace efg {
 
-int run_stages(const CommPtr& comm, const Model& model, const std::string& path) {
+RunOutcome run_stages(const CommPtr& comm, const Model& model, const std::string& path, double setup_seconds) {
+  const auto started = std::chrono::steady_clock::now();
   const auto columns = output_columns(model.scene.output.fields, model.mesh.dimension);
   // A scene builds only what it needs: the stiffness graph and solvers only for implicit stages.
   std::shared_ptr<ModelOperators> ops;
@@ -45,6 +49,7 @@ int run_stages(const CommPtr& comm, const Model& model, const std::string& path)
   apply_initial_conditions(model, state);
   Vector d_overlap(model.maps.overlap_dofs), v_overlap(model.maps.overlap_dofs), a_overlap(model.maps.overlap_dofs);
   int records = 0;
+  std::vector<double> last_globals;
 
   auto write = [&](const RunState& s) {
     Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewCounter("efg: output"));
@@ -61,6 +66,7 @@ int run_stages(const CommPtr& comm, const Model& model, const std::string& path)
         for (std::size_t i = 0; i < values[c].size(); ++i) view(i, c) = values[c][i];
     }
     output.write(s.time, nodal, globals);
+    last_globals = globals;
     if (csv) {
       *csv << std::setprecision(12) << s.time;
       for (double g : globals) *csv << "," << g;
@@ -102,16 +108,31 @@ int run_stages(const CommPtr& comm, const Model& model, const std::string& path)
     }
     state.time = stage.end_time;
   }
+  std::optional<ErrorNorms> errors;
   if (!model.scene.exact_solution.empty() && ops->exact()) {
     ops->to_overlap(state.d, d_overlap);
-    const auto e = error_norms(model, ops->solid(), d_overlap, *ops->exact());
+    errors = error_norms(model, ops->solid(), d_overlap, *ops->exact());
     std::ostringstream o;
-    o << "verification against " << model.scene.exact_solution << ": relative L2 displacement error " << e.l2_relative
-      << ", relative energy-norm error " << e.energy_relative << ", largest nodal displacement error " << e.max_nodal;
+    o << "verification against " << model.scene.exact_solution << ": relative L2 displacement error " << errors->l2_relative
+      << ", relative energy-norm error " << errors->energy_relative << ", largest nodal displacement error " << errors->max_nodal;
     Log::info(o.str());
   }
   output.close();
-  return records;
+  RunOutcome outcome;
+  outcome.records = records;
+  outcome.errors = errors;
+  const auto checks = reference_checks(*ops, state, history.names(), last_globals);
+  for (const auto& c : checks) {
+    std::ostringstream o;
+    o << "reference value '" << c.name << "' (" << c.quantity << "): " << c.value << " vs " << c.reference << " within "
+      << 100 * c.tolerance << " %: " << (c.passed() ? "passed" : "FAILED");
+    Log::info(o.str());
+    if (!c.passed()) outcome.failed_checks.push_back(o.str());
+  }
+  const double seconds = setup_seconds + std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  write_run_report(comm, model, path + ".report.json", path, state, errors, checks, seconds);
+  Log::info("run report: " + path + ".report.json");
+  return outcome;
 }
 
 }  // namespace efg

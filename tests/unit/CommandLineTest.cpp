@@ -18,6 +18,10 @@ TEST(CommandLine, Commands) {
   EXPECT_EQ(parse_command_line({"--help"}).command, "help");
   EXPECT_EQ(parse_command_line({"--version"}).command, "version");
   EXPECT_EQ(parse_command_line({"schema"}).command, "schema");
+  cl = parse_command_line({"study", "a.yaml", "--levels", "3", "--factor", "1.5", "--sweep", "parts.0.section.basis=linear,quadratic"});
+  EXPECT_EQ(cl.levels, 3);
+  EXPECT_DOUBLE_EQ(cl.factor, 1.5);
+  ASSERT_EQ(cl.sweeps.size(), 1u);
 }
 
 TEST(CommandLine, Mistakes) {
@@ -29,11 +33,14 @@ TEST(CommandLine, Mistakes) {
   EXPECT_THROW(parse_command_line({"run", "a.yaml", "--fast"}), InputError);
   EXPECT_THROW(parse_command_line({"check", "a.yaml", "-o", "x"}), InputError);
   EXPECT_THROW(parse_command_line({"mesh", "a.yaml"}), InputError);
+  EXPECT_THROW(parse_command_line({"study", "a.yaml", "--levels", "many"}), InputError);
+  EXPECT_THROW(parse_command_line({"study", "a.yaml", "--sweep", "basis"}), InputError);
+  EXPECT_THROW(parse_command_line({"run", "a.yaml", "--levels", "3"}), InputError);
 }
 
 TEST(CommandLine, HelpDocumentsExitCodes) {
   const auto help = help_text();
-  for (const char* code : {"0  success", "1  any other", "2  bad input", "3  numerical"})
+  for (const char* code : {"0  success", "1  any other", "2  bad input", "3  numerical", "4  the run completed"})
     EXPECT_NE(help.find(code), std::string::npos) << code;
 }
 

@@ -73,6 +73,15 @@ TEST_P(Timoshenko, LinearBasisScniConvergesAtTheExpectedRates) {
   for (std::size_t i = 1; i < levels.size(); ++i) EXPECT_LT(levels[i].l2, levels[i - 1].l2);
 }
 
+TEST(TimoshenkoReaction, ClampReactionBalancesTheTipLoad) {
+  for (const char* method : {"transformation", "nitsche", "penalty"}) {
+    auto s = test::solve_static(beam_scene(32, 8, 0.2, method, "linear", "scni", 2.0));
+    const auto r = s.problem->reactions(*s.d)[0];
+    EXPECT_NEAR(r[1], -1000.0, 1.0) << method;  // the support holds the 1000 shear load
+    EXPECT_NEAR(r[0], 0.0, 1.0) << method;
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(RegularAndPerturbed, Timoshenko, ::testing::Values(0.0, 0.2),
                          [](const auto& p) { return p.param == 0.0 ? std::string("regular") : std::string("perturbed"); });
 

@@ -1,0 +1,135 @@
+#include "run/RunReport.hpp"
+
+#include <Teuchos_CommHelpers.hpp>
+#include <Teuchos_TimeMonitor.hpp>
+
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+
+#include "core/Errors.hpp"
+#include "core/RunSummary.hpp"
+#include "core/Version.hpp"
+
+namespace efg {
+namespace {
+
+std::string quoted(const std::string& s) {
+  std::string out = "\"";
+  for (char c : s) {
+    if (c == '"' || c == '\\') out += '\\';
+    out += c;
+  }
+  return out + "\"";
+}
+
+std::string number(double v) {
+  if (!std::isfinite(v)) return "null";
+  std::ostringstream o;
+  o << std::setprecision(10) << v;
+  return o.str();
+}
+
+}  // namespace
+
+const std::vector<std::string>& report_phases() {
+  static const std::vector<std::string> phases = {
+      "scene and mesh", "partition (Zoltan2 RCB)", "neighbour search (ghosts, particles)", "shape functions and integration",
+      "internal force", "tangent assembly", "essential conditions", "Newton iterations", "stable time step",
+      "explicit time steps", "output"};
+  return phases;
+}
+
+std::vector<ReferenceCheck> reference_checks(const ModelOperators& ops, const RunState& state,
+                                             const std::vector<std::string>& global_names,
+                                             const std::vector<double>& global_values) {
+  const auto& model = ops.model();
+  std::vector<ReferenceCheck> checks;
+  if (!model.scene.verification || !model.scene.verification["reference_values"]) return checks;
+  Vector d(model.maps.overlap_dofs), v(model.maps.overlap_dofs);
+  ops.to_overlap(state.d, d);
+  ops.to_overlap(state.v, v);
+  const auto dim = static_cast<std::size_t>(model.mesh.dimension);
+  for (const auto& r : model.scene.verification["reference_values"]) {
+    ReferenceCheck c;
+    c.name = r["name"].as<std::string>();
+    c.quantity = r["quantity"].as<std::string>();
+    c.reference = r["value"].as<double>();
+    c.tolerance = r["tolerance"].as<double>();
+    const auto at = c.quantity.find('@');
+    if (at == std::string::npos) {
+      const auto it = std::find(global_names.begin(), global_names.end(), c.quantity);
+      if (it == global_names.end())
+        throw InputError(model.scene.file + ": verification.reference_values '" + c.name + "': unknown quantity '" + c.quantity +
+                         "'; expected a global variable of the results or <displacement|velocity>_<x|y|z>@<node set>");
+      c.value = global_values[static_cast<std::size_t>(it - global_names.begin())];
+    } else {
+      const auto field = c.quantity.substr(0, at), set_name = c.quantity.substr(at + 1);
+      const auto* set = model.mesh.find_node_set(set_name);
+      const bool known = (field.rfind("displacement_", 0) == 0 || field.rfind("velocity_", 0) == 0) && field.size() > 2 &&
+                         field.back() >= 'x' && static_cast<std::size_t>(field.back() - 'x') < dim;
+      if (!set || !known)
+        throw InputError(model.scene.file + ": verification.reference_values '" + c.name + "': cannot evaluate '" + c.quantity +
+                         "'; expected <displacement|velocity>_<x|y|z>@<node set of the mesh>");
+      const auto k = static_cast<std::size_t>(field.back() - 'x');
+      const auto values = (field[0] == 'd' ? d : v).getLocalViewHost(Tpetra::Access::ReadOnly);
+      std::vector<char> in(model.mesh.node_count(), 0);
+      for (auto n : set->nodes) in[static_cast<std::size_t>(n)] = 1;
+      double local[2] = {0, 0}, total[2] = {0, 0};
+      for (std::size_t p = 0; p < model.parts.size(); ++p) {
+        const auto& part = model.parts[p];
+        for (std::size_t j = 0; j < part.cloud.owned_count; ++j) {
+          if (!in[static_cast<std::size_t>(part.cloud.mesh_node[j])]) continue;
+          local[1] += 1;
+          for (auto e = part.particle_values.offsets[j]; e < part.particle_values.offsets[j + 1]; ++e) {
+            const auto node = static_cast<std::size_t>(ops.solid().overlap_node(p)[static_cast<std::size_t>(part.particle_values.particles[e])]);
+            local[0] += part.particle_values.values[e] * values(node * dim + k, 0);
+          }
+        }
+      }
+      Teuchos::reduceAll(*model.maps.owned_dofs->getComm(), Teuchos::REDUCE_SUM, 2, local, total);
+      c.value = total[0] / std::max(1.0, total[1]);
+    }
+    checks.push_back(c);
+  }
+  return checks;
+}
+
+void write_run_report(const CommPtr& comm, const Model& model, const std::string& json_path, const std::string& results_path,
+                      const RunState& state, const std::optional<ErrorNorms>& errors, const std::vector<ReferenceCheck>& checks,
+                      double total_seconds) {
+  std::vector<double> local, global;
+  for (const auto& phase : report_phases()) {
+    const auto timer = Teuchos::TimeMonitor::lookupCounter("efg: " + phase);
+    local.push_back(timer.is_null() ? 0.0 : timer->totalElapsedTime());
+  }
+  global.resize(local.size());
+  Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, static_cast<int>(local.size()), local.data(), global.data());
+  const long long memory = peak_memory_bytes();
+  long long memory_max = 0;
+  Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, memory, Teuchos::outArg(memory_max));
+  if (comm->getRank() != 0) return;
+  std::ofstream o(json_path);
+  o << "{\n  \"scene\": " << quoted(model.scene.file) << ",\n  \"title\": " << quoted(model.scene.title)
+    << ",\n  \"efg_version\": " << quoted(std::string(version_string) + " (" + git_describe + ")")
+    << ",\n  \"results\": " << quoted(results_path) << ",\n  \"ranks\": " << comm->getSize()
+    << ",\n  \"particles\": " << model.mesh.node_count() << ",\n  \"dofs\": " << model.maps.owned_dofs->getGlobalNumElements()
+    << ",\n  \"end_time\": " << number(state.time) << ",\n  \"phase_seconds\": {";
+  for (std::size_t i = 0; i < global.size(); ++i)
+    o << (i ? ", " : "") << quoted(report_phases()[i]) << ": " << number(global[i]);
+  o << "},\n  \"total_seconds\": " << number(total_seconds) << ",\n  \"memory_high_water_bytes\": " << memory_max;
+  if (state.energy_started) o << ",\n  \"energy_balance_error\": " << number(state.balance_error());
+  if (errors)
+    o << ",\n  \"errors\": {\"exact_solution\": " << quoted(model.scene.exact_solution) << ", \"l2_rel_error\": "
+      << number(errors->l2_relative) << ", \"energy_rel_error\": " << number(errors->energy_relative)
+      << ", \"max_nodal_error\": " << number(errors->max_nodal) << "}";
+  o << ",\n  \"reference_values\": [";
+  for (std::size_t i = 0; i < checks.size(); ++i)
+    o << (i ? ", " : "") << "{\"name\": " << quoted(checks[i].name) << ", \"quantity\": " << quoted(checks[i].quantity)
+      << ", \"value\": " << number(checks[i].value) << ", \"reference\": " << number(checks[i].reference)
+      << ", \"tolerance\": " << number(checks[i].tolerance) << ", \"passed\": " << (checks[i].passed() ? "true" : "false") << "}";
+  o << "]\n}\n";
+}
+
+}  // namespace efg
