@@ -29,6 +29,10 @@ if [ ${#missing[@]} -gt 0 ]; then
   $sudo_cmd apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 fi
 
+# SEACAS exodiff for the regression suite (docs/regression.md): built once from Debian's trilinos
+# source package into ${EFG_CACHE:-/var/cache/efg}/seacas (about 2.5 minutes); silent when present.
+"$here/scripts/build_exodiff.sh" >/dev/null
+
 if [ "${1:-}" != "--no-build" ]; then
   "$here/scripts/build.sh"
 fi

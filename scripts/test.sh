@@ -10,4 +10,6 @@ cd "${EFG_BUILD_DIR:-$here/build}"
 # Open MPI as root (CI containers) needs these; harmless otherwise.
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 echo "efg tests: setup and build took $((built - start)) s"
+# ctest's summary stays the last output (CI reads it); the regression suite's total time is in
+# build/regression/summary.txt, written by its last test (regression.total_time).
 exec ctest --output-on-failure -j "${EFG_JOBS:-$(nproc)}" "$@"
