@@ -40,6 +40,10 @@ stages:
   v.randomize(-1.0, 1.0);
   auto K = problem.create_matrix();
   problem.jacobian(d, *K);
+  // Thyra wraps K with the owned-dof space: its domain and range must be exactly that map.
+  EXPECT_TRUE(K->getDomainMap()->isSameAs(*model.maps.owned_dofs));
+  EXPECT_TRUE(K->getRangeMap()->isSameAs(*model.maps.owned_dofs));
+  EXPECT_TRUE(K->getRowMap()->isSameAs(*model.maps.owned_dofs));
   K->apply(v, Kv);
   const double h = 1e-4;
   Vector dp(d, Teuchos::Copy), dm(d, Teuchos::Copy), rp(model.maps.owned_dofs), rm(model.maps.owned_dofs);
