@@ -169,7 +169,10 @@ double ghost_radius(const BackgroundMesh& mesh, const PartSpec& part) {
           diameter = std::max(diameter, std::sqrt(d2));
         }
   }
-  return reach + diameter;
+  // Rows of ghost particles are assembled here and added on their owners, whose matrix columns
+  // must hold every particle coupled to them: two supports apart (P and G share a point q when
+  // |q - X_P| < a_P and |q - X_G| < a_G). Hence 2 x reach, plus a cell for the points.
+  return 2 * reach + diameter;
 }
 
 }  // namespace efg
