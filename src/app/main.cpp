@@ -8,13 +8,21 @@
 #include "app/Commands.hpp"
 #include "core/Errors.hpp"
 #include "core/Log.hpp"
-#include "parallel/Collective.hpp"
 #include "core/Version.hpp"
+#include "parallel/Collective.hpp"
 
 namespace {
 
-int dispatch(const efg::CommPtr& comm, const std::vector<std::string>& args) {
+struct Outcome {
+  int code = 0;
+  std::string message;  ///< what this rank has to say (empty: nothing)
+};
+
+Outcome dispatch(const efg::CommPtr& comm, const std::vector<std::string>& args) {
   using efg::ExitCode;
+  auto failed = [](ExitCode code, const std::string& prefix, const char* what) {
+    return Outcome{static_cast<int>(code), prefix + what};
+  };
   try {
     const auto cl = efg::parse_command_line(args);
     if (cl.command == "help") {
@@ -32,21 +40,17 @@ int dispatch(const efg::CommPtr& comm, const std::vector<std::string>& args) {
     } else if (cl.command == "schema") {
       if (comm->getRank() == 0) efg::schema_command();
     }
-    return static_cast<int>(ExitCode::success);
+    return {};
   } catch (const efg::PeerFailure& e) {
-    return e.exit_code();  // the failing rank printed the message
+    return {e.exit_code(), ""};  // the failing rank has the message
   } catch (const efg::InputError& e) {
-    if (comm->getRank() == 0) std::cerr << "efg: error: " << e.what() << std::endl;
-    return static_cast<int>(ExitCode::bad_input);
+    return failed(ExitCode::bad_input, "efg: error: ", e.what());
   } catch (const efg::VerificationError& e) {
-    if (comm->getRank() == 0) std::cerr << "efg: verification failed: " << e.what() << std::endl;
-    return static_cast<int>(ExitCode::verification);
+    return failed(ExitCode::verification, "efg: verification failed: ", e.what());
   } catch (const efg::NumericalError& e) {
-    std::cerr << "efg: numerical failure: " << e.what() << std::endl;
-    return static_cast<int>(ExitCode::numerical);
+    return failed(ExitCode::numerical, "efg: numerical failure: ", e.what());
   } catch (const std::exception& e) {
-    if (comm->getRank() == 0) std::cerr << "efg: error: " << e.what() << std::endl;
-    return static_cast<int>(ExitCode::other);
+    return failed(ExitCode::other, "efg: error: ", e.what());
   }
 }
 
@@ -61,11 +65,14 @@ int main(int argc, char** argv) {
     const auto comm = Tpetra::getDefaultComm();
     efg::Log::set_rank(comm->getRank());
     const std::vector<std::string> args(argv + 1, argv + argc);
-    code = dispatch(comm, args);
-    // All ranks leave with the worst code any rank saw (a numerical failure may be rank-local).
-    int worst = code;
-    Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, code, Teuchos::outArg(worst));
-    code = worst;
+    const auto outcome = dispatch(comm, args);
+    // One message however many ranks failed: the lowest rank that has one prints it. All ranks
+    // leave with the worst code any rank saw (a numerical failure may be rank-local).
+    const int size = comm->getSize(), rank = comm->getRank();
+    int speaker = outcome.message.empty() ? size : rank, first = size;
+    Teuchos::reduceAll(*comm, Teuchos::REDUCE_MIN, speaker, Teuchos::outArg(first));
+    if (rank == first) std::cerr << outcome.message << std::endl;
+    Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, outcome.code, Teuchos::outArg(code));
   }
   return code;
 }

@@ -9,6 +9,7 @@
 #include "core/Errors.hpp"
 #include "core/Log.hpp"
 #include "core/Progress.hpp"
+#include "parallel/Collective.hpp"
 
 namespace efg {
 
@@ -150,7 +151,23 @@ ExplicitSummary ExplicitDriver::run(RunState& state, const StateOutput& output) 
     state.d.update(1.0, delta, 1.0);
     Tpetra::deep_copy(f_ext_old_, f_ext_);
     Tpetra::deep_copy(f_wall_old_, f_wall_);
-    state.wall_forces = accelerate(state.time + step_dt, step_dt);
+    // An inverted point (det F <= 0) may show on one rank only: agree on it collectively, write
+    // the last good state, and name the point, step and time.
+    try {
+      run_collectively(mass_.getMap()->getComm(), [&] { state.wall_forces = accelerate(state.time + step_dt, step_dt); });
+    } catch (const std::exception& e) {
+      const bool here = dynamic_cast<const NumericalError*>(&e) != nullptr;
+      const std::string what = e.what();
+      Tpetra::deep_copy(state.d, previous_d);
+      Tpetra::deep_copy(state.v, previous_v);
+      Tpetra::deep_copy(state.a, previous_a);
+      output(state);
+      if (!here) throw;
+      std::ostringstream why;
+      why << "stage '" << stage_.name << "': " << what << " at step " << summary.steps + 1 << ", t = " << state.time + step_dt
+          << "; the last good state is in the results";
+      throw NumericalError(why.str());
+    }
     Tpetra::deep_copy(state.v, v_half);
     state.v.update(0.5 * step_dt, state.a, 1.0);
     motion_.constrain_end(at_end, state.v, state.a);

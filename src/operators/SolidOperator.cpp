@@ -64,6 +64,7 @@ SolidOperator::SolidOperator(const Model& model) : dim_(model.mesh.dimension) {
     p.device.material = solid_material(*model.scene.find_material(d.part->material), *d.part, dim_);
     p.points = ip.size();
     p.x = ip.x;
+    p.node = ip.node;
     parts_.push_back(std::move(p));
   }
 }
@@ -79,7 +80,10 @@ void SolidOperator::add_point_couplings(CouplingGraph& graph) const {
 
 void SolidOperator::report_inversion(const PartData& part, int point) const {
   std::ostringstream o;
-  o << "part '" << part.name << "': det F <= 0 (inverted material) at integration point " << point << " at (";
+  o << "part '" << part.name << "': det F <= 0 (inverted material) at ";
+  if (part.node[static_cast<std::size_t>(point)] >= 0) o << "the integration point of particle " << part.node[static_cast<std::size_t>(point)] + 1;
+  else o << "a Gauss point";
+  o << " at (";
   for (int d = 0; d < dim_; ++d) o << (d ? ", " : "") << part.x[static_cast<std::size_t>(point * dim_ + d)];
   o << ")";
   throw NumericalError(o.str());

@@ -46,7 +46,8 @@ class SolidOperator {
     std::vector<int> overlap_node;
     std::size_t points = 0;
     std::string name;
-    std::vector<double> x;  // point coordinates, for messages
+    std::vector<double> x;          // point coordinates, for messages
+    std::vector<LocalIndex> node;   // the particle of each point (SCNI, nodal), -1 for Gauss
   };
   void report_inversion(const PartData& part, int point) const;
   /// launch(dimension tag, policy, points, inverted) for every part, then reports inversions.
