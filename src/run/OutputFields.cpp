@@ -1,5 +1,7 @@
 #include "run/OutputFields.hpp"
 
+#include <algorithm>
+#include <array>
 #include <stdexcept>
 
 #include "io/ExodusWriter.hpp"
@@ -96,21 +98,42 @@ std::vector<std::vector<double>> state_columns(const Model& model, const SolidOp
       }
     }
   }
+  // Strains and stresses once per particle (not once per output column), when asked for.
+  using Tensor = std::array<std::array<double, 3>, 3>;
+  std::vector<Tensor> strains(owned.size(), Tensor{}), stresses(owned.size(), Tensor{});
+  const auto& fields = model.scene.output.fields;
+  const bool tensors = std::any_of(fields.begin(), fields.end(),
+                                   [](const std::string& f) { return f == "stress" || f == "strain" || f == "von_mises"; });
+  if (tensors) {
+    std::vector<physics::SolidMaterial> materials;
+    for (const auto& pd : model.parts) materials.push_back(solid_material(*model.scene.find_material(pd.part->material), *pd.part, dim));
+    for (std::size_t s = 0; s < owned.size(); ++s) {
+      if (part_of[s] < 0) continue;
+      const auto p = static_cast<std::size_t>(part_of[s]);
+      const bool finite = model.parts[p].part->section.formulation == Formulation::total_lagrangian;
+      double strain[3][3] = {}, sigma[3][3] = {};
+      if (dim == 2) particle_state<2>(materials[p], finite, h[s].data(), strain, sigma);
+      else particle_state<3>(materials[p], finite, h[s].data(), strain, sigma);
+      for (std::size_t i = 0; i < 3; ++i)
+        for (std::size_t j = 0; j < 3; ++j) {
+          strains[s][i][j] = strain[i][j];
+          stresses[s][i][j] = sigma[i][j];
+        }
+    }
+  }
   std::vector<std::vector<double>> columns;
-  for (const auto& field : model.scene.output.fields) {
+  for (const auto& field : fields) {
     const auto count = field_columns(field, dim).size();
     for (std::size_t c = 0; c < count; ++c) {
       std::vector<double> values;
       values.reserve(owned.size());
       for (std::size_t s = 0; s < owned.size(); ++s) {
-        double strain[3][3] = {}, sigma[3][3] = {};
-        if ((field == "stress" || field == "strain" || field == "von_mises") && part_of[s] >= 0) {
-          const auto& pd = model.parts[static_cast<std::size_t>(part_of[s])];
-          const auto m = solid_material(*model.scene.find_material(pd.part->material), *pd.part, dim);
-          const bool finite = pd.part->section.formulation == Formulation::total_lagrangian;
-          if (dim == 2) particle_state<2>(m, finite, h[s].data(), strain, sigma);
-          else particle_state<3>(m, finite, h[s].data(), strain, sigma);
-        }
+        double strain[3][3], sigma[3][3];
+        for (std::size_t i = 0; i < 3; ++i)
+          for (std::size_t j = 0; j < 3; ++j) {
+            strain[i][j] = strains[s][i][j];
+            sigma[i][j] = stresses[s][i][j];
+          }
         if (field == "displacement") values.push_back(u[s][c]);
         else if (field == "velocity") values.push_back(vel[s][c]);
         else if (field == "acceleration") values.push_back(acc[s][c]);

@@ -12,6 +12,7 @@
 
 #include "drivers/ImplicitDriver.hpp"
 #include "run/OutputFields.hpp"
+#include "support/BeamScene.hpp"
 #include "scene/SceneReader.hpp"
 
 namespace efg {
@@ -53,20 +54,7 @@ void compare(const std::string& text) {
 }
 
 TEST(ImplicitRanks, TimoshenkoBeamMatchesOneRank) {
-  compare(std::string(R"(
-mesh:
-  generate: {element: quad4, lower: [0, -6], upper: [48, 6], cells: [32, 8], perturbation: 0.2, seed: 3}
-parts:
-  - {name: beam, blocks: [block_1], material: m, plane: stress, section: {dilation: 2.0}}
-materials:
-  - {name: m, model: linear_elastic, youngs_modulus: 3.0e7, poissons_ratio: 0.3}
-boundary_conditions:
-  - {name: clamp, type: displacement, node_set: xmin, from_exact_solution: [x, y]}
-loads:
-  - {name: tip, type: traction, side_set: xmax, from_exact_solution: true}
-verification: {exact_solution: timoshenko_beam}
-stages:
-  - {name: load, driver: implicit, end_time: 1, )") + kTight + "}\n");
+  compare(test::beam_scene(32, 8, 0.2, "transformation", "linear", "scni", 2.0, std::string(", ") + kTight));
 }
 
 TEST(ImplicitRanks, NeoHookeanBlockMatchesOneRank) {

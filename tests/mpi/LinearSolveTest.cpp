@@ -10,26 +10,14 @@
 
 #include "drivers/StaticProblem.hpp"
 #include "scene/SceneReader.hpp"
+#include "support/BeamScene.hpp"
 
 namespace efg {
 namespace {
 
 TEST(LinearSolve, OneNewtonStepSolvesTheLinearBeam) {
   const auto comm = Tpetra::getDefaultComm();
-  const auto model = build_model(comm, parse_scene(R"(
-mesh:
-  generate: {element: quad4, lower: [0, -6], upper: [48, 6], cells: [32, 8]}
-parts:
-  - {name: beam, blocks: [block_1], material: m, plane: stress, section: {dilation: 2.0}}
-materials:
-  - {name: m, model: linear_elastic, youngs_modulus: 3.0e7, poissons_ratio: 0.3}
-boundary_conditions:
-  - {name: clamp, type: displacement, node_set: xmin, from_exact_solution: [x, y]}
-loads:
-  - {name: tip, type: traction, side_set: xmax, from_exact_solution: true}
-verification: {exact_solution: timoshenko_beam}
-)",
-                                                   "linear_solve.yaml"));
+  const auto model = build_model(comm, parse_scene(test::beam_scene(32, 8, 0.0), "linear_solve.yaml"));
   StaticProblem problem(model);
   problem.set_load_factor([](const std::string&) { return 1.0; });
   Vector d(model.maps.owned_dofs), r0(model.maps.owned_dofs), r1(model.maps.owned_dofs), dx(model.maps.owned_dofs);

@@ -9,6 +9,7 @@
 
 #include "drivers/StaticProblem.hpp"
 #include "scene/SceneReader.hpp"
+#include "support/BeamScene.hpp"
 
 namespace efg {
 namespace {
@@ -17,21 +18,7 @@ class StaticJacobian : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(StaticJacobian, MatchesCentralDifferences) {
   const auto comm = Tpetra::getDefaultComm();
-  const std::string text = std::string(R"(
-mesh:
-  generate: {element: quad4, lower: [0, -6], upper: [48, 6], cells: [16, 4], perturbation: 0.2, seed: 11}
-parts:
-  - {name: beam, blocks: [block_1], material: m, plane: stress, section: {dilation: 2.0}}
-materials:
-  - {name: m, model: linear_elastic, youngs_modulus: 3.0e7, poissons_ratio: 0.3}
-boundary_conditions:
-  - {name: clamp, type: displacement, node_set: xmin, from_exact_solution: [x, y], method: )") + GetParam() + R"(}
-loads:
-  - {name: tip, type: traction, side_set: xmax, from_exact_solution: true}
-verification: {exact_solution: timoshenko_beam}
-stages:
-  - {name: load, driver: implicit, end_time: 1}
-)";
+  const std::string text = test::beam_scene(16, 4, 0.2, GetParam());
   const auto model = build_model(comm, parse_scene(text, "jacobian.yaml"));
   StaticProblem problem(model);
   problem.set_load_factor([](const std::string&) { return 1.0; });

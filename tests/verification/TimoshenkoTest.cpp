@@ -8,26 +8,12 @@
 #include <sstream>
 
 #include "core/Log.hpp"
+#include "support/BeamScene.hpp"
 #include "support/StaticSolve.hpp"
 #include "verification/ErrorNorms.hpp"
 
 namespace efg {
 namespace {
-
-std::string beam_scene(int nx, int ny, double perturbation, const char* method, const char* basis, const char* integration,
-                       double dilation) {
-  std::ostringstream s;
-  s << "mesh:\n  generate: {element: quad4, lower: [0, -6], upper: [48, 6], cells: [" << nx << ", " << ny
-    << "], perturbation: " << perturbation << ", seed: 11}\n"
-    << "parts:\n  - {name: beam, blocks: [block_1], material: m, plane: stress, section: {basis: " << basis
-    << ", integration: " << integration << ", dilation: " << dilation << "}}\n"
-    << "materials:\n  - {name: m, model: linear_elastic, youngs_modulus: 3.0e7, poissons_ratio: 0.3}\n"
-    << "boundary_conditions:\n  - {name: clamp, type: displacement, node_set: xmin, from_exact_solution: [x, y], method: " << method << "}\n"
-    << "loads:\n  - {name: tip, type: traction, side_set: xmax, from_exact_solution: true}\n"
-    << "stages:\n  - {name: load, driver: implicit, end_time: 1}\n"
-    << "verification:\n  exact_solution: timoshenko_beam\n  parameters: {length: 48, depth: 12, load: 1000}\n";
-  return s.str();
-}
 
 struct Level {
   double h, l2, energy, tip;
@@ -36,7 +22,7 @@ struct Level {
 std::vector<Level> series(double perturbation, const char* method, const char* basis, double dilation) {
   std::vector<Level> levels;
   for (int ny : {4, 8, 16, 32}) {
-    auto s = test::solve_static(beam_scene(4 * ny, ny, perturbation, method, basis, "scni", dilation));
+    auto s = test::solve_static(test::beam_scene(4 * ny, ny, perturbation, method, basis, "scni", dilation));
     const auto exact = make_exact_solution(s.model->scene, 2);
     const auto e = error_norms(*s.model, s.problem->solid(), *s.d_overlap, exact);
     const double tip_point[3] = {48.0, 0.0, 0.0};
@@ -75,7 +61,7 @@ TEST_P(Timoshenko, LinearBasisScniConvergesAtTheExpectedRates) {
 
 TEST(TimoshenkoReaction, ClampReactionBalancesTheTipLoad) {
   for (const char* method : {"transformation", "nitsche", "penalty"}) {
-    auto s = test::solve_static(beam_scene(32, 8, 0.2, method, "linear", "scni", 2.0));
+    auto s = test::solve_static(test::beam_scene(32, 8, 0.2, method, "linear", "scni", 2.0));
     const auto r = s.problem->reactions(*s.d)[0];
     EXPECT_NEAR(r[1], -1000.0, 1.0) << method;  // the support holds the 1000 shear load
     EXPECT_NEAR(r[0], 0.0, 1.0) << method;
