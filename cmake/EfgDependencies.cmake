@@ -1,8 +1,27 @@
 # Third-party dependencies, all from Debian 12 packages (scripts/setup.sh installs them).
 # Facts behind this file: ../shared/reference/toolchain.md.
+# EFG_TRILINOS_PREFIX selects another Trilinos install, e.g. the OpenMP build of
+# scripts/build_trilinos_openmp.sh (docs/threads.md); empty means Debian's packages.
+set(EFG_TRILINOS_PREFIX "" CACHE PATH "Trilinos install prefix (empty: Debian's trilinos-all-dev)")
 find_package(MPI REQUIRED COMPONENTS CXX)
-find_package(Trilinos 13.2 REQUIRED
-  COMPONENTS Teuchos Tpetra Belos Ifpack2 MueLu NOX Stratimikos Thyra Amesos2 Zoltan2)
+if(EFG_TRILINOS_PREFIX)
+  find_package(Trilinos 13.2 REQUIRED
+    COMPONENTS Teuchos Tpetra Belos Ifpack2 MueLu NOX Stratimikos Thyra Amesos2 Zoltan2
+    PATHS ${EFG_TRILINOS_PREFIX} NO_DEFAULT_PATH)
+else()
+  find_package(Trilinos 13.2 REQUIRED
+    COMPONENTS Teuchos Tpetra Belos Ifpack2 MueLu NOX Stratimikos Thyra Amesos2 Zoltan2)
+endif()
+# Which Kokkos backends this Trilinos has (Debian's: Serial only).
+find_file(EFG_KOKKOS_CONFIG KokkosCore_config.h PATHS ${Trilinos_INCLUDE_DIRS} NO_DEFAULT_PATH)
+file(STRINGS "${EFG_KOKKOS_CONFIG}" _efg_kokkos_openmp REGEX "^#define KOKKOS_ENABLE_OPENMP")
+if(_efg_kokkos_openmp)
+  set(EFG_KOKKOS_OPENMP ON)
+  find_package(OpenMP REQUIRED COMPONENTS CXX)
+else()
+  set(EFG_KOKKOS_OPENMP OFF)
+endif()
+message(STATUS "efg: Trilinos ${Trilinos_VERSION} from ${Trilinos_DIR}; Kokkos OpenMP: ${EFG_KOKKOS_OPENMP}")
 find_package(yaml-cpp REQUIRED)
 
 # Debian's Trilinos targets carry no include directories and no MPI: wrap them in one target.
@@ -11,6 +30,9 @@ target_include_directories(efg_trilinos SYSTEM INTERFACE
   ${Trilinos_INCLUDE_DIRS} ${Trilinos_TPL_INCLUDE_DIRS})
 target_link_libraries(efg_trilinos INTERFACE
   ${Trilinos_LIBRARIES} ${Trilinos_TPL_LIBRARIES} MPI::MPI_CXX)
+if(EFG_KOKKOS_OPENMP)
+  target_link_libraries(efg_trilinos INTERFACE OpenMP::OpenMP_CXX)
+endif()
 
 # Exodus II (Debian's libexodusii-dev ships no CMake config).
 find_path(EXODUS_INCLUDE_DIR exodusII.h PATH_SUFFIXES exodusii)

@@ -44,53 +44,16 @@ if [ "$(id -u)" -ne 0 ]; then sudo_cmd="sudo"; fi
 export DEBIAN_FRONTEND=noninteractive
 t0=$(date +%s)
 
-# 1. deb-src for bookworm main.
-has_deb_src() {
-  grep -rhsE '^(deb-src[[:space:]].*bookworm[[:space:]].*main|Types:.*deb-src)' \
-    /etc/apt/sources.list /etc/apt/sources.list.d/ >/dev/null 2>&1
-}
-need_update=0
-if ! has_deb_src; then
-  say "enabling a deb-src stanza for Debian bookworm main"
-  $sudo_cmd tee /etc/apt/sources.list.d/efg-deb-src.sources >/dev/null <<'EOF'
-# Added by efg scripts/build_exodiff.sh: Debian's trilinos source package holds SEACAS (exodiff).
-Types: deb-src
-URIs: http://deb.debian.org/debian
-Suites: bookworm
-Components: main
-Signed-By: /usr/share/keyrings/debian-archive-keyring.gpg
-EOF
-  need_update=1
-fi
-missing=()
-for p in dpkg-dev cmake ninja-build g++ libnetcdf-dev libhdf5-dev; do
-  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
-    missing+=("$p")
-  fi
-done
-if [ $need_update -eq 1 ] || [ ${#missing[@]} -gt 0 ]; then
-  $sudo_cmd apt-get update -qq
-fi
-if [ ${#missing[@]} -gt 0 ]; then
-  say "installing ${missing[*]}"
-  $sudo_cmd apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
-fi
-
-# 2. The source package, unpacked in a work folder next to the prefix.
+# 1 + 2. deb-src for bookworm main, the tools, the source package unpacked in a work folder.
+# shellcheck source=lib/trilinos_source.sh
+source "$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)/lib/trilinos_source.sh"
+efg_prepare_source_tools dpkg-dev cmake ninja-build g++ libnetcdf-dev libhdf5-dev
 $sudo_cmd mkdir -p "$cache"
 if [ -n "$sudo_cmd" ]; then $sudo_cmd chown "$(id -u):$(id -g)" "$cache"; fi
 work="$cache/seacas-work"
-rm -rf "$work"
-mkdir -p "$work/download"
-say "downloading Debian's trilinos source package (166 MB) into $work"
-(cd "$work/download" && apt-get source --download-only -qq trilinos >/dev/null 2>&1) || {
-  say "apt-get source trilinos failed; check the deb-src stanza and the network"; exit 1; }
+efg_fetch_trilinos_source "$work"
 t_dl=$(date +%s)
-dsc=$(ls "$work"/download/trilinos_*.dsc | head -1)
-say "unpacking $(basename "$dsc")"
-dpkg-source -x -q --no-check "$dsc" "$work/trilinos" >/dev/null 2>&1
-rm -rf "$work/download"
-t_unpack=$(date +%s)
+t_unpack=$t_dl
 
 # 3a. NC_SZIP_NN fix.
 utils="$work/trilinos/packages/seacas/libraries/exodus/src/ex_utils.c"
@@ -143,7 +106,7 @@ t_install=$(date +%s)
 "$exodiff" -version >/dev/null 2>&1 || { say "$exodiff does not run"; exit 1; }
 rm -rf "$work"
 t_end=$(date +%s)
-say "download $((t_dl - t0)) s, unpack $((t_unpack - t_dl)) s, configure $((t_conf - t_unpack)) s," \
+say "source download and unpack $((t_dl - t0)) s, configure $((t_conf - t_unpack)) s," \
   "build $((t_build - t_conf)) s, install $((t_install - t_build)) s, clean-up $((t_end - t_install)) s;" \
   "$(du -sh "$prefix" | cut -f1) in $prefix"
 echo "$exodiff"

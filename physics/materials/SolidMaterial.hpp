@@ -28,20 +28,22 @@ struct SolidMaterial {
   bool plane_stress = false;
 };
 
-/// P (first Piola-Kirchhoff; the Cauchy stress for small strain) and A = dP/dH. Returns false
-/// when det F <= 0 (finite strain): the point is inverted and P, A are undefined.
+/// P (first Piola-Kirchhoff; the Cauchy stress for small strain), and A = dP/dH when `A` is
+/// given. Returns false when det F <= 0 (finite strain): the point is inverted and P, A are
+/// undefined.
 template <int Dim>
-EFG_PHYSICS_FUNCTION bool stress_and_tangent(const SolidMaterial& m, const double (&H)[Dim][Dim], double (&P)[Dim][Dim],
-                                             double (&A)[Dim][Dim][Dim][Dim]) {
+EFG_PHYSICS_FUNCTION bool stress(const SolidMaterial& m, const double (&H)[Dim][Dim], double (&P)[Dim][Dim],
+                                 double (*A)[Dim][Dim][Dim] = nullptr) {
   if (m.kind == MaterialKind::linear_elastic) {
     double tr = 0;
     for (int i = 0; i < Dim; ++i) tr += H[i][i];
     for (int i = 0; i < Dim; ++i)
       for (int j = 0; j < Dim; ++j) {
         P[i][j] = m.mu * (H[i][j] + H[j][i]) + (i == j ? m.lambda * tr : 0.0);
-        for (int k = 0; k < Dim; ++k)
-          for (int l = 0; l < Dim; ++l)
-            A[i][j][k][l] = (i == j && k == l ? m.lambda : 0.0) + m.mu * ((i == k && j == l ? 1.0 : 0.0) + (i == l && j == k ? 1.0 : 0.0));
+        if (A)
+          for (int k = 0; k < Dim; ++k)
+            for (int l = 0; l < Dim; ++l)
+              A[i][j][k][l] = (i == j && k == l ? m.lambda : 0.0) + m.mu * ((i == k && j == l ? 1.0 : 0.0) + (i == l && j == k ? 1.0 : 0.0));
       }
     return true;
   }
@@ -55,12 +57,20 @@ EFG_PHYSICS_FUNCTION bool stress_and_tangent(const SolidMaterial& m, const doubl
   for (int i = 0; i < Dim; ++i)
     for (int a = 0; a < Dim; ++a) {
       P[i][a] = m.mu * (F[i][a] - Finv[a][i]) + m.lambda * lnJ * Finv[a][i];
-      for (int k = 0; k < Dim; ++k)
-        for (int b = 0; b < Dim; ++b)
-          A[i][a][k][b] = (i == k && a == b ? m.mu : 0.0) + (m.mu - m.lambda * lnJ) * Finv[b][i] * Finv[a][k] +
-                          m.lambda * Finv[a][i] * Finv[b][k];
+      if (A)
+        for (int k = 0; k < Dim; ++k)
+          for (int b = 0; b < Dim; ++b)
+            A[i][a][k][b] = (i == k && a == b ? m.mu : 0.0) + (m.mu - m.lambda * lnJ) * Finv[b][i] * Finv[a][k] +
+                            m.lambda * Finv[a][i] * Finv[b][k];
     }
   return true;
+}
+
+/// P and A = dP/dH (see stress).
+template <int Dim>
+EFG_PHYSICS_FUNCTION bool stress_and_tangent(const SolidMaterial& m, const double (&H)[Dim][Dim], double (&P)[Dim][Dim],
+                                             double (&A)[Dim][Dim][Dim][Dim]) {
+  return stress<Dim>(m, H, P, A);
 }
 
 /// Strain energy per unit reference volume (0 for an inverted point).

@@ -24,7 +24,12 @@ Usage:
   efg --help                       this text
   efg --version                    version and git revision
 
-Parallel: mpirun -np N efg run SCENE.yaml distributes the particles over N ranks.
+Options of run, check, mesh and study:
+  --threads T                      threads per MPI rank (builds against an OpenMP Trilinos,
+                                   docs/threads.md; default OMP_NUM_THREADS, else all cores)
+
+Parallel: mpirun -np N efg run SCENE.yaml distributes the particles over N ranks; with threads,
+  mpirun --bind-to none -np N efg run SCENE.yaml --threads T (N x T <= cores).
 
 Exit codes:
   0  success
@@ -68,6 +73,19 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
         cl.sweeps.push_back(value);
       }
       if (cl.levels < 1 || !(cl.factor > 1.0)) usage_error("--levels must be >= 1 and --factor > 1");
+    } else if (a == "--threads" || a.rfind("--threads=", 0) == 0) {
+      if (cl.command == "schema") usage_error("option --threads belongs to run, check, mesh and study");
+      const bool joined = a != "--threads";
+      if (!joined && i + 1 >= args.size()) usage_error("option --threads needs a number of threads per rank");
+      const std::string value = joined ? a.substr(10) : args[++i];
+      std::size_t used = 0;
+      try {
+        cl.threads = std::stoi(value, &used);
+      } catch (const std::exception&) {
+        used = 0;
+      }
+      if (used != value.size() || cl.threads < 1)
+        usage_error("--threads expects a positive number of threads per rank, found '" + value + "'");
     } else if (a == "-o" || a == "--output") {
       if (cl.command != "run" && cl.command != "study") usage_error("option " + a + " belongs to 'efg run' and 'efg study'");
       if (i + 1 >= args.size()) usage_error("option " + a + " needs a folder");

@@ -14,6 +14,7 @@ struct CommandLine {
   int levels = 4;           ///< study: refinement levels
   double factor = 2.0;      ///< study: refinement factor per level
   std::vector<std::string> sweeps;  ///< study: KEY=V1,V2,...
+  int threads = 0;          ///< --threads N per rank (0: OMP_NUM_THREADS or the backend's default)
 };
 
 /// Throws InputError with a usage hint on a malformed command line.

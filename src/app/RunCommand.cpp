@@ -12,6 +12,7 @@
 #include "core/Log.hpp"
 #include "scene/SceneEcho.hpp"
 #include "core/RunSummary.hpp"
+#include "core/Threads.hpp"
 #include "core/Version.hpp"
 #include "run/Model.hpp"
 #include "run/Simulation.hpp"
@@ -23,7 +24,7 @@ void log_model(const Model& model, const CommPtr& comm) {
   YAML::Emitter echo;
   echo << compact_for_echo(model.scene.resolved);
   Log::info("efg " + std::string(version_string) + " (" + git_describe + "), " + std::to_string(comm->getSize()) +
-            " MPI rank(s)");
+            " MPI rank(s) x " + execution_summary());
   Log::info("scene " + model.scene.file + " (resolved):\n" + echo.c_str());
   const auto owned = static_cast<long long>(model.partition.owned.size());
   long long min = 0, max = 0;
@@ -56,6 +57,7 @@ void run_command(const CommPtr& comm, const CommandLine& cl) {
   const auto started = std::chrono::steady_clock::now();
   const Model model = build_model(comm, cl.scene);
   log_model(model, comm);
+  for (const auto& w : thread_warnings(cl.threads)) Log::warning(w);
   log_discretization(model, comm);
   const std::filesystem::path path = std::filesystem::path(cl.output_dir) / model.scene.output.file;
   if (comm->getRank() == 0 && path.has_parent_path()) std::filesystem::create_directories(path.parent_path());

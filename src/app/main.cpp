@@ -2,12 +2,16 @@
 #include <Tpetra_Core.hpp>
 #include <Teuchos_CommHelpers.hpp>
 
+#include <cstdlib>
 #include <iostream>
+#include <string>
+#include <vector>
 
 #include "app/CommandLine.hpp"
 #include "app/Commands.hpp"
 #include "core/Errors.hpp"
 #include "core/Log.hpp"
+#include "core/Threads.hpp"
 #include "core/Version.hpp"
 #include "parallel/Collective.hpp"
 
@@ -59,9 +63,18 @@ Outcome dispatch(const efg::CommPtr& comm, const std::vector<std::string>& args)
 int main(int argc, char** argv) {
   int code = 0;
   {
-    // Kokkos would claim efg's own --help: MPI and Kokkos are configured by environment only.
-    int library_argc = 1;
-    Tpetra::ScopeGuard scope(&library_argc, &argv);
+    // Kokkos would claim efg's own --help: it sees only the thread count of --threads.
+    // OMP_PROC_BIND unset means unbound threads to the OpenMP runtime (it read the environment
+    // when it loaded); saying so explicitly keeps Kokkos from warning about it on every run.
+    setenv("OMP_PROC_BIND", "false", 0);
+    const int threads = efg::threads_option(argc, argv);
+    std::string threads_arg = "--kokkos-threads=" + std::to_string(threads);
+    std::vector<char*> library_args = {argv[0]};
+    if (threads > 0) library_args.push_back(threads_arg.data());
+    library_args.push_back(nullptr);
+    int library_argc = static_cast<int>(library_args.size()) - 1;
+    char** library_argv = library_args.data();
+    Tpetra::ScopeGuard scope(&library_argc, &library_argv);
     const auto comm = Tpetra::getDefaultComm();
     efg::Log::set_rank(comm->getRank());
     const std::vector<std::string> args(argv + 1, argv + argc);

@@ -5,19 +5,13 @@
 #include <map>
 #include <string>
 
+#include "discretization/ScniGradients.hpp"
 #include "discretization/ShapeFunctions.hpp"
 #include "discretization/SmoothingFacets.hpp"
 #include "mesh/GaussRules.hpp"
 
 namespace efg {
 namespace {
-
-// The cloud index of every mesh node present in the cloud (-1 otherwise).
-std::vector<LocalIndex> cloud_index(const ParticleCloud& cloud, std::size_t node_count) {
-  std::vector<LocalIndex> index(node_count, -1);
-  for (std::size_t i = 0; i < cloud.size(); ++i) index[static_cast<std::size_t>(cloud.mesh_node[i])] = static_cast<LocalIndex>(i);
-  return index;
-}
 
 // Points at particle positions (SCNI and nodal): the owned particles of the cloud.
 void add_nodal_points(const ParticleCloud& cloud, IntegrationPoints& ip) {
@@ -58,33 +52,10 @@ void build_scni(const BackgroundMesh& mesh, const PartSpec& part, const Particle
     return "SCNI smoothing point " + std::to_string(p) + " next to particle " + std::to_string(points[p].plus + 1);
   });
 
-  // Accumulate B~_I(x_L) V_L per owned node L, keyed by global particle id so that the sums run
-  // in the same order on any number of ranks.
-  const auto index = cloud_index(cloud, mesh.node_count());
-  std::vector<std::map<LocalIndex, std::array<double, 3>>> rows(cloud.owned_count);
-  auto accumulate = [&](LocalIndex node, std::size_t p, double sign) {
-    if (node < 0 || owner[static_cast<std::size_t>(node)] != rank) return;
-    auto& row = rows[static_cast<std::size_t>(index[static_cast<std::size_t>(node)])];
-    for (auto k = phi.neighbors.offsets[p]; k < phi.neighbors.offsets[p + 1]; ++k) {
-      auto& entry = row[cloud.mesh_node[static_cast<std::size_t>(phi.neighbors.particles[k])]];
-      for (std::size_t d = 0; d < dim; ++d) entry[d] += sign * phi.phi[k] * points[p].weighted_normal[d];
-    }
-  };
-  for (std::size_t p = 0; p < points.size(); ++p) {
-    accumulate(points[p].plus, p, 1.0);
-    accumulate(points[p].minus, p, -1.0);
-  }
-  ip.gradients.width = cloud.dimension;
-  ip.gradients.offsets.assign(1, 0);
-  for (std::size_t l = 0; l < cloud.owned_count; ++l) {
-    const double v = volume[static_cast<std::size_t>(cloud.mesh_node[l])];
-    ip.weight.push_back(v);
-    for (const auto& [gid, b] : rows[l]) {
-      ip.gradients.particles.push_back(index[static_cast<std::size_t>(gid)]);
-      for (std::size_t d = 0; d < dim; ++d) ip.gradients.values.push_back(b[d] / v);
-    }
-    ip.gradients.offsets.push_back(ip.gradients.particles.size());
-  }
+  std::vector<LocalIndex> owned_index(mesh.node_count(), -1);
+  for (std::size_t l = 0; l < cloud.owned_count; ++l) owned_index[static_cast<std::size_t>(cloud.mesh_node[l])] = static_cast<LocalIndex>(l);
+  ip.gradients = smoothed_gradients(cloud, points, phi, volume, owned_index);
+  for (std::size_t l = 0; l < cloud.owned_count; ++l) ip.weight.push_back(volume[static_cast<std::size_t>(cloud.mesh_node[l])]);
 }
 
 void build_gauss(const BackgroundMesh& mesh, const PartSpec& part, const ParticleCloud& cloud,

@@ -14,18 +14,12 @@
 // own point's entries, so no atomics are needed.
 #pragma once
 
-#include <Kokkos_Core.hpp>
-
+#include "core/DeviceArrays.hpp"
 #include "discretization/KernelFunctions.hpp"
 #include "discretization/PolynomialBasis.hpp"
 #include "discretization/SmallMatrix.hpp"
 
 namespace efg {
-
-using ExecSpace = Kokkos::DefaultExecutionSpace;
-using MemSpace = ExecSpace::memory_space;
-template <class T>
-using DeviceView = Kokkos::View<T, Kokkos::LayoutRight, MemSpace>;
 
 /// Outcome of one point's evaluation, written to MlsKernel::status.
 enum MlsStatus : int { mls_ok = 0, mls_too_few_neighbors = 1, mls_singular = 2 };

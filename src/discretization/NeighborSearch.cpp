@@ -1,46 +1,109 @@
 #include "discretization/NeighborSearch.hpp"
 
-#include <algorithm>
-#include <cmath>
-
 #include "geometry/PointBins.hpp"
 
 namespace efg {
+namespace {
 
-bool inside_support(const ParticleCloud& cloud, std::size_t i, const double* x) {
-  const auto* xi = cloud.x(i);
-  const auto* a = cloud.a(i);
-  if (cloud.section.support == SupportShape::sphere) {
-    double r2 = 0;
-    for (int d = 0; d < cloud.dimension; ++d) r2 += (x[d] - xi[d]) * (x[d] - xi[d]);
-    return r2 < a[0] * a[0];
+// One work item per point. With `rows` empty it counts the point's neighbours into count(p);
+// otherwise it writes them at rows(offsets(p)...) and sorts them by global id (insertion sort:
+// rows hold tens of entries).
+struct SupportSearch {
+  BinGrid grid;
+  double reach = 0;
+  bool sphere = false;
+  DeviceView<const std::size_t*> bin_start;
+  DeviceView<const std::size_t*> bin_points;
+  DeviceCloud cloud;
+  DeviceView<const double**> points;
+  DeviceView<std::size_t*> count;          // counting pass
+  DeviceView<const std::size_t*> offsets;  // filling pass
+  DeviceView<int*> rows;                   // filling pass
+
+  KOKKOS_INLINE_FUNCTION void operator()(const std::size_t p) const {
+    double x[3] = {0, 0, 0};
+    for (int d = 0; d < grid.dim; ++d) x[d] = points(p, static_cast<std::size_t>(d));
+    const bool fill = rows.extent(0) > 0;
+    std::size_t n = 0;
+    const std::size_t first = fill ? offsets(p) : 0;
+    grid.for_each_bin_near(x, reach, [&](const std::size_t b) {
+      for (auto k = bin_start(b); k < bin_start(b + 1); ++k) {
+        const auto i = bin_points(k);
+        if (!covers(sphere, grid.dim, &cloud.position(i, 0), &cloud.support(i, 0), x)) continue;
+        if (fill) rows(first + n) = static_cast<int>(i);
+        ++n;
+      }
+    });
+    if (!fill) {
+      count(p) = n;
+      return;
+    }
+    for (std::size_t i = first + 1; i < first + n; ++i) {
+      const int value = rows(i);
+      const auto key = cloud.global_id(value);
+      auto j = i;
+      for (; j > first && cloud.global_id(rows(j - 1)) > key; --j) rows(j) = rows(j - 1);
+      rows(j) = value;
+    }
   }
-  for (int d = 0; d < cloud.dimension; ++d)
-    if (!(std::abs(x[d] - xi[d]) < a[d])) return false;
-  return true;
+};
+
+}  // namespace
+
+DeviceCloud device_cloud(const ParticleCloud& cloud) {
+  const auto dim = static_cast<std::size_t>(cloud.dimension);
+  DeviceCloud d;
+  d.position = to_device(cloud.position.data(), cloud.size(), dim, "efg::cloud position");
+  d.support = to_device(cloud.support.data(), cloud.size(), dim, "efg::cloud support");
+  d.global_id = to_device(cloud.mesh_node, "efg::cloud global id");
+  return d;
+}
+
+DeviceNeighborLists find_neighbors(const ParticleCloud& cloud, const DeviceCloud& device,
+                                   const DeviceView<const double**>& points) {
+  const auto count = points.extent(0);
+  DeviceNeighborLists lists;
+  lists.offsets = DeviceView<std::size_t*>("efg::neighbor offsets", count + 1);
+  if (cloud.size() == 0) {
+    lists.particles = DeviceView<int*>("efg::neighbors", 0);
+    return lists;
+  }
+  SupportSearch search;
+  search.reach = largest_support_radius(cloud);
+  const PointBins bins(cloud.position.data(), cloud.size(), cloud.dimension, search.reach);
+  search.grid = bins.grid();
+  search.sphere = cloud.section.support == SupportShape::sphere;
+  search.bin_start = to_device(bins.bin_start(), "efg::bin start");
+  search.bin_points = to_device(bins.bin_points(), "efg::bin points");
+  search.cloud = device;
+  search.points = points;
+  using Range = Kokkos::RangePolicy<ExecSpace>;
+  search.count = DeviceView<std::size_t*>(Kokkos::view_alloc(Kokkos::WithoutInitializing, "efg::neighbor count"), count);
+  Kokkos::parallel_for("efg::neighbor_count", Range(0, count), search);
+  const auto counts = search.count;
+  const auto offsets = lists.offsets;
+  std::size_t total = 0;
+  Kokkos::parallel_scan(
+      "efg::neighbor_scan", Range(0, count),
+      KOKKOS_LAMBDA(const std::size_t p, std::size_t& running, const bool final) {
+        running += counts(p);
+        if (final) offsets(p + 1) = running;
+      },
+      total);
+  lists.particles = DeviceView<int*>(Kokkos::view_alloc(Kokkos::WithoutInitializing, "efg::neighbors"), total);
+  search.count = {};
+  search.offsets = lists.offsets;
+  search.rows = lists.particles;
+  if (total > 0) Kokkos::parallel_for("efg::neighbor_fill", Range(0, count), search);
+  return lists;
 }
 
 NeighborLists find_neighbors(const ParticleCloud& cloud, const double* points, std::size_t count) {
+  const auto device = find_neighbors(cloud, device_cloud(cloud),
+                                     to_device(points, count, static_cast<std::size_t>(cloud.dimension), "efg::search points"));
   NeighborLists lists;
-  lists.offsets.assign(count + 1, 0);
-  if (cloud.size() == 0) return lists;
-  const double reach = largest_support_radius(cloud);
-  const PointBins bins(cloud.position.data(), cloud.size(), cloud.dimension, reach);
-  const auto dim = static_cast<std::size_t>(cloud.dimension);
-  std::vector<LocalIndex> found;
-  lists.particles.reserve(count * (dim == 3 ? 40 : 16));
-  for (std::size_t p = 0; p < count; ++p) {
-    const double* x = points + p * dim;
-    found.clear();
-    bins.for_each_within(x, reach, [&](std::size_t i) {
-      if (inside_support(cloud, i, x)) found.push_back(static_cast<LocalIndex>(i));
-    });
-    std::sort(found.begin(), found.end(), [&](LocalIndex a, LocalIndex b) {
-      return cloud.mesh_node[static_cast<std::size_t>(a)] < cloud.mesh_node[static_cast<std::size_t>(b)];
-    });
-    lists.particles.insert(lists.particles.end(), found.begin(), found.end());
-    lists.offsets[p + 1] = lists.particles.size();
-  }
+  lists.offsets = to_host(device.offsets);
+  lists.particles = to_host(device.particles);
   return lists;
 }
 

@@ -1,17 +1,20 @@
-// Which particles' supports cover each evaluation point: a cell-list search (PointBins) over the
-// particles, O(1) work per neighbour, so O(N) in total for quasi-uniform clouds.
+// Which particles' supports cover each evaluation point: a cell-list search (BinGrid) over the
+// particles, O(1) work per neighbour, so O(N) in total for quasi-uniform clouds. The search runs
+// as Kokkos kernels, one work item per point: a counting pass, a scan for the row offsets, and a
+// filling pass that sorts each row by global particle id (so that sums over neighbours run in
+// the same order on any number of ranks and threads). Only the bins are built on the host.
 #pragma once
 
 #include <cstddef>
 #include <vector>
 
+#include "core/DeviceArrays.hpp"
 #include "discretization/ParticleCloud.hpp"
 
 namespace efg {
 
 /// Per-point neighbour lists in compressed rows: the neighbours of point p are
-/// particles[offsets[p] .. offsets[p+1]), cloud indices ordered by global particle id so that
-/// sums over neighbours run in the same order on any number of ranks.
+/// particles[offsets[p] .. offsets[p+1]), cloud indices ordered by global particle id.
 struct NeighborLists {
   std::vector<std::size_t> offsets;
   std::vector<LocalIndex> particles;
@@ -20,10 +23,40 @@ struct NeighborLists {
   std::size_t count(std::size_t p) const { return offsets[p + 1] - offsets[p]; }
 };
 
-/// True when x lies strictly inside the support of particle i (box or sphere).
-bool inside_support(const ParticleCloud& cloud, std::size_t i, const double* x);
+/// The same lists on the device.
+struct DeviceNeighborLists {
+  DeviceView<std::size_t*> offsets;
+  DeviceView<int*> particles;
+};
 
-/// Neighbours of `count` points (coordinates `points`, cloud.dimension per point).
+/// A cloud's particle arrays on the device, for the search and the MLS kernel.
+struct DeviceCloud {
+  DeviceView<const double**> position;  ///< particles x dim, reference positions
+  DeviceView<const double**> support;   ///< particles x dim, support half-widths
+  DeviceView<const LocalIndex*> global_id;
+};
+DeviceCloud device_cloud(const ParticleCloud& cloud);
+
+/// True when x lies strictly inside the support (half-widths a, or radius a[0] for a sphere)
+/// of the particle at xi.
+KOKKOS_INLINE_FUNCTION bool covers(bool sphere, int dim, const double* xi, const double* a, const double* x) {
+  if (sphere) {
+    double r2 = 0;
+    for (int d = 0; d < dim; ++d) r2 += (x[d] - xi[d]) * (x[d] - xi[d]);
+    return r2 < a[0] * a[0];
+  }
+  for (int d = 0; d < dim; ++d) {
+    const double dx = x[d] - xi[d];
+    if (!((dx < 0 ? -dx : dx) < a[d])) return false;
+  }
+  return true;
+}
+
+/// Neighbours of the points (points x cloud.dimension) on the device.
+DeviceNeighborLists find_neighbors(const ParticleCloud& cloud, const DeviceCloud& device,
+                                   const DeviceView<const double**>& points);
+
+/// Neighbours of `count` points (coordinates `points`, cloud.dimension per point), on the host.
 NeighborLists find_neighbors(const ParticleCloud& cloud, const double* points, std::size_t count);
 
 }  // namespace efg

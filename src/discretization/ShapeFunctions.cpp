@@ -9,43 +9,23 @@
 namespace efg {
 namespace {
 
-template <class T>
-DeviceView<T*> to_device(const std::vector<T>& host, const char* name) {
-  DeviceView<T*> view(Kokkos::view_alloc(Kokkos::WithoutInitializing, std::string(name)), host.size());
-  Kokkos::deep_copy(view, Kokkos::View<const T*, Kokkos::HostSpace, Kokkos::MemoryTraits<Kokkos::Unmanaged>>(
-                              host.data(), host.size()));
-  return view;
-}
-
-DeviceView<double**> matrix_to_device(const double* host, std::size_t rows, int cols, const char* name) {
-  DeviceView<double**> view(Kokkos::view_alloc(Kokkos::WithoutInitializing, std::string(name)), rows, static_cast<std::size_t>(cols));
-  Kokkos::deep_copy(view, Kokkos::View<const double**, Kokkos::LayoutRight, Kokkos::HostSpace,
-                                       Kokkos::MemoryTraits<Kokkos::Unmanaged>>(host, rows, static_cast<std::size_t>(cols)));
-  return view;
-}
-
-template <class View>
-void to_host(const View& device, std::vector<double>& host) {
-  host.resize(device.size());
-  Kokkos::deep_copy(Kokkos::View<double*, Kokkos::HostSpace, Kokkos::MemoryTraits<Kokkos::Unmanaged>>(host.data(), host.size()),
-                    Kokkos::View<const double*, MemSpace>(device.data(), device.size()));
-}
-
 template <int Dim, int Order>
 void run_kernel(const ParticleCloud& cloud, const double* points, std::size_t count, bool gradients,
                 ShapeFunctionValues& out, std::vector<int>& status) {
   MlsKernel<Dim, Order> k;
-  k.points = matrix_to_device(points, count, Dim, "efg::mls points");
-  k.particles = matrix_to_device(cloud.position.data(), cloud.size(), Dim, "efg::mls particles");
-  k.support = matrix_to_device(cloud.support.data(), cloud.size(), Dim, "efg::mls supports");
-  k.offsets = to_device(out.neighbors.offsets, "efg::mls offsets");
-  std::vector<int> neighbors(out.neighbors.particles.begin(), out.neighbors.particles.end());
-  k.neighbors = to_device(neighbors, "efg::mls neighbors");
-  const auto nnz = out.neighbors.particles.size();
-  DeviceView<double*> phi("efg::mls phi", nnz);
-  DeviceView<double**> grad("efg::mls grad", gradients ? nnz : 0, static_cast<std::size_t>(Dim));
-  DeviceView<double*> condition("efg::mls condition", count);
-  DeviceView<int*> point_status("efg::mls status", count);
+  const auto device = device_cloud(cloud);
+  k.points = to_device(points, count, Dim, "efg::mls points");
+  k.particles = device.position;
+  k.support = device.support;
+  const auto lists = find_neighbors(cloud, device, k.points);
+  k.offsets = lists.offsets;
+  k.neighbors = lists.particles;
+  const auto nnz = lists.particles.extent(0);
+  DeviceView<double*> phi(Kokkos::view_alloc(Kokkos::WithoutInitializing, "efg::mls phi"), nnz);
+  DeviceView<double**> grad(Kokkos::view_alloc(Kokkos::WithoutInitializing, "efg::mls grad"), gradients ? nnz : 0,
+                            static_cast<std::size_t>(Dim));
+  DeviceView<double*> condition(Kokkos::view_alloc(Kokkos::WithoutInitializing, "efg::mls condition"), count);
+  DeviceView<int*> point_status(Kokkos::view_alloc(Kokkos::WithoutInitializing, "efg::mls status"), count);
   k.phi = phi;
   k.grad = grad;
   k.condition = condition;
@@ -54,12 +34,12 @@ void run_kernel(const ParticleCloud& cloud, const double* points, std::size_t co
   k.sphere = cloud.section.support == SupportShape::sphere;
   k.with_gradients = gradients;
   Kokkos::parallel_for("efg::mls_shape_functions", Kokkos::RangePolicy<ExecSpace>(0, static_cast<int>(count)), k);
-  to_host(phi, out.phi);
-  if (gradients) to_host(grad, out.grad);
-  to_host(condition, out.condition);
-  status.resize(count);
-  Kokkos::deep_copy(Kokkos::View<int*, Kokkos::HostSpace, Kokkos::MemoryTraits<Kokkos::Unmanaged>>(status.data(), count),
-                    point_status);
+  out.neighbors.offsets = to_host(lists.offsets);
+  out.neighbors.particles = to_host(lists.particles);
+  out.phi = to_host(phi);
+  if (gradients) out.grad = to_host(grad);
+  out.condition = to_host(condition);
+  status = to_host(point_status);
 }
 
 template <int Dim>
@@ -84,7 +64,6 @@ int basis_size(Basis basis, int dimension) {
 ShapeFunctionValues evaluate_shape_functions(const ParticleCloud& cloud, const double* points, std::size_t count,
                                              bool gradients, const PointLabel& label) {
   ShapeFunctionValues out;
-  out.neighbors = find_neighbors(cloud, points, count);
   std::vector<int> status;
   switch (cloud.dimension) {
     case 1: dispatch_order<1>(cloud, points, count, gradients, out, status); break;

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "core/DeviceArrays.hpp"
 #include "core/Errors.hpp"
 #include "core/Log.hpp"
 #include "core/Progress.hpp"
@@ -49,10 +50,15 @@ std::vector<double> ExplicitDriver::acceleration(double time, double dt, const V
 }
 
 bool ExplicitDriver::finite(const RunState& state) const {
-  const auto d = state.d.getLocalViewHost(Tpetra::Access::ReadOnly);
-  const auto v = state.v.getLocalViewHost(Tpetra::Access::ReadOnly);
+  const auto d = state.d.getLocalViewDevice(Tpetra::Access::ReadOnly);
+  const auto v = state.v.getLocalViewDevice(Tpetra::Access::ReadOnly);
   int ok = 1;
-  for (std::size_t k = 0; k < d.extent(0) && ok; ++k) ok = std::isfinite(d(k, 0)) && std::isfinite(v(k, 0));
+  Kokkos::parallel_reduce(
+      "efg::finite_state", Kokkos::RangePolicy<ExecSpace>(0, d.extent(0)),
+      KOKKOS_LAMBDA(const std::size_t k, int& good) {
+        good = good && Kokkos::Experimental::isfinite(d(k, 0)) && Kokkos::Experimental::isfinite(v(k, 0));
+      },
+      Kokkos::Min<int>(ok));
   int all = 0;
   Teuchos::reduceAll(*state.d.getMap()->getComm(), Teuchos::REDUCE_MIN, ok, Teuchos::outArg(all));
   return all == 1;

@@ -1,29 +1,34 @@
 // Kokkos kernels of the solid operators over integration points: displacement gradient
 // H = sum_I u_I (x) B_I, stress and tangent from the material (physics/), then
-//   internal force  f_I,i      += w P_ij B_I,j
-//   tangent         K_(I,i)(J,k) += w B_I,j A_ijkl B_J,l
-//   strain energy   E          += w W(H)
-// One work item per integration point. Several points add to the same particle, so forces and
-// matrix entries are added atomically (race-free on threads and GPUs; a plain add on Serial).
-// The explicit and the implicit drivers call the same InternalForceKernel.
+//   internal force  f_I,i        = sum_q w_q P_ij(q) B_qI,j
+//   tangent         K_(I,i)(J,k) = sum_q w_q B_qI,j A_ijkl(q) B_qJ,l
+//   strain energy   E            = sum_q w_q W(H_q)
+// in two passes. Pass 1, one work item per point q, stores P(q) (and A(q) for the tangent).
+// Pass 2, one work item per particle I, *gathers* the entries of the points that reach I
+// (GatherIndex, ascending q) into I's force or I's matrix rows. Why a gather and not an atomic
+// scatter: no two work items write the same particle, so the kernels are race-free on threads
+// and GPUs without atomics (on a CPU an atomic add of a double is a compare-and-swap loop, paid
+// for every entry), and every sum runs in one fixed order, so forces and matrices are bitwise
+// identical on any number of threads (docs/threads.md). The explicit and
+// the implicit drivers call the same kernels.
 #pragma once
-
-#include <Kokkos_Core.hpp>
 
 #include <climits>
 
-#include "discretization/MlsKernel.hpp"
+#include "core/DeviceArrays.hpp"
+#include "discretization/GatherIndex.hpp"
 #include "materials/SolidMaterial.hpp"
 
 namespace efg {
 
 /// One part's integration points on the device. Entry k of point q's row couples the point to
-/// overlap node node(k) with gradient grad(k, :).
+/// overlap node node(k) with gradient grad(k, :); by_node lists every node's entries.
 struct DevicePoints {
   DeviceView<const double*> weight;  ///< quadrature weight x thickness (2D)
   DeviceView<const std::size_t*> offsets;
   DeviceView<const int*> node;
   DeviceView<const double**> grad;
+  GatherIndex by_node;
   physics::SolidMaterial material;
 };
 
@@ -41,71 +46,85 @@ KOKKOS_INLINE_FUNCTION void displacement_gradient(const DevicePoints& p, const D
   }
 }
 
-/// Stress P and tangent A at point q; false (and `inverted` lowered to q) when det F <= 0.
+/// Pass 1: P(q) into stress(q, i * Dim + j) and, when `tangent` has rows, A(q) into
+/// tangent(q, ((i * Dim + j) * Dim + k) * Dim + l). `inverted` receives the smallest point
+/// index with det F <= 0 (INT_MAX when none); that point's stress is left zero.
 template <int Dim, class DisplacementView>
-KOKKOS_INLINE_FUNCTION bool material_state(const DevicePoints& p, const DisplacementView& u, const int q,
-                                           const Kokkos::View<int, MemSpace>& inverted, double (&P)[Dim][Dim],
-                                           double (&A)[Dim][Dim][Dim][Dim]) {
-  double H[Dim][Dim];
-  displacement_gradient<Dim>(p, u, q, H);
-  if (physics::stress_and_tangent<Dim>(p.material, H, P, A)) return true;
-  Kokkos::atomic_fetch_min(&inverted(), q);
-  return false;
-}
-
-/// f (overlap dofs) += internal force; `inverted` receives the smallest point index with
-/// det F <= 0 (INT_MAX when none).
-template <int Dim, class DisplacementView, class ForceView>
-struct InternalForceKernel {
+struct PointStressKernel {
   DevicePoints p;
   DisplacementView u;
-  ForceView f;
+  DeviceView<double**> stress;
+  DeviceView<double**> tangent;
   Kokkos::View<int, MemSpace> inverted;
 
   KOKKOS_INLINE_FUNCTION void operator()(const int q) const {
-    double P[Dim][Dim], A[Dim][Dim][Dim][Dim];
-    if (!material_state<Dim>(p, u, q, inverted, P, A)) return;
-    const double w = p.weight(q);
-    for (std::size_t k = p.offsets(q); k < p.offsets(q + 1); ++k) {
-      const int n = p.node(k);
-      for (int i = 0; i < Dim; ++i) {
-        double fi = 0.0;
-        for (int j = 0; j < Dim; ++j) fi += P[i][j] * p.grad(k, j);
-        Kokkos::atomic_add(&f(n * Dim + i), w * fi);
-      }
+    double H[Dim][Dim], P[Dim][Dim], A[Dim][Dim][Dim][Dim];
+    displacement_gradient<Dim>(p, u, q, H);
+    const bool with_tangent = tangent.extent(0) > 0;
+    if (!physics::stress<Dim>(p.material, H, P, with_tangent ? A : nullptr)) {
+      Kokkos::atomic_fetch_min(&inverted(), q);
+      for (int m = 0; m < Dim * Dim; ++m) stress(q, m) = 0.0;
+      return;
     }
+    for (int i = 0; i < Dim; ++i)
+      for (int j = 0; j < Dim; ++j) stress(q, i * Dim + j) = P[i][j];
+    if (with_tangent)
+      for (int m = 0; m < Dim * Dim * Dim * Dim; ++m) tangent(q, m) = (&A[0][0][0][0])[m];
   }
 };
 
-/// Adds the tangent of every point into a local (overlap) KokkosSparse matrix whose column
-/// indices are overlap dof indices.
-template <int Dim, class DisplacementView, class LocalMatrix>
-struct TangentKernel {
+/// Pass 2 of the force: f(I) += sum over the entries k of I (point q) of w_q P(q) B_k.
+template <int Dim, class ForceView>
+struct NodalForceKernel {
   DevicePoints p;
-  DisplacementView u;
-  LocalMatrix K;
-  Kokkos::View<int, MemSpace> inverted;
+  DeviceView<const double**> stress;
+  ForceView f;
 
-  KOKKOS_INLINE_FUNCTION void operator()(const int q) const {
-    double P[Dim][Dim], A[Dim][Dim][Dim][Dim];
-    if (!material_state<Dim>(p, u, q, inverted, P, A)) return;
-    const double w = p.weight(q);
-    for (std::size_t a = p.offsets(q); a < p.offsets(q + 1); ++a) {
-      // G_ikl = sum_j B_a,j A_ijkl: the row block of particle a, reused for every column particle.
+  KOKKOS_INLINE_FUNCTION void operator()(const int n) const {
+    double fn[Dim];
+    for (int i = 0; i < Dim; ++i) fn[i] = f(n * Dim + i);
+    for (auto e = p.by_node.offsets(n); e < p.by_node.offsets(n + 1); ++e) {
+      const auto k = p.by_node.entry(e);
+      const int q = p.by_node.row_of_entry(k);
+      const double w = p.weight(q);
+      for (int i = 0; i < Dim; ++i) {
+        double fi = 0.0;
+        for (int j = 0; j < Dim; ++j) fi += stress(q, i * Dim + j) * p.grad(k, j);
+        fn[i] += w * fi;
+      }
+    }
+    for (int i = 0; i < Dim; ++i) f(n * Dim + i) = fn[i];
+  }
+};
+
+/// Pass 2 of the tangent: the rows of particle I of a local (overlap) KokkosSparse matrix whose
+/// column indices are overlap dof indices. Only this work item touches I's rows, so
+/// sumIntoValues runs without atomics.
+template <int Dim, class LocalMatrix>
+struct NodalTangentKernel {
+  DevicePoints p;
+  DeviceView<const double**> tangent;
+  LocalMatrix K;
+
+  KOKKOS_INLINE_FUNCTION void operator()(const int n) const {
+    for (auto e = p.by_node.offsets(n); e < p.by_node.offsets(n + 1); ++e) {
+      const auto a = p.by_node.entry(e);
+      const int q = p.by_node.row_of_entry(a);
+      const double w = p.weight(q);
+      // G_ikl = sum_j B_a,j A_ijkl: the row block of particle I, reused for every column particle.
       double G[Dim][Dim][Dim];
       for (int i = 0; i < Dim; ++i)
         for (int k = 0; k < Dim; ++k)
           for (int l = 0; l < Dim; ++l) {
             double s = 0.0;
-            for (int j = 0; j < Dim; ++j) s += p.grad(a, j) * A[i][j][k][l];
+            for (int j = 0; j < Dim; ++j) s += p.grad(a, j) * tangent(q, ((i * Dim + j) * Dim + k) * Dim + l);
             G[i][k][l] = s;
           }
-      // One sumIntoValues per row and chunk of 32 column particles: far fewer sorted-row searches
-      // than one call per entry block, with a fixed-size scratch that fits any execution space.
+      // One sumIntoValues per row and chunk of 32 column particles: far fewer sorted-row
+      // searches than one call per entry block, with a fixed-size scratch for any execution space.
       constexpr int chunk = 32;
       int cols[chunk * Dim];
       double vals[chunk * Dim];
-      const int row_node = p.node(a);
       for (int i = 0; i < Dim; ++i)
         for (std::size_t first = p.offsets(q); first < p.offsets(q + 1); first += chunk) {
           const std::size_t last = first + chunk < p.offsets(q + 1) ? first + chunk : p.offsets(q + 1);
@@ -119,7 +138,7 @@ struct TangentKernel {
               vals[m] = w * s;
             }
           }
-          K.sumIntoValues(row_node * Dim + i, cols, m, vals, false, true);
+          K.sumIntoValues(n * Dim + i, cols, m, vals, false, false);
         }
     }
   }

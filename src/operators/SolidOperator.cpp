@@ -10,15 +10,6 @@
 namespace efg {
 namespace {
 
-template <class T>
-DeviceView<T*> device_copy(const std::vector<T>& host, const std::string& name) {
-  DeviceView<T*> view(Kokkos::view_alloc(Kokkos::WithoutInitializing, name), host.size());
-  auto mirror = Kokkos::create_mirror_view(view);
-  for (std::size_t i = 0; i < host.size(); ++i) mirror(i) = host[i];
-  Kokkos::deep_copy(view, mirror);
-  return view;
-}
-
 auto column(const Vector& v) { return Kokkos::subview(v.getLocalViewDevice(Tpetra::Access::ReadOnly), Kokkos::ALL(), 0); }
 auto column(Vector& v) { return Kokkos::subview(v.getLocalViewDevice(Tpetra::Access::ReadWrite), Kokkos::ALL(), 0); }
 
@@ -38,6 +29,7 @@ physics::SolidMaterial solid_material(const MaterialSpec& material, const PartSp
 
 SolidOperator::SolidOperator(const Model& model) : dim_(model.mesh.dimension) {
   const auto& overlap = *model.maps.overlap_nodes;
+  overlap_nodes_ = overlap.getNodeNumElements();
   for (const auto& d : model.parts) {
     PartData p;
     p.name = d.part->name;
@@ -57,10 +49,11 @@ SolidOperator::SolidOperator(const Model& model) : dim_(model.mesh.dimension) {
     for (std::size_t k = 0; k < ip.gradients.particles.size(); ++k)
       for (int j = 0; j < dim_; ++j) grad_host(k, static_cast<std::size_t>(j)) = ip.gradients.values[k * static_cast<std::size_t>(dim_) + static_cast<std::size_t>(j)];
     Kokkos::deep_copy(grad, grad_host);
-    p.device.weight = device_copy(weight, "efg::solid weight");
-    p.device.offsets = device_copy(ip.gradients.offsets, "efg::solid offsets");
-    p.device.node = device_copy(node, "efg::solid node");
+    p.device.weight = to_device(weight, "efg::solid weight");
+    p.device.offsets = to_device(ip.gradients.offsets, "efg::solid offsets");
+    p.device.node = to_device(node, "efg::solid node");
     p.device.grad = grad;
+    p.device.by_node = gather_index(p.device.offsets, p.device.node, overlap_nodes_);
     p.device.material = solid_material(*model.scene.find_material(d.part->material), *d.part, dim_);
     p.points = ip.size();
     p.x = ip.x;
@@ -89,37 +82,43 @@ void SolidOperator::report_inversion(const PartData& part, int point) const {
   throw NumericalError(o.str());
 }
 
-template <class Launch>
-void SolidOperator::for_each_part(const Launch& launch) const {
+template <class Gather>
+void SolidOperator::for_each_part(const Vector& d_overlap, bool tangents, const Gather& gather) const {
+  const auto u = column(d_overlap);
+  const auto square = static_cast<std::size_t>(dim_ * dim_);
   for (const auto& p : parts_) {
+    if (p.stress.extent(0) != p.points) p.stress = DeviceView<double**>("efg::point stress", p.points, square);
+    if (tangents && p.tangent.extent(0) != p.points) p.tangent = DeviceView<double**>("efg::point tangent", p.points, square * square);
     Kokkos::View<int, MemSpace> inverted("efg::inverted");
     Kokkos::deep_copy(inverted, INT_MAX);
-    const auto policy = Kokkos::RangePolicy<ExecSpace>(0, static_cast<int>(p.points));
-    if (dim_ == 2) launch(std::integral_constant<int, 2>(), policy, p.device, inverted);
-    else launch(std::integral_constant<int, 3>(), policy, p.device, inverted);
+    const auto points = Kokkos::RangePolicy<ExecSpace>(0, static_cast<int>(p.points));
+    const DeviceView<double**> tangent = tangents ? p.tangent : DeviceView<double**>();
+    if (dim_ == 2) Kokkos::parallel_for("efg::point_stress", points, PointStressKernel<2, decltype(u)>{p.device, u, p.stress, tangent, inverted});
+    else Kokkos::parallel_for("efg::point_stress", points, PointStressKernel<3, decltype(u)>{p.device, u, p.stress, tangent, inverted});
     int bad = INT_MAX;
     Kokkos::deep_copy(bad, inverted);
     if (bad != INT_MAX) report_inversion(p, bad);
+    const auto nodes = Kokkos::RangePolicy<ExecSpace>(0, static_cast<int>(overlap_nodes_));
+    if (dim_ == 2) gather(std::integral_constant<int, 2>(), nodes, p);
+    else gather(std::integral_constant<int, 3>(), nodes, p);
   }
 }
 
 void SolidOperator::add_internal_force(const Vector& d_overlap, Vector& f_overlap) const {
   Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewCounter("efg: internal force"));
-  const auto u = column(d_overlap);
   auto f = column(f_overlap);
-  for_each_part([&](auto dim, const auto& policy, const DevicePoints& p, const auto& inverted) {
-    using Kernel = InternalForceKernel<decltype(dim)::value, decltype(u), decltype(f)>;
-    Kokkos::parallel_for("efg::internal_force", policy, Kernel{p, u, f, inverted});
+  for_each_part(d_overlap, false, [&](auto dim, const auto& nodes, const PartData& p) {
+    using Kernel = NodalForceKernel<decltype(dim)::value, decltype(f)>;
+    Kokkos::parallel_for("efg::internal_force", nodes, Kernel{p.device, p.stress, f});
   });
 }
 
 void SolidOperator::add_tangent(const Vector& d_overlap, FEMatrix& K) const {
   Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewCounter("efg: tangent assembly"));
-  const auto u = column(d_overlap);
   auto local = K.getLocalMatrixDevice();
-  for_each_part([&](auto dim, const auto& policy, const DevicePoints& p, const auto& inverted) {
-    using Kernel = TangentKernel<decltype(dim)::value, decltype(u), decltype(local)>;
-    Kokkos::parallel_for("efg::tangent", policy, Kernel{p, u, local, inverted});
+  for_each_part(d_overlap, true, [&](auto dim, const auto& nodes, const PartData& p) {
+    using Kernel = NodalTangentKernel<decltype(dim)::value, decltype(local)>;
+    Kokkos::parallel_for("efg::tangent", nodes, Kernel{p.device, p.tangent, local});
   });
 }
 

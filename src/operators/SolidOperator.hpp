@@ -43,6 +43,9 @@ class SolidOperator {
  private:
   struct PartData {
     DevicePoints device;
+    // Pass-1 scratch (SolidKernels.hpp): P per point always, A per point once a tangent is asked.
+    mutable DeviceView<double**> stress;
+    mutable DeviceView<double**> tangent;
     std::vector<int> overlap_node;
     std::size_t points = 0;
     std::string name;
@@ -50,11 +53,13 @@ class SolidOperator {
     std::vector<LocalIndex> node;   // the particle of each point (SCNI, nodal), -1 for Gauss
   };
   void report_inversion(const PartData& part, int point) const;
-  /// launch(dimension tag, policy, points, inverted) for every part, then reports inversions.
-  template <class Launch>
-  void for_each_part(const Launch& launch) const;
+  /// Pass 1 (stresses, and tangents when asked) for every part, reporting inverted points, then
+  /// gather(dimension tag, node policy, part) for every part.
+  template <class Gather>
+  void for_each_part(const Vector& d_overlap, bool tangents, const Gather& gather) const;
 
   int dim_;
+  std::size_t overlap_nodes_ = 0;
   std::vector<PartData> parts_;
 };
 

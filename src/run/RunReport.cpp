@@ -10,6 +10,8 @@
 
 #include "core/Errors.hpp"
 #include "core/RunSummary.hpp"
+#include "core/Threads.hpp"
+#include "core/DeviceArrays.hpp"
 #include "core/Version.hpp"
 
 namespace efg {
@@ -113,7 +115,8 @@ void write_run_report(const CommPtr& comm, const Model& model, const std::string
   std::ofstream o(json_path);
   o << "{\n  \"scene\": " << quoted(model.scene.file) << ",\n  \"title\": " << quoted(model.scene.title)
     << ",\n  \"efg_version\": " << quoted(std::string(version_string) + " (" + git_describe + ")")
-    << ",\n  \"results\": " << quoted(results_path) << ",\n  \"ranks\": " << comm->getSize()
+    << ",\n  \"results\": " << quoted(results_path) << ",\n  \"ranks\": " << comm->getSize() << ",\n  \"threads_per_rank\": " << threads_per_rank()
+    << ",\n  \"execution_space\": " << quoted(ExecSpace::name())
     << ",\n  \"particles\": " << model.mesh.node_count() << ",\n  \"dofs\": " << model.maps.owned_dofs->getGlobalNumElements()
     << ",\n  \"end_time\": " << number(state.time) << ",\n  \"phase_seconds\": {";
   for (std::size_t i = 0; i < global.size(); ++i)

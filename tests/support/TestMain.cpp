@@ -6,10 +6,13 @@
 #include <Teuchos_CommHelpers.hpp>
 #include <Tpetra_Core.hpp>
 
+#include <cstdlib>
+
 #include "core/Log.hpp"
 
 int main(int argc, char** argv) {
   ::testing::InitGoogleTest(&argc, argv);
+  setenv("OMP_PROC_BIND", "false", 0);  // unbound, as the OpenMP runtime already assumed; no Kokkos warning
   int library_argc = 1;
   Tpetra::ScopeGuard scope(&library_argc, &argv);
   const auto comm = Tpetra::getDefaultComm();

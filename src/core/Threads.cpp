@@ -1,0 +1,53 @@
+#include "core/Threads.hpp"
+
+#include <sched.h>
+
+#include <cstring>
+#include <string>
+
+#include "core/DeviceArrays.hpp"
+
+namespace efg {
+
+int threads_option(int argc, char** argv) {
+  for (int i = 1; i < argc; ++i) {
+    std::string value;
+    if (std::strcmp(argv[i], "--threads") == 0 && i + 1 < argc) value = argv[i + 1];
+    else if (std::strncmp(argv[i], "--threads=", 10) == 0) value = argv[i] + 10;
+    else continue;
+    try {
+      std::size_t used = 0;
+      const int n = std::stoi(value, &used);
+      return used == value.size() && n > 0 ? n : 0;
+    } catch (const std::exception&) {
+      return 0;
+    }
+  }
+  return 0;
+}
+
+int threads_per_rank() { return ExecSpace::concurrency(); }
+
+std::string execution_summary() {
+  const int n = threads_per_rank();
+  return std::string("Kokkos ") + ExecSpace::name() + ", " + std::to_string(n) + (n == 1 ? " thread" : " threads") +
+         " per rank";
+}
+
+std::vector<std::string> thread_warnings(int requested) {
+  std::vector<std::string> warnings;
+  const int n = threads_per_rank();
+  if (requested > n)
+    warnings.push_back("--threads " + std::to_string(requested) + " asked, but this build runs " + execution_summary() +
+                       " (Debian's Trilinos is Serial only; build against scripts/build_trilinos_openmp.sh for threads, "
+                       "docs/threads.md)");
+  cpu_set_t set;
+  CPU_ZERO(&set);
+  if (n > 1 && sched_getaffinity(0, sizeof set, &set) == 0 && CPU_COUNT(&set) < n)
+    warnings.push_back(std::to_string(n) + " threads per rank, but this process may run on " + std::to_string(CPU_COUNT(&set)) +
+                       " CPU(s) only: mpirun binds each rank to one core unless given --bind-to none or --map-by slot:PE=" +
+                       std::to_string(n));
+  return warnings;
+}
+
+}  // namespace efg

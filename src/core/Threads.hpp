@@ -1,0 +1,26 @@
+// Threads per MPI rank: the Kokkos execution space that efg's kernels and Tpetra run on, and
+// how many threads it has. Chosen by `efg run --threads N` (else OMP_NUM_THREADS, else the
+// backend's default) before Kokkos starts; reported in the run log and report (docs/threads.md).
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace efg {
+
+/// The value of `--threads N` (or `--threads=N`) among the raw arguments, 0 when absent or not a
+/// positive integer (the command-line parser then reports the error).
+int threads_option(int argc, char** argv);
+
+/// Threads per rank of the default execution space (1 for Serial).
+int threads_per_rank();
+
+/// "Kokkos OpenMP, 2 thread(s) per rank" or "Kokkos Serial, 1 thread per rank".
+std::string execution_summary();
+
+/// Warnings about the thread setup: more threads asked than the backend has (Serial build), or
+/// more threads than the CPUs this process may run on (mpirun binds each rank to one core unless
+/// told --bind-to none or --map-by slot:PE=N).
+std::vector<std::string> thread_warnings(int requested);
+
+}  // namespace efg

@@ -1,0 +1,62 @@
+// The Kokkos neighbour search against brute force: every particle whose support covers the point,
+// none else, each row ordered by global particle id; box and sphere supports in 2D and 3D.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "discretization/NeighborSearch.hpp"
+#include "support/Clouds.hpp"
+
+namespace efg {
+namespace {
+
+TEST(NeighborSearch, MatchesBruteForceOrderedByGlobalId) {
+  for (int dim : {2, 3})
+    for (auto shape : {SupportShape::box, SupportShape::sphere}) {
+      GeneratorSpec spec;
+      spec.dimension = dim;
+      spec.element = dim == 2 ? CellType::quad4 : CellType::hex8;
+      spec.cells = {9, 7, 5};
+      spec.upper = {1, 1, 1};
+      spec.perturbation = 0.3;
+      SectionSpec section;
+      section.dilation = {1.7};
+      section.support = shape;
+      auto cloud = test::mesh_cloud(generate_mesh(spec), section);
+      // Shuffle the global ids so that cloud order and id order differ.
+      std::reverse(cloud.mesh_node.begin(), cloud.mesh_node.end());
+      const auto points = test::random_points(dim, {-0.1, -0.1, -0.1}, {1.1, 1.1, 1.1}, 400, 11);
+      const auto lists = find_neighbors(cloud, points.data(), 400);
+      ASSERT_EQ(lists.point_count(), 400u);
+      for (std::size_t p = 0; p < 400; ++p) {
+        const double* x = points.data() + p * static_cast<std::size_t>(dim);
+        std::vector<LocalIndex> expected;
+        for (std::size_t i = 0; i < cloud.size(); ++i)
+          if (covers(shape == SupportShape::sphere, dim, cloud.x(i), cloud.a(i), x)) expected.push_back(static_cast<LocalIndex>(i));
+        std::sort(expected.begin(), expected.end(), [&](LocalIndex a, LocalIndex b) {
+          return cloud.mesh_node[static_cast<std::size_t>(a)] < cloud.mesh_node[static_cast<std::size_t>(b)];
+        });
+        const std::vector<LocalIndex> found(lists.particles.begin() + static_cast<std::ptrdiff_t>(lists.offsets[p]),
+                                            lists.particles.begin() + static_cast<std::ptrdiff_t>(lists.offsets[p + 1]));
+        ASSERT_EQ(found, expected) << "dim " << dim << " point " << p;
+      }
+    }
+}
+
+TEST(NeighborSearch, EmptyCloudAndNoPoints) {
+  ParticleCloud empty;
+  const double x[3] = {0, 0, 0};
+  const auto lists = find_neighbors(empty, x, 1);
+  EXPECT_EQ(lists.count(0), 0u);
+  SectionSpec section;
+  section.dilation = {1.5};
+  GeneratorSpec spec;
+  spec.dimension = 2;
+  spec.element = CellType::quad4;
+  spec.cells = {2, 2, 1};
+  const auto none = find_neighbors(test::mesh_cloud(generate_mesh(spec), section), x, 0);
+  EXPECT_EQ(none.point_count(), 0u);
+}
+
+}  // namespace
+}  // namespace efg
