@@ -1,7 +1,8 @@
 // Explicit step cost: wall time per particle-step and memory per particle for a 3D block of 1e4
 // to 1e5 particles (linear basis, SCNI, dilation 1.2 and 1.5), beside the bytes one step must
 // move (the memory-bandwidth floor). One step = one internal force evaluation (the dominant
-// cost: gather, stress, atomic scatter) plus the velocity-Verlet vector updates.
+// cost: displacement gradient and stress per point, then the per-particle gather of the
+// forces) plus the velocity-Verlet vector updates.
 //   efg_bench_explicit [--max-particles N]
 #include <Tpetra_Core.hpp>
 
@@ -52,10 +53,11 @@ int main(int argc, char** argv) {
       const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       double entries = 0;
       for (const auto& part : model.parts) entries += static_cast<double>(part.points.gradients.particles.size());
-      // Per entry: node id (4) + gradient (24) + gathered displacement (24) + atomic force
-      // read-modify-write (48); per point: weight and offsets (16); per dof: the five vector
-      // updates read and write (5 x 16 x 3 per particle).
-      const double bytes = entries * 100.0 + particles * (16.0 + 240.0);
+      // Per entry: node id (4) + gradient (24) + displacement (24) in the stress pass; entry
+      // index (8) + point index (4) + gradient (24) in the gather pass; per point: weight and
+      // offsets (16) and the stress written and read (144); per dof: the five vector updates
+      // read and write (5 x 16 x 3 per particle).
+      const double bytes = entries * 88.0 + particles * (160.0 + 240.0);
       const double per_step = seconds / steps;
       std::printf("%10.0f %8.1f %12.1f %14.1f %12.4f %14.3e %12.2f\n", particles, dilation, entries / particles,
                   1e9 * per_step / particles, static_cast<double>(rss_after - rss_before) / 1048576.0 / particles, bytes,

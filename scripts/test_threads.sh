@@ -13,7 +13,9 @@ start=$(date +%s)
 "$here/scripts/build.sh" --threads
 built=$(date +%s)
 echo "efg threaded tests: setup and builds took $((built - start)) s"
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMP_PROC_BIND=false
+# The MPI tests put up to 3 ranks x 2 threads on 2 cores: threads must sleep, not spin, when
+# they wait (OMP_WAIT_POLICY=passive), or those tests run many times slower (docs/threads.md).
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMP_PROC_BIND=false OMP_WAIT_POLICY=passive
 cd "${EFG_BUILD_DIR:-$here/build-openmp}"
 status=0
 for n in 1 2; do

@@ -1,9 +1,12 @@
 #include "core/Threads.hpp"
 
+#include <mpi.h>
 #include <sched.h>
 
 #include <cstring>
+#include <cstdlib>
 #include <string>
+#include <thread>
 
 #include "core/DeviceArrays.hpp"
 
@@ -47,6 +50,22 @@ std::vector<std::string> thread_warnings(int requested) {
     warnings.push_back(std::to_string(n) + " threads per rank, but this process may run on " + std::to_string(CPU_COUNT(&set)) +
                        " CPU(s) only: mpirun binds each rank to one core unless given --bind-to none or --map-by slot:PE=" +
                        std::to_string(n));
+  // Ranks sharing this node (MPI-3 shared-memory split) times threads against its CPUs.
+  int ranks_here = 1, initialized = 0;
+  MPI_Initialized(&initialized);
+  if (initialized) {
+    MPI_Comm node;
+    MPI_Comm_split_type(MPI_COMM_WORLD, MPI_COMM_TYPE_SHARED, 0, MPI_INFO_NULL, &node);
+    MPI_Comm_size(node, &ranks_here);
+    MPI_Comm_free(&node);
+  }
+  const auto cpus = static_cast<int>(std::thread::hardware_concurrency());
+  const char* wait = std::getenv("OMP_WAIT_POLICY");
+  const bool passive = wait && (std::string(wait) == "passive" || std::string(wait) == "PASSIVE");
+  if (n > 1 && cpus > 0 && ranks_here * n > cpus && !passive)
+    warnings.push_back(std::to_string(ranks_here) + " rank(s) x " + std::to_string(n) + " threads on " + std::to_string(cpus) +
+                       " CPUs: spinning OpenMP threads on shared cores can slow the run many times over; set "
+                       "OMP_WAIT_POLICY=passive or use fewer ranks or threads");
   return warnings;
 }
 

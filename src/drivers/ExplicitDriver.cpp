@@ -11,6 +11,7 @@
 #include "core/Log.hpp"
 #include "core/Progress.hpp"
 #include "parallel/Collective.hpp"
+#include "parallel/ReproducibleSum.hpp"
 
 namespace efg {
 
@@ -84,8 +85,8 @@ void ExplicitDriver::report_non_finite(const RunState& state, long long step) co
 
 void ExplicitDriver::account_energy(RunState& state, const Vector& delta_d) const {
   // Trapezoidal work of the external and wall forces over the step.
-  state.external_work += 0.5 * (f_ext_old_.dot(delta_d) + f_ext_.dot(delta_d));
-  state.wall_work += 0.5 * (f_wall_old_.dot(delta_d) + f_wall_.dot(delta_d));
+  state.external_work += 0.5 * (reproducible_dot(f_ext_old_, delta_d) + reproducible_dot(f_ext_, delta_d));
+  state.wall_work += 0.5 * (reproducible_dot(f_wall_old_, delta_d) + reproducible_dot(f_wall_, delta_d));
 }
 
 ExplicitSummary ExplicitDriver::run(RunState& state, const StateOutput& output) {
@@ -106,7 +107,7 @@ ExplicitSummary ExplicitDriver::run(RunState& state, const StateOutput& output) 
     state.kinetic = 0;
     Vector mv(mass_.getMap());
     mv.elementWiseMultiply(1.0, mass_, state.v, 0.0);
-    state.kinetic = 0.5 * mv.dot(state.v);
+    state.kinetic = 0.5 * reproducible_dot(mv, state.v);
     ops_.to_overlap(state.d, d_overlap_);
     const double mine = ops_.solid().strain_energy(d_overlap_);
     Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, mine, Teuchos::outArg(state.internal));

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "parallel/ReproducibleSum.hpp"
+
 namespace efg {
 
 StableTimeStep::StableTimeStep(const ModelOperators& ops, const Vector& mass_owned)
@@ -32,7 +34,7 @@ double StableTimeStep::estimate(const Vector& d_owned, int iterations) {
   const double scale = std::max(1e-12, 1e-7 * std::max(1.0, d_owned.normInf()));
   double lambda = 0;
   for (int it = 0; it < iterations; ++it) {
-    const double norm = v_.norm2();
+    const double norm = reproducible_norm2(v_);
     v_.scale(1.0 / norm);
     // w = M^-1/2 K M^-1/2 v with K x = (f(d + e x) - f(d)) / e.
     Tpetra::deep_copy(d_, d_owned);
@@ -42,7 +44,7 @@ double StableTimeStep::estimate(const Vector& d_owned, int iterations) {
     ops_.internal_force(d_, f1_);
     f1_.update(-1.0 / scale, f0_, 1.0 / scale);
     v_.elementWiseMultiply(1.0, inv_sqrt_mass_, f1_, 0.0);
-    lambda = v_.norm2();  // ||A v|| with ||v|| = 1 approaches the largest eigenvalue from below
+    lambda = reproducible_norm2(v_);  // ||A v|| with ||v|| = 1 approaches the largest eigenvalue from below
   }
   // Power iteration underestimates lambda_max: add 5 % so that dt_crit errs on the safe side.
   omega_ = std::sqrt(1.05 * lambda);

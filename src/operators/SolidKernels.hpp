@@ -144,16 +144,17 @@ struct NodalTangentKernel {
   }
 };
 
-/// Total strain energy of the points (inverted points count as +infinity).
+/// Strain energy w_q W(H_q) of point q (physics::strain_energy: 0 when inverted), summed by the caller
+/// in a thread-count-independent order (parallel/ReproducibleSum.hpp).
 template <int Dim, class DisplacementView>
-struct EnergyKernel {
+struct PointEnergy {
   DevicePoints p;
   DisplacementView u;
 
-  KOKKOS_INLINE_FUNCTION void operator()(const int q, double& sum) const {
+  KOKKOS_INLINE_FUNCTION double operator()(const std::size_t q) const {
     double H[Dim][Dim];
-    displacement_gradient<Dim>(p, u, q, H);
-    sum += p.weight(q) * physics::strain_energy<Dim>(p.material, H);
+    displacement_gradient<Dim>(p, u, static_cast<int>(q), H);
+    return p.weight(q) * physics::strain_energy<Dim>(p.material, H);
   }
 };
 

@@ -6,6 +6,7 @@
 
 #include "core/Errors.hpp"
 #include "materials/ElasticConstants.hpp"
+#include "parallel/ReproducibleSum.hpp"
 
 namespace efg {
 namespace {
@@ -126,14 +127,8 @@ double SolidOperator::strain_energy(const Vector& d_overlap) const {
   const auto u = column(d_overlap);
   double total = 0;
   for (const auto& p : parts_) {
-    double e = 0;
-    const auto n = static_cast<int>(p.points);
-    if (dim_ == 2) {
-      Kokkos::parallel_reduce("efg::energy_2d", Kokkos::RangePolicy<ExecSpace>(0, n), EnergyKernel<2, decltype(u)>{p.device, u}, e);
-    } else {
-      Kokkos::parallel_reduce("efg::energy_3d", Kokkos::RangePolicy<ExecSpace>(0, n), EnergyKernel<3, decltype(u)>{p.device, u}, e);
-    }
-    total += e;
+    if (dim_ == 2) total += block_sum(p.points, PointEnergy<2, decltype(u)>{p.device, u});
+    else total += block_sum(p.points, PointEnergy<3, decltype(u)>{p.device, u});
   }
   return total;
 }
