@@ -63,18 +63,8 @@ Outcome dispatch(const efg::CommPtr& comm, const std::vector<std::string>& args)
 int main(int argc, char** argv) {
   int code = 0;
   {
-    // Kokkos would claim efg's own --help: it sees only the thread count of --threads.
-    // OMP_PROC_BIND unset means unbound threads to the OpenMP runtime (it read the environment
-    // when it loaded); saying so explicitly keeps Kokkos from warning about it on every run.
-    setenv("OMP_PROC_BIND", "false", 0);
-    const int threads = efg::threads_option(argc, argv);
-    std::string threads_arg = "--kokkos-threads=" + std::to_string(threads);
-    std::vector<char*> library_args = {argv[0]};
-    if (threads > 0) library_args.push_back(threads_arg.data());
-    library_args.push_back(nullptr);
-    int library_argc = static_cast<int>(library_args.size()) - 1;
-    char** library_argv = library_args.data();
-    Tpetra::ScopeGuard scope(&library_argc, &library_argv);
+    efg::LibraryArguments library(argc, argv);  // Kokkos sees only the thread count
+    Tpetra::ScopeGuard scope(library.argc(), library.argv());
     const auto comm = Tpetra::getDefaultComm();
     efg::Log::set_rank(comm->getRank());
     const std::vector<std::string> args(argv + 1, argv + argc);

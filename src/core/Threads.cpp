@@ -29,6 +29,17 @@ int threads_option(int argc, char** argv) {
   return 0;
 }
 
+LibraryArguments::LibraryArguments(int argc, char** argv) {
+  setenv("OMP_PROC_BIND", "false", 0);
+  const int threads = threads_option(argc, argv);
+  threads_ = "--kokkos-threads=" + std::to_string(threads);
+  args_.push_back(argv[0]);
+  if (threads > 0) args_.push_back(threads_.data());
+  argc_ = static_cast<int>(args_.size());
+  args_.push_back(nullptr);  // argv is null-terminated (MPI_Init reads up to it)
+  argv_ = args_.data();
+}
+
 int threads_per_rank() { return ExecSpace::concurrency(); }
 
 std::string execution_summary() {

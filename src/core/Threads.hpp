@@ -12,6 +12,23 @@ namespace efg {
 /// positive integer (the command-line parser then reports the error).
 int threads_option(int argc, char** argv);
 
+/// The arguments MPI and Kokkos get (Tpetra::ScopeGuard): the program name and, when `--threads N`
+/// was given, `--kokkos-threads=N`; efg's own options (e.g. --help) stay away from Kokkos.
+/// OMP_PROC_BIND is set to false when unset: unbound threads, which the OpenMP runtime already
+/// assumed when it loaded, and no Kokkos warning on every run.
+class LibraryArguments {
+ public:
+  LibraryArguments(int argc, char** argv);
+  int* argc() { return &argc_; }
+  char*** argv() { return &argv_; }
+
+ private:
+  std::string threads_;
+  std::vector<char*> args_;
+  int argc_ = 0;
+  char** argv_ = nullptr;
+};
+
 /// Threads per rank of the default execution space (1 for Serial).
 int threads_per_rank();
 

@@ -22,7 +22,7 @@
 namespace efg {
 
 /// Outcome of one point's evaluation, written to MlsKernel::status.
-enum MlsStatus : int { mls_ok = 0, mls_too_few_neighbors = 1, mls_singular = 2 };
+enum MlsStatus : int { mls_ok = 0, mls_too_few_neighbors = 1, mls_singular = 2, mls_not_finite = 3 };
 
 template <int Dim, int Order>
 struct MlsKernel {
@@ -152,6 +152,14 @@ struct MlsKernel {
           grad(k, d) = dbp * w + bdp * w + bp * dw[d];
         }
     }
+    // Checked here, in parallel, rather than by the caller over every entry.
+    bool finite = true;
+    for (std::size_t k = begin; k < end; ++k) {
+      finite = finite && Kokkos::Experimental::isfinite(phi(k));
+      if (with_gradients)
+        for (int d = 0; d < Dim; ++d) finite = finite && Kokkos::Experimental::isfinite(grad(k, d));
+    }
+    if (!finite) status(point) = mls_not_finite;
   }
 };
 

@@ -74,12 +74,7 @@ ShapeFunctionValues evaluate_shape_functions(const ParticleCloud& cloud, const d
   const auto dim = static_cast<std::size_t>(cloud.dimension);
   const int needed = basis_size(cloud.section.basis, cloud.dimension);
   for (std::size_t p = 0; p < count; ++p) {
-    bool finite = true;
-    for (auto k = out.neighbors.offsets[p]; k < out.neighbors.offsets[p + 1]; ++k) {
-      finite = finite && std::isfinite(out.phi[k]);
-      if (gradients)
-        for (std::size_t d = 0; d < dim; ++d) finite = finite && std::isfinite(out.grad[k * dim + d]);
-    }
+    const bool finite = status[p] != mls_not_finite;
     const bool bad_condition = status[p] == mls_ok && !(out.condition[p] <= condition_error_threshold);
     if (status[p] == mls_ok && finite && !bad_condition) {
       if (out.condition[p] > condition_warning_threshold) ++out.ill_conditioned;
