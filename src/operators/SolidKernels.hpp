@@ -3,14 +3,16 @@
 //   internal force  f_I,i        = sum_q w_q P_ij(q) B_qI,j
 //   tangent         K_(I,i)(J,k) = sum_q w_q B_qI,j A_ijkl(q) B_qJ,l
 //   strain energy   E            = sum_q w_q W(H_q)
-// in two passes. Pass 1, one work item per point q, stores P(q) (and A(q) for the tangent).
-// Pass 2, one work item per particle I, *gathers* the entries of the points that reach I
-// (GatherIndex, ascending q) into I's force or I's matrix rows. Why a gather and not an atomic
+// in two passes. Pass 1, one work item per point q, stores the force terms of its entries in
+// particle order (force), or P(q) and A(q) (tangent). Pass 2, one work item per particle I,
+// *gathers* the contributions of the points that reach I (GatherIndex, ascending q) into I's
+// force or I's matrix rows. Why a gather and not an atomic
 // scatter: no two work items write the same particle, so the kernels are race-free on threads
 // and GPUs without atomics (on a CPU an atomic add of a double is a compare-and-swap loop, paid
 // for every entry), and every sum runs in one fixed order, so forces and matrices are bitwise
-// identical on any number of threads (docs/threads.md). The explicit and
-// the implicit drivers call the same kernels.
+// identical on any number of threads (docs/threads.md). On Kokkos::Serial the force takes a
+// one-pass scatter with the same bits (SerialForceKernel). The explicit and the implicit drivers
+// call the same kernels.
 #pragma once
 
 #include <climits>
@@ -29,6 +31,7 @@ struct DevicePoints {
   DeviceView<const int*> node;
   DeviceView<const double**> grad;
   GatherIndex by_node;
+  DeviceView<const std::size_t*> slot;  ///< position of entry k in by_node order (by_node.entry inverted)
   physics::SolidMaterial material;
 };
 
@@ -73,27 +76,78 @@ struct PointStressKernel {
   }
 };
 
-/// Pass 2 of the force: f(I) += sum over the entries k of I (point q) of w_q P(q) B_k.
+/// Pass 1 of the force: per point q, the force terms w_q P(q) B_k of its entries, written to
+/// their slots in particle order (each slot belongs to one entry: no two work items write the
+/// same place). `inverted` as in PointStressKernel; an inverted point writes zeros.
+template <int Dim, class DisplacementView>
+struct PointForceKernel {
+  DevicePoints p;
+  DisplacementView u;
+  DeviceView<double**> term;  // entries x Dim, in by_node order
+  Kokkos::View<int, MemSpace> inverted;
+
+  KOKKOS_INLINE_FUNCTION void operator()(const int q) const {
+    double H[Dim][Dim], P[Dim][Dim];
+    displacement_gradient<Dim>(p, u, q, H);
+    const bool ok = physics::stress<Dim>(p.material, H, P);
+    if (!ok) Kokkos::atomic_fetch_min(&inverted(), q);
+    const double w = p.weight(q);
+    for (std::size_t k = p.offsets(q); k < p.offsets(q + 1); ++k) {
+      const auto e = p.slot(k);
+      for (int i = 0; i < Dim; ++i) {
+        double fi = 0.0;
+        for (int j = 0; j < Dim; ++j) fi += P[i][j] * p.grad(k, j);
+        term(e, i) = ok ? w * fi : 0.0;
+      }
+    }
+  }
+};
+
+/// Pass 2 of the force: f(I) += the terms of I's slots, a contiguous stretch in ascending point
+/// order.
 template <int Dim, class ForceView>
 struct NodalForceKernel {
   DevicePoints p;
-  DeviceView<const double**> stress;
+  DeviceView<const double**> term;
   ForceView f;
 
   KOKKOS_INLINE_FUNCTION void operator()(const int n) const {
     double fn[Dim];
     for (int i = 0; i < Dim; ++i) fn[i] = f(n * Dim + i);
-    for (auto e = p.by_node.offsets(n); e < p.by_node.offsets(n + 1); ++e) {
-      const auto k = p.by_node.entry(e);
-      const int q = p.by_node.row_of_entry(k);
-      const double w = p.weight(q);
+    for (auto e = p.by_node.offsets(n); e < p.by_node.offsets(n + 1); ++e)
+      for (int i = 0; i < Dim; ++i) fn[i] += term(e, i);
+    for (int i = 0; i < Dim; ++i) f(n * Dim + i) = fn[i];
+  }
+};
+
+/// The force in one pass for an execution space with one thread (Kokkos::Serial): per point,
+/// stress then f(I) += w_q P(q) B_k for every entry. Each f(I) receives its terms in ascending q,
+/// the order NodalForceKernel gathers them in, with the same arithmetic, so both give the same
+/// bits; this one skips the stored stresses and the transposed reads (measured on Debian's
+/// Serial build, 105,300 particles: docs/threads.md). Never run on a space with threads.
+template <int Dim, class DisplacementView, class ForceView>
+struct SerialForceKernel {
+  DevicePoints p;
+  DisplacementView u;
+  ForceView f;
+  Kokkos::View<int, MemSpace> inverted;
+
+  KOKKOS_INLINE_FUNCTION void operator()(const int q) const {
+    double H[Dim][Dim], P[Dim][Dim];
+    displacement_gradient<Dim>(p, u, q, H);
+    if (!physics::stress<Dim>(p.material, H, P)) {
+      Kokkos::atomic_fetch_min(&inverted(), q);
+      return;
+    }
+    const double w = p.weight(q);
+    for (std::size_t k = p.offsets(q); k < p.offsets(q + 1); ++k) {
+      const int n = p.node(k);
       for (int i = 0; i < Dim; ++i) {
         double fi = 0.0;
-        for (int j = 0; j < Dim; ++j) fi += stress(q, i * Dim + j) * p.grad(k, j);
-        fn[i] += w * fi;
+        for (int j = 0; j < Dim; ++j) fi += P[i][j] * p.grad(k, j);
+        f(n * Dim + i) += w * fi;
       }
     }
-    for (int i = 0; i < Dim; ++i) f(n * Dim + i) = fn[i];
   }
 };
 

@@ -3,6 +3,7 @@
 #include <Teuchos_TimeMonitor.hpp>
 
 #include <sstream>
+#include <type_traits>
 
 #include "core/Errors.hpp"
 #include "materials/ElasticConstants.hpp"
@@ -55,6 +56,12 @@ SolidOperator::SolidOperator(const Model& model) : dim_(model.mesh.dimension) {
     p.device.node = to_device(node, "efg::solid node");
     p.device.grad = grad;
     p.device.by_node = gather_index(p.device.offsets, p.device.node, overlap_nodes_);
+    p.slot_count = ip.gradients.particles.size();
+    DeviceView<std::size_t*> slot(Kokkos::view_alloc(Kokkos::WithoutInitializing, "efg::solid slots"), p.slot_count);
+    const auto entry = p.device.by_node.entry;
+    Kokkos::parallel_for("efg::solid_slots", Kokkos::RangePolicy<ExecSpace>(0, p.slot_count),
+                         KOKKOS_LAMBDA(const std::size_t e) { slot(entry(e)) = e; });
+    p.device.slot = slot;
     p.device.material = solid_material(*model.scene.find_material(d.part->material), *d.part, dim_);
     p.points = ip.size();
     p.x = ip.x;
@@ -83,19 +90,14 @@ void SolidOperator::report_inversion(const PartData& part, int point) const {
   throw NumericalError(o.str());
 }
 
-template <class Gather>
-void SolidOperator::for_each_part(const Vector& d_overlap, bool tangents, const Gather& gather) const {
-  const auto u = column(d_overlap);
-  const auto square = static_cast<std::size_t>(dim_ * dim_);
+template <class Pass1, class Gather>
+void SolidOperator::for_each_part(const Pass1& pass1, const Gather& gather) const {
   for (const auto& p : parts_) {
-    if (p.stress.extent(0) != p.points) p.stress = DeviceView<double**>("efg::point stress", p.points, square);
-    if (tangents && p.tangent.extent(0) != p.points) p.tangent = DeviceView<double**>("efg::point tangent", p.points, square * square);
     Kokkos::View<int, MemSpace> inverted("efg::inverted");
     Kokkos::deep_copy(inverted, INT_MAX);
     const auto points = Kokkos::RangePolicy<ExecSpace>(0, static_cast<int>(p.points));
-    const DeviceView<double**> tangent = tangents ? p.tangent : DeviceView<double**>();
-    if (dim_ == 2) Kokkos::parallel_for("efg::point_stress", points, PointStressKernel<2, decltype(u)>{p.device, u, p.stress, tangent, inverted});
-    else Kokkos::parallel_for("efg::point_stress", points, PointStressKernel<3, decltype(u)>{p.device, u, p.stress, tangent, inverted});
+    if (dim_ == 2) pass1(std::integral_constant<int, 2>(), points, p, inverted);
+    else pass1(std::integral_constant<int, 3>(), points, p, inverted);
     int bad = INT_MAX;
     Kokkos::deep_copy(bad, inverted);
     if (bad != INT_MAX) report_inversion(p, bad);
@@ -107,20 +109,45 @@ void SolidOperator::for_each_part(const Vector& d_overlap, bool tangents, const 
 
 void SolidOperator::add_internal_force(const Vector& d_overlap, Vector& f_overlap) const {
   Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewCounter("efg: internal force"));
+  const auto u = column(d_overlap);
   auto f = column(f_overlap);
-  for_each_part(d_overlap, false, [&](auto dim, const auto& nodes, const PartData& p) {
-    using Kernel = NodalForceKernel<decltype(dim)::value, decltype(f)>;
-    Kokkos::parallel_for("efg::internal_force", nodes, Kernel{p.device, p.stress, f});
-  });
+  if constexpr (std::is_same_v<ExecSpace, Kokkos::Serial>) {
+    // One thread: the one-pass scatter gives the gather's bits, faster (SerialForceKernel).
+    for_each_part(
+        [&](auto dim, const auto& points, const PartData& p, const auto& inverted) {
+          using Kernel = SerialForceKernel<decltype(dim)::value, decltype(u), decltype(f)>;
+          Kokkos::parallel_for("efg::internal_force", points, Kernel{p.device, u, f, inverted});
+        },
+        [](auto, const auto&, const PartData&) {});
+    return;
+  }
+  for_each_part(
+      [&](auto dim, const auto& points, const PartData& p, const auto& inverted) {
+        constexpr int Dim = decltype(dim)::value;
+        if (p.term.extent(0) != p.slot_count) p.term = DeviceView<double**>("efg::force terms", p.slot_count, Dim);
+        Kokkos::parallel_for("efg::point_force", points, PointForceKernel<Dim, decltype(u)>{p.device, u, p.term, inverted});
+      },
+      [&](auto dim, const auto& nodes, const PartData& p) {
+        using Kernel = NodalForceKernel<decltype(dim)::value, decltype(f)>;
+        Kokkos::parallel_for("efg::internal_force", nodes, Kernel{p.device, p.term, f});
+      });
 }
 
 void SolidOperator::add_tangent(const Vector& d_overlap, FEMatrix& K) const {
   Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewCounter("efg: tangent assembly"));
+  const auto u = column(d_overlap);
   auto local = K.getLocalMatrixDevice();
-  for_each_part(d_overlap, true, [&](auto dim, const auto& nodes, const PartData& p) {
-    using Kernel = NodalTangentKernel<decltype(dim)::value, decltype(local)>;
-    Kokkos::parallel_for("efg::tangent", nodes, Kernel{p.device, p.tangent, local});
-  });
+  for_each_part(
+      [&](auto dim, const auto& points, const PartData& p, const auto& inverted) {
+        constexpr int Dim = decltype(dim)::value;
+        if (p.stress.extent(0) != p.points) p.stress = DeviceView<double**>("efg::point stress", p.points, Dim * Dim);
+        if (p.tangent.extent(0) != p.points) p.tangent = DeviceView<double**>("efg::point tangent", p.points, Dim * Dim * Dim * Dim);
+        Kokkos::parallel_for("efg::point_stress", points, PointStressKernel<Dim, decltype(u)>{p.device, u, p.stress, p.tangent, inverted});
+      },
+      [&](auto dim, const auto& nodes, const PartData& p) {
+        using Kernel = NodalTangentKernel<decltype(dim)::value, decltype(local)>;
+        Kokkos::parallel_for("efg::tangent", nodes, Kernel{p.device, p.tangent, local});
+      });
 }
 
 double SolidOperator::strain_energy(const Vector& d_overlap) const {

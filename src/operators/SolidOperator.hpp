@@ -43,20 +43,23 @@ class SolidOperator {
  private:
   struct PartData {
     DevicePoints device;
-    // Pass-1 scratch (SolidKernels.hpp): P per point always, A per point once a tangent is asked.
+    // Pass-1 scratch (SolidKernels.hpp), allocated on first use: force terms per entry, and P and
+    // A per point once a tangent is asked for.
+    mutable DeviceView<double**> term;
     mutable DeviceView<double**> stress;
     mutable DeviceView<double**> tangent;
     std::vector<int> overlap_node;
     std::size_t points = 0;
+    std::size_t slot_count = 0;     // entries of the point table
     std::string name;
     std::vector<double> x;          // point coordinates, for messages
     std::vector<LocalIndex> node;   // the particle of each point (SCNI, nodal), -1 for Gauss
   };
   void report_inversion(const PartData& part, int point) const;
-  /// Pass 1 (stresses, and tangents when asked) for every part, reporting inverted points, then
-  /// gather(dimension tag, node policy, part) for every part.
-  template <class Gather>
-  void for_each_part(const Vector& d_overlap, bool tangents, const Gather& gather) const;
+  /// For every part: pass1(dimension tag, point policy, part, inverted), inverted points
+  /// reported, then gather(dimension tag, node policy, part).
+  template <class Pass1, class Gather>
+  void for_each_part(const Pass1& pass1, const Gather& gather) const;
 
   int dim_;
   std::size_t overlap_nodes_ = 0;
