@@ -76,6 +76,15 @@ struct PointStressKernel {
   }
 };
 
+/// Component i of entry k's force term, w P_ij B_k,j: the one expression both force paths use,
+/// so that they add the same numbers.
+template <int Dim>
+KOKKOS_INLINE_FUNCTION double force_term(const DevicePoints& p, const double (&P)[Dim][Dim], double w, std::size_t k, int i) {
+  double fi = 0.0;
+  for (int j = 0; j < Dim; ++j) fi += P[i][j] * p.grad(k, j);
+  return w * fi;
+}
+
 /// Pass 1 of the force: per point q, the force terms w_q P(q) B_k of its entries, written to
 /// their slots in particle order (each slot belongs to one entry: no two work items write the
 /// same place). `inverted` as in PointStressKernel; an inverted point writes zeros.
@@ -94,11 +103,7 @@ struct PointForceKernel {
     const double w = p.weight(q);
     for (std::size_t k = p.offsets(q); k < p.offsets(q + 1); ++k) {
       const auto e = p.slot(k);
-      for (int i = 0; i < Dim; ++i) {
-        double fi = 0.0;
-        for (int j = 0; j < Dim; ++j) fi += P[i][j] * p.grad(k, j);
-        term(e, i) = ok ? w * fi : 0.0;
-      }
+      for (int i = 0; i < Dim; ++i) term(e, i) = ok ? force_term<Dim>(p, P, w, k, i) : 0.0;
     }
   }
 };
@@ -142,11 +147,7 @@ struct SerialForceKernel {
     const double w = p.weight(q);
     for (std::size_t k = p.offsets(q); k < p.offsets(q + 1); ++k) {
       const int n = p.node(k);
-      for (int i = 0; i < Dim; ++i) {
-        double fi = 0.0;
-        for (int j = 0; j < Dim; ++j) fi += P[i][j] * p.grad(k, j);
-        f(n * Dim + i) += w * fi;
-      }
+      for (int i = 0; i < Dim; ++i) f(n * Dim + i) += force_term<Dim>(p, P, w, k, i);
     }
   }
 };
