@@ -6,7 +6,7 @@
 # Debian packages when missing (apt-get update first when either is needed).
 efg_prepare_source_tools() {
   local need_update=0
-  if ! grep -rhsE '^(deb-src[[:space:]].*bookworm[[:space:]].*main|Types:.*deb-src)' \
+  if ! grep -rqsE '^(deb-src[[:space:]].*bookworm[[:space:]].*main|Types:.*deb-src)' \
     /etc/apt/sources.list /etc/apt/sources.list.d/ >/dev/null 2>&1; then
     say "enabling a deb-src stanza for Debian bookworm main"
     $sudo_cmd tee /etc/apt/sources.list.d/efg-deb-src.sources >/dev/null <<'SOURCES'
