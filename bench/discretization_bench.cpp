@@ -10,8 +10,8 @@
 #include <cstring>
 #include <string>
 
-#include "discretization/ParticleCloud.hpp"
 #include "core/Errors.hpp"
+#include "discretization/ParticleCloud.hpp"
 #include "discretization/ShapeFunctions.hpp"
 #include "mesh/MeshGenerator.hpp"
 
@@ -35,7 +35,9 @@ efg::ParticleCloud cloud_for(int dim, long long target, double dilation, efg::Ba
   return efg::make_particle_cloud(mesh, part, std::vector<int>(mesh.node_count(), 0), 0, {});
 }
 
-double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
 
 }  // namespace
 
@@ -46,8 +48,10 @@ int main(int argc, char** argv) {
   int library_argc = 1;
   Tpetra::ScopeGuard scope(&library_argc, &argv);
 
-  std::printf("# neighbour search: cell list, box support, dilation 1.5, query at every particle\n");
-  std::printf("%-4s %10s %14s %16s %12s %10s\n", "dim", "particles", "search_s", "us_per_particle", "neighbours", "vs_first");
+  std::printf(
+      "# neighbour search: cell list, box support, dilation 1.5, query at every particle\n");
+  std::printf("%-4s %10s %14s %16s %12s %10s\n", "dim", "particles", "search_s", "us_per_particle",
+              "neighbours", "vs_first");
   for (int dim : {3, 2}) {
     double first = 0;
     for (long long target = 10000; target <= max_particles; target *= 10) {
@@ -58,13 +62,16 @@ int main(int argc, char** argv) {
       const double per = 1e6 * t / static_cast<double>(cloud.size());
       if (first == 0) first = per;
       std::printf("%-4d %10zu %14.4f %16.4f %12.2f %10.2f\n", dim, cloud.size(), t, per,
-                  static_cast<double>(lists.particles.size()) / static_cast<double>(cloud.size()), per / first);
+                  static_cast<double>(lists.particles.size()) / static_cast<double>(cloud.size()),
+                  per / first);
     }
   }
 
-  std::printf("\n# MLS shape functions and gradients at every particle of a ~1e5-particle cloud (neighbour search excluded)\n");
-  std::printf("%-4s %-10s %8s %10s %12s %14s %16s\n", "dim", "basis", "dilation", "points", "neighbours", "evals_per_s",
-              "entries_per_s");
+  std::printf(
+      "\n# MLS shape functions and gradients at every particle of a ~1e5-particle cloud (neighbour "
+      "search excluded)\n");
+  std::printf("%-4s %-10s %8s %10s %12s %14s %16s\n", "dim", "basis", "dilation", "points",
+              "neighbours", "evals_per_s", "entries_per_s");
   for (int dim : {2, 3})
     for (auto basis : {efg::Basis::linear, efg::Basis::quadratic})
       for (double dilation : {1.2, 1.5, 2.0}) {
@@ -78,13 +85,15 @@ int main(int argc, char** argv) {
         try {
           v = efg::evaluate_shape_functions(cloud, cloud.position.data(), cloud.size(), true);
         } catch (const efg::NumericalError& e) {
-          std::printf("%-4d %-10s %8.1f   not usable: %.60s...\n", dim, basis == efg::Basis::linear ? "linear" : "quadratic",
-                      dilation, e.what() + std::strlen("shape functions: "));
+          std::printf("%-4d %-10s %8.1f   not usable: %.60s...\n", dim,
+                      basis == efg::Basis::linear ? "linear" : "quadratic", dilation,
+                      e.what() + std::strlen("shape functions: "));
           continue;
         }
         const double t = seconds_since(start) - search;
-        std::printf("%-4d %-10s %8.1f %10zu %12.2f %14.3e %16.3e\n", dim, basis == efg::Basis::linear ? "linear" : "quadratic",
-                    dilation, cloud.size(), static_cast<double>(lists.particles.size()) / static_cast<double>(cloud.size()),
+        std::printf("%-4d %-10s %8.1f %10zu %12.2f %14.3e %16.3e\n", dim,
+                    basis == efg::Basis::linear ? "linear" : "quadratic", dilation, cloud.size(),
+                    static_cast<double>(lists.particles.size()) / static_cast<double>(cloud.size()),
                     static_cast<double>(cloud.size()) / t, static_cast<double>(v.phi.size()) / t);
       }
   return 0;

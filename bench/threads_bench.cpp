@@ -1,8 +1,9 @@
 // Thread scaling of the three kernels that dominate a run, on a 3D block of >= 1e5 particles
 // (hex8 background cells, linear basis, SCNI, box supports of dilation 1.2, linear elastic):
 //   shape functions  neighbour search + MLS values and gradients at every owned particle
-//   explicit step    one internal force (stress pass + gather pass) plus the velocity-Verlet updates
-//   tangent          one assembly of the stiffness matrix (begin, kernels, end with the export)
+//   explicit step    one internal force (stress pass + gather pass) plus the velocity-Verlet
+//   updates tangent          one assembly of the stiffness matrix (begin, kernels, end with the
+//   export)
 // One process configuration per run: bench/threads.sh runs it with 1 thread, 2 threads and
 // 2 MPI ranks x 1 thread back to back and prints the ratios. Each time is the fastest of
 // --repeats runs, the slowest rank's. Checksums (|f|, |K|_F) show every configuration computes
@@ -61,20 +62,24 @@ int main(int argc, char** argv) {
 
   char text[1024];
   std::snprintf(text, sizeof text,
-                "mesh:\n  generate: {element: hex8, lower: [0, 0, 0], upper: [1, 1, 1], cells: [%d, %d, %d]}\n"
+                "mesh:\n  generate: {element: hex8, lower: [0, 0, 0], upper: [1, 1, 1], cells: "
+                "[%d, %d, %d]}\n"
                 "parts:\n  - {name: b, blocks: [block_1], material: m, section: {dilation: 1.2}}\n"
-                "materials:\n  - {name: m, model: linear_elastic, density: 1.0, youngs_modulus: 100, poissons_ratio: 0.3}\n",
+                "materials:\n  - {name: m, model: linear_elastic, density: 1.0, youngs_modulus: "
+                "100, poissons_ratio: 0.3}\n",
                 cells, cells, cells);
   const auto model = efg::build_model(comm, efg::parse_scene(text, "bench.yaml"));
   efg::ModelOperators ops(model);
   const auto& cloud = model.parts.at(0).cloud;
 
   const double shape = time_of(*comm, repeats, [&] {
-    const auto v = efg::evaluate_shape_functions(cloud, cloud.position.data(), cloud.owned_count, true);
+    const auto v =
+        efg::evaluate_shape_functions(cloud, cloud.position.data(), cloud.owned_count, true);
     if (v.phi.empty()) std::abort();
   });
 
-  efg::Vector d(model.maps.owned_dofs), v(model.maps.owned_dofs), a(model.maps.owned_dofs), f(model.maps.owned_dofs);
+  efg::Vector d(model.maps.owned_dofs), v(model.maps.owned_dofs), a(model.maps.owned_dofs),
+      f(model.maps.owned_dofs);
   {
     // A smooth displacement field, the same on any number of ranks and threads.
     auto dv = d.getLocalViewHost(Tpetra::Access::OverwriteAll);
@@ -86,15 +91,17 @@ int main(int argc, char** argv) {
   ops.internal_force(d, f);
   const double force_norm = efg::reproducible_norm2(f);
   const int steps = 10;
-  const double step = time_of(*comm, repeats, [&] {
-    for (int s = 0; s < steps; ++s) {
-      v.update(0.5e-9, a, 1.0);
-      d.update(1e-9, v, 1.0);
-      ops.internal_force(d, f);
-      a.update(-1.0, f, 0.0);
-      v.update(0.5e-9, a, 1.0);
-    }
-  }) / steps;
+  const double step = time_of(*comm, repeats,
+                              [&] {
+                                for (int s = 0; s < steps; ++s) {
+                                  v.update(0.5e-9, a, 1.0);
+                                  d.update(1e-9, v, 1.0);
+                                  ops.internal_force(d, f);
+                                  a.update(-1.0, f, 0.0);
+                                  v.update(0.5e-9, a, 1.0);
+                                }
+                              }) /
+                      steps;
 
   efg::CouplingGraph couplings(model.maps.overlap_nodes->getNodeNumElements());
   ops.solid().add_point_couplings(couplings);
@@ -111,11 +118,15 @@ int main(int argc, char** argv) {
   // rounding alone differed by 1.8e-10 between 1 and 2 ranks at this size).
   const auto values = K.getLocalMatrixDevice().values;
   const double tangent_norm = std::sqrt(efg::sum_over_ranks(
-      *comm, efg::block_sum(values.extent(0), KOKKOS_LAMBDA(const std::size_t k) { return values(k) * values(k); })));
+      *comm,
+      efg::block_sum(
+          values.extent(0), KOKKOS_LAMBDA(const std::size_t k) { return values(k) * values(k); })));
 
   if (comm->getRank() == 0)
-    std::printf("ranks %d threads %d particles %zu shape_s %.6e step_s %.6e tangent_s %.6e force_norm %.17g tangent_norm %.17g\n",
-                comm->getSize(), efg::threads_per_rank(), model.mesh.node_count(), shape, step, tangent, force_norm,
-                tangent_norm);
+    std::printf(
+        "ranks %d threads %d particles %zu shape_s %.6e step_s %.6e tangent_s %.6e force_norm "
+        "%.17g tangent_norm %.17g\n",
+        comm->getSize(), efg::threads_per_rank(), model.mesh.node_count(), shape, step, tangent,
+        force_norm, tangent_norm);
   return 0;
 }

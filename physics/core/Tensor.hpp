@@ -10,14 +10,16 @@ EFG_PHYSICS_FUNCTION double determinant(const double (&a)[Dim][Dim]) {
   if constexpr (Dim == 2) {
     return a[0][0] * a[1][1] - a[0][1] * a[1][0];
   } else {
-    return a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) - a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
+    return a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) -
+           a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
            a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
   }
 }
 
 /// inv = a^-1 given det = det(a) != 0.
 template <int Dim>
-EFG_PHYSICS_FUNCTION void inverse(const double (&a)[Dim][Dim], double det, double (&inv)[Dim][Dim]) {
+EFG_PHYSICS_FUNCTION void inverse(const double (&a)[Dim][Dim], double det,
+                                  double (&inv)[Dim][Dim]) {
   if constexpr (Dim == 2) {
     inv[0][0] = a[1][1] / det, inv[0][1] = -a[0][1] / det;
     inv[1][0] = -a[1][0] / det, inv[1][1] = a[0][0] / det;

@@ -7,8 +7,8 @@
 //     Finite Element Analysis", 2nd ed., eqs. 6.27-6.29 and 6.40):
 //     F = I + H, J = det F,  W = mu/2 (tr(F^T F) - 3) - mu ln J + lambda/2 (ln J)^2,
 //     P = mu (F - F^-T) + lambda ln J F^-T,
-//     A_iJkL = dP_iJ/dF_kL = mu d_ik d_JL + (mu - lambda ln J) F^-1_Li F^-1_Jk + lambda F^-1_Ji F^-1_Lk,
-//     Cauchy sigma = 1/J (mu (b - I) + lambda ln J I), b = F F^T.
+//     A_iJkL = dP_iJ/dF_kL = mu d_ik d_JL + (mu - lambda ln J) F^-1_Li F^-1_Jk + lambda F^-1_Ji
+//     F^-1_Lk, Cauchy sigma = 1/J (mu (b - I) + lambda ln J I), b = F F^T.
 //   In 2D plane strain F_33 = 1 (the 3D formulas restricted to the plane; tr(F^T F) gains 1).
 #pragma once
 
@@ -32,8 +32,8 @@ struct SolidMaterial {
 /// given. Returns false when det F <= 0 (finite strain): the point is inverted and P, A are
 /// undefined.
 template <int Dim>
-EFG_PHYSICS_FUNCTION bool stress(const SolidMaterial& m, const double (&H)[Dim][Dim], double (&P)[Dim][Dim],
-                                 double (*A)[Dim][Dim][Dim] = nullptr) {
+EFG_PHYSICS_FUNCTION bool stress(const SolidMaterial& m, const double (&H)[Dim][Dim],
+                                 double (&P)[Dim][Dim], double (*A)[Dim][Dim][Dim] = nullptr) {
   if (m.kind == MaterialKind::linear_elastic) {
     double tr = 0;
     for (int i = 0; i < Dim; ++i) tr += H[i][i];
@@ -43,7 +43,9 @@ EFG_PHYSICS_FUNCTION bool stress(const SolidMaterial& m, const double (&H)[Dim][
         if (A)
           for (int k = 0; k < Dim; ++k)
             for (int l = 0; l < Dim; ++l)
-              A[i][j][k][l] = (i == j && k == l ? m.lambda : 0.0) + m.mu * ((i == k && j == l ? 1.0 : 0.0) + (i == l && j == k ? 1.0 : 0.0));
+              A[i][j][k][l] =
+                  (i == j && k == l ? m.lambda : 0.0) +
+                  m.mu * ((i == k && j == l ? 1.0 : 0.0) + (i == l && j == k ? 1.0 : 0.0));
       }
     return true;
   }
@@ -60,7 +62,8 @@ EFG_PHYSICS_FUNCTION bool stress(const SolidMaterial& m, const double (&H)[Dim][
       if (A)
         for (int k = 0; k < Dim; ++k)
           for (int b = 0; b < Dim; ++b)
-            A[i][a][k][b] = (i == k && a == b ? m.mu : 0.0) + (m.mu - m.lambda * lnJ) * Finv[b][i] * Finv[a][k] +
+            A[i][a][k][b] = (i == k && a == b ? m.mu : 0.0) +
+                            (m.mu - m.lambda * lnJ) * Finv[b][i] * Finv[a][k] +
                             m.lambda * Finv[a][i] * Finv[b][k];
     }
   return true;
@@ -68,7 +71,8 @@ EFG_PHYSICS_FUNCTION bool stress(const SolidMaterial& m, const double (&H)[Dim][
 
 /// P and A = dP/dH (see stress).
 template <int Dim>
-EFG_PHYSICS_FUNCTION bool stress_and_tangent(const SolidMaterial& m, const double (&H)[Dim][Dim], double (&P)[Dim][Dim],
+EFG_PHYSICS_FUNCTION bool stress_and_tangent(const SolidMaterial& m, const double (&H)[Dim][Dim],
+                                             double (&P)[Dim][Dim],
                                              double (&A)[Dim][Dim][Dim][Dim]) {
   return stress<Dim>(m, H, P, A);
 }
@@ -100,14 +104,16 @@ EFG_PHYSICS_FUNCTION double strain_energy(const SolidMaterial& m, const double (
 
 /// Cauchy stress as a full 3 x 3 tensor (2D: sigma_zz from plane strain; 0 in plane stress).
 template <int Dim>
-EFG_PHYSICS_FUNCTION void cauchy_stress(const SolidMaterial& m, const double (&H)[Dim][Dim], double (&sigma)[3][3]) {
+EFG_PHYSICS_FUNCTION void cauchy_stress(const SolidMaterial& m, const double (&H)[Dim][Dim],
+                                        double (&sigma)[3][3]) {
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) sigma[i][j] = 0.0;
   if (m.kind == MaterialKind::linear_elastic) {
     double tr = 0;
     for (int i = 0; i < Dim; ++i) tr += H[i][i];
     for (int i = 0; i < Dim; ++i)
-      for (int j = 0; j < Dim; ++j) sigma[i][j] = m.mu * (H[i][j] + H[j][i]) + (i == j ? m.lambda * tr : 0.0);
+      for (int j = 0; j < Dim; ++j)
+        sigma[i][j] = m.mu * (H[i][j] + H[j][i]) + (i == j ? m.lambda * tr : 0.0);
     if (Dim == 2 && !m.plane_stress) sigma[2][2] = m.lambda * tr;
     return;
   }
@@ -128,7 +134,8 @@ EFG_PHYSICS_FUNCTION void cauchy_stress(const SolidMaterial& m, const double (&H
 /// von Mises equivalent of a 3 x 3 Cauchy stress.
 EFG_PHYSICS_FUNCTION double von_mises(const double (&s)[3][3]) {
   const double a = s[0][0] - s[1][1], b = s[1][1] - s[2][2], c = s[2][2] - s[0][0];
-  return sqrt(0.5 * (a * a + b * b + c * c) + 3.0 * (s[0][1] * s[0][1] + s[1][2] * s[1][2] + s[2][0] * s[2][0]));
+  return sqrt(0.5 * (a * a + b * b + c * c) +
+              3.0 * (s[0][1] * s[0][1] + s[1][2] * s[1][2] + s[2][0] * s[2][0]));
 }
 
 }  // namespace efg::physics

@@ -16,12 +16,15 @@ namespace efg {
 namespace {
 std::string mesh_summary(const BackgroundMesh& mesh) {
   std::ostringstream o;
-  o << "# mesh: " << mesh.source << "\n#   " << mesh.dimension << "D, " << mesh.node_count() << " nodes, "
-    << mesh.cell_count() << " cells\n";
+  o << "# mesh: " << mesh.source << "\n#   " << mesh.dimension << "D, " << mesh.node_count()
+    << " nodes, " << mesh.cell_count() << " cells\n";
   for (const auto& b : mesh.blocks)
-    o << "#   block '" << b.name << "' (id " << b.id << "): " << b.cell_count() << " " << cell_scene_name(b.type) << "\n";
-  for (const auto& s : mesh.node_sets) o << "#   node set '" << s.name << "': " << s.nodes.size() << " nodes\n";
-  for (const auto& s : mesh.side_sets) o << "#   side set '" << s.name << "': " << s.cells.size() << " sides\n";
+    o << "#   block '" << b.name << "' (id " << b.id << "): " << b.cell_count() << " "
+      << cell_scene_name(b.type) << "\n";
+  for (const auto& s : mesh.node_sets)
+    o << "#   node set '" << s.name << "': " << s.nodes.size() << " nodes\n";
+  for (const auto& s : mesh.side_sets)
+    o << "#   side set '" << s.name << "': " << s.cells.size() << " sides\n";
   return o.str();
 }
 }  // namespace
@@ -47,6 +50,8 @@ void mesh_command(const CommPtr& comm, const CommandLine& cl) {
   Log::info("mesh written to " + cl.mesh_output);
 }
 
-void schema_command() { std::cout << schema::markdown(scene_schema(), "efg scene files"); }
+void schema_command() {
+  std::cout << schema::markdown(scene_schema(), "efg scene files");
+}
 
 }  // namespace efg

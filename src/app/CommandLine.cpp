@@ -53,8 +53,10 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
     cl.command = "version";
     return cl;
   }
-  if (first != "run" && first != "check" && first != "mesh" && first != "schema" && first != "study")
-    usage_error("unknown command '" + first + "'; expected run, check, mesh, study, schema, --help or --version");
+  if (first != "run" && first != "check" && first != "mesh" && first != "schema" &&
+      first != "study")
+    usage_error("unknown command '" + first +
+                "'; expected run, check, mesh, study, schema, --help or --version");
   cl.command = first;
   std::vector<std::string> positional;
   for (std::size_t i = 1; i < args.size(); ++i) {
@@ -69,14 +71,18 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
         usage_error("option " + a + " expects a number, found '" + value + "'");
       }
       if (a == "--sweep") {
-        if (value.find('=') == std::string::npos) usage_error("--sweep expects KEY=V1,V2,..., found '" + value + "'");
+        if (value.find('=') == std::string::npos)
+          usage_error("--sweep expects KEY=V1,V2,..., found '" + value + "'");
         cl.sweeps.push_back(value);
       }
-      if (cl.levels < 1 || !(cl.factor > 1.0)) usage_error("--levels must be >= 1 and --factor > 1");
+      if (cl.levels < 1 || !(cl.factor > 1.0))
+        usage_error("--levels must be >= 1 and --factor > 1");
     } else if (a == "--threads" || a.rfind("--threads=", 0) == 0) {
-      if (cl.command == "schema") usage_error("option --threads belongs to run, check, mesh and study");
+      if (cl.command == "schema")
+        usage_error("option --threads belongs to run, check, mesh and study");
       const bool joined = a != "--threads";
-      if (!joined && i + 1 >= args.size()) usage_error("option --threads needs a number of threads per rank");
+      if (!joined && i + 1 >= args.size())
+        usage_error("option --threads needs a number of threads per rank");
       const std::string value = joined ? a.substr(10) : args[++i];
       std::size_t used = 0;
       try {
@@ -85,9 +91,11 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
         used = 0;
       }
       if (used != value.size() || cl.threads < 1)
-        usage_error("--threads expects a positive number of threads per rank, found '" + value + "'");
+        usage_error("--threads expects a positive number of threads per rank, found '" + value +
+                    "'");
     } else if (a == "-o" || a == "--output") {
-      if (cl.command != "run" && cl.command != "study") usage_error("option " + a + " belongs to 'efg run' and 'efg study'");
+      if (cl.command != "run" && cl.command != "study")
+        usage_error("option " + a + " belongs to 'efg run' and 'efg study'");
       if (i + 1 >= args.size()) usage_error("option " + a + " needs a folder");
       cl.output_dir = args[++i];
     } else if (!a.empty() && a[0] == '-') {
@@ -98,8 +106,11 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
   }
   const std::size_t expected = cl.command == "schema" ? 0 : (cl.command == "mesh" ? 2 : 1);
   if (positional.size() != expected) {
-    const std::string what = cl.command == "schema" ? "no arguments" : (cl.command == "mesh" ? "SCENE.yaml OUT.exo" : "one SCENE.yaml");
-    usage_error("'efg " + cl.command + "' expects " + what + ", got " + std::to_string(positional.size()) + " argument(s)");
+    const std::string what = cl.command == "schema"
+                                 ? "no arguments"
+                                 : (cl.command == "mesh" ? "SCENE.yaml OUT.exo" : "one SCENE.yaml");
+    usage_error("'efg " + cl.command + "' expects " + what + ", got " +
+                std::to_string(positional.size()) + " argument(s)");
   }
   if (expected >= 1) cl.scene = positional[0];
   if (expected == 2) cl.mesh_output = positional[1];

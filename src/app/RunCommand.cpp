@@ -1,6 +1,6 @@
+#include <yaml-cpp/yaml.h>
 #include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_TimeMonitor.hpp>
-#include <yaml-cpp/yaml.h>
 
 #include <chrono>
 #include <filesystem>
@@ -10,12 +10,12 @@
 #include "app/Commands.hpp"
 #include "core/Errors.hpp"
 #include "core/Log.hpp"
-#include "scene/SceneEcho.hpp"
 #include "core/RunSummary.hpp"
 #include "core/Threads.hpp"
 #include "core/Version.hpp"
 #include "run/Model.hpp"
 #include "run/Simulation.hpp"
+#include "scene/SceneEcho.hpp"
 
 namespace efg {
 namespace {
@@ -23,29 +23,34 @@ namespace {
 void log_model(const Model& model, const CommPtr& comm) {
   YAML::Emitter echo;
   echo << compact_for_echo(model.scene.resolved);
-  Log::info("efg " + std::string(version_string) + " (" + git_describe + "), " + std::to_string(comm->getSize()) +
-            " MPI rank(s) x " + execution_summary());
+  Log::info("efg " + std::string(version_string) + " (" + git_describe + "), " +
+            std::to_string(comm->getSize()) + " MPI rank(s) x " + execution_summary());
   Log::info("scene " + model.scene.file + " (resolved):\n" + echo.c_str());
   const auto owned = static_cast<long long>(model.partition.owned.size());
   long long min = 0, max = 0;
   Teuchos::reduceAll(*comm, Teuchos::REDUCE_MIN, owned, Teuchos::outArg(min));
   Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, owned, Teuchos::outArg(max));
-  Log::info("mesh: " + model.mesh.source + ": " + std::to_string(model.mesh.node_count()) + " particles, " +
-            std::to_string(model.mesh.cell_count()) + " background cells; particles per rank " + std::to_string(min) +
-            " to " + std::to_string(max));
+  Log::info("mesh: " + model.mesh.source + ": " + std::to_string(model.mesh.node_count()) +
+            " particles, " + std::to_string(model.mesh.cell_count()) +
+            " background cells; particles per rank " + std::to_string(min) + " to " +
+            std::to_string(max));
 }
 
 void log_discretization(const Model& model, const CommPtr& comm) {
   for (const auto& d : model.parts) {
-    long long local[4] = {static_cast<long long>(d.cloud.owned_count), static_cast<long long>(d.points.size()),
+    long long local[4] = {static_cast<long long>(d.cloud.owned_count),
+                          static_cast<long long>(d.points.size()),
                           static_cast<long long>(d.points.gradients.particles.size()),
                           static_cast<long long>(d.cloud.size() - d.cloud.owned_count)};
     long long global[4] = {0, 0, 0, 0};
     Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, 4, local, global);
-    const char* scheme = d.points.scheme == Integration::scni ? "SCNI" : d.points.scheme == Integration::nodal ? "direct nodal" : "Gauss";
+    const char* scheme = d.points.scheme == Integration::scni    ? "SCNI"
+                         : d.points.scheme == Integration::nodal ? "direct nodal"
+                                                                 : "Gauss";
     std::ostringstream o;
-    o << "part '" << d.part->name << "': " << global[0] << " particles, " << global[1] << " " << scheme
-      << " integration points, " << (global[1] > 0 ? static_cast<double>(global[2]) / static_cast<double>(global[1]) : 0.0)
+    o << "part '" << d.part->name << "': " << global[0] << " particles, " << global[1] << " "
+      << scheme << " integration points, "
+      << (global[1] > 0 ? static_cast<double>(global[2]) / static_cast<double>(global[1]) : 0.0)
       << " particles per point on average, " << global[3] << " ghost particles over all ranks";
     Log::info(o.str());
   }
@@ -60,15 +65,18 @@ void run_command(const CommPtr& comm, const CommandLine& cl) {
   for (const auto& w : thread_warnings(cl.threads)) Log::warning(w);
   log_discretization(model, comm);
   const std::filesystem::path path = std::filesystem::path(cl.output_dir) / model.scene.output.file;
-  if (comm->getRank() == 0 && path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
-  const double setup = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  if (comm->getRank() == 0 && path.has_parent_path())
+    std::filesystem::create_directories(path.parent_path());
+  const double setup =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   const auto outcome = run_stages(comm, model, path.string(), setup);
-  if (model.scene.stages.empty()) Log::info("model check: initial state written (no stages in the scene)");
+  if (model.scene.stages.empty())
+    Log::info("model check: initial state written (no stages in the scene)");
   Log::info("results: " + std::filesystem::absolute(path).lexically_normal().string());
   print_run_summary(comm);
   if (!outcome.failed_checks.empty())
-    throw VerificationError(std::to_string(outcome.failed_checks.size()) + " reference value(s) missed; first: " +
-                            outcome.failed_checks.front());
+    throw VerificationError(std::to_string(outcome.failed_checks.size()) +
+                            " reference value(s) missed; first: " + outcome.failed_checks.front());
 }
 
 }  // namespace efg

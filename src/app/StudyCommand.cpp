@@ -1,8 +1,8 @@
 // efg study: a refinement series of a scene (cells of a generated mesh multiplied by factor^level),
 // optionally swept over scene keys, each run in this process; one CSV row per run with its
 // errors and phase times, then plots by scripts/plot_study.py (matplotlib from Debian).
-#include <Teuchos_TimeMonitor.hpp>
 #include <yaml-cpp/yaml.h>
+#include <Teuchos_TimeMonitor.hpp>
 
 #include <chrono>
 #include <cmath>
@@ -52,7 +52,8 @@ YAML::Node node_at(YAML::Node root, const std::string& key, const std::string& f
     YAML::Node next;
     if (node.IsSequence()) {
       const auto index = static_cast<std::size_t>(std::atoi(p.c_str()));
-      if (index >= node.size()) throw InputError("command line: --sweep " + key + ": " + file + " has no entry " + p);
+      if (index >= node.size())
+        throw InputError("command line: --sweep " + key + ": " + file + " has no entry " + p);
       next = node[index];
     } else {
       if (!node[p]) node[p] = YAML::Node(YAML::NodeType::Map);
@@ -72,7 +73,9 @@ void study_command(const CommPtr& comm, const CommandLine& cl) {
   });
   const std::string text(bytes.begin(), bytes.end());
   const auto base = parse_scene(text, cl.scene);  // validates before anything runs
-  if (!base.generator) throw InputError(cl.scene + ": mesh: a study refines a generated mesh (mesh.generate), not a mesh file");
+  if (!base.generator)
+    throw InputError(cl.scene +
+                     ": mesh: a study refines a generated mesh (mesh.generate), not a mesh file");
   const auto sweeps = parse_sweeps(cl.sweeps);
   const std::filesystem::path dir(cl.output_dir);
   if (comm->getRank() == 0) std::filesystem::create_directories(dir);
@@ -105,14 +108,17 @@ void study_command(const CommPtr& comm, const CommandLine& cl) {
   for (const auto& combo : combos)
     for (int level = 0; level < cl.levels; ++level) {
       YAML::Node doc = YAML::Load(text);
-      for (std::size_t i = 0; i < sweeps.size(); ++i) node_at(doc, sweeps[i].key, cl.scene) = YAML::Load(combo[i]);
+      for (std::size_t i = 0; i < sweeps.size(); ++i)
+        node_at(doc, sweeps[i].key, cl.scene) = YAML::Load(combo[i]);
       const double scale = std::pow(cl.factor, level);
       auto cells = doc["mesh"]["generate"]["cells"];
       double h = 0;
       for (std::size_t d = 0; d < cells.size(); ++d) {
         const int n = static_cast<int>(std::lround(cells[d].as<int>() * scale));
         cells[d] = n;
-        h = std::max(h, (doc["mesh"]["generate"]["upper"][d].as<double>() - doc["mesh"]["generate"]["lower"][d].as<double>()) / n);
+        h = std::max(h, (doc["mesh"]["generate"]["upper"][d].as<double>() -
+                         doc["mesh"]["generate"]["lower"][d].as<double>()) /
+                            n);
       }
       YAML::Emitter out;
       out << doc;
@@ -123,15 +129,19 @@ void study_command(const CommPtr& comm, const CommandLine& cl) {
       Teuchos::TimeMonitor::zeroOutTimers();
       const auto started = std::chrono::steady_clock::now();
       const Model model = build_model(comm, parse_scene(out.c_str(), cl.scene));
-      const double setup = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+      const double setup =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
       const auto path = (dir / (label + ".e")).string();
       const auto outcome = run_stages(comm, model, path, setup);
-      const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+      const double total =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
       if (comm->getRank() != 0) continue;
       for (const auto& v : combo) csv << v << ",";
-      csv << std::setprecision(10) << level << "," << h << "," << model.maps.owned_dofs->getGlobalNumElements();
+      csv << std::setprecision(10) << level << "," << h << ","
+          << model.maps.owned_dofs->getGlobalNumElements();
       if (outcome.errors)
-        csv << "," << outcome.errors->l2_relative << "," << outcome.errors->energy_relative << "," << outcome.errors->max_nodal;
+        csv << "," << outcome.errors->l2_relative << "," << outcome.errors->energy_relative << ","
+            << outcome.errors->max_nodal;
       else
         csv << ",,,";
       for (const auto& phase : report_phases()) {
@@ -143,8 +153,9 @@ void study_command(const CommPtr& comm, const CommandLine& cl) {
   if (comm->getRank() != 0) return;
   csv.close();
   Log::info("study table: " + csv_path);
-  const std::string plot = std::string("/usr/bin/python3 '") + scripts_directory + "/plot_study.py' '" + csv_path + "' '" +
-                           (dir / base.name).string() + "'";
+  const std::string plot = std::string("/usr/bin/python3 '") + scripts_directory +
+                           "/plot_study.py' '" + csv_path + "' '" + (dir / base.name).string() +
+                           "'";
   if (std::system(plot.c_str()) != 0) throw std::runtime_error("plotting failed: " + plot);
   Log::info("study plots: " + (dir / (base.name + "_error_vs_dofs.png")).string() + ", " +
             (dir / (base.name + "_error_vs_time.png")).string());

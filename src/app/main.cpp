@@ -1,6 +1,6 @@
 // efg entry point: parses the command line, runs one command, maps failures to exit codes.
-#include <Tpetra_Core.hpp>
 #include <Teuchos_CommHelpers.hpp>
+#include <Tpetra_Core.hpp>
 
 #include <cstdlib>
 #include <iostream>
@@ -32,7 +32,8 @@ Outcome dispatch(const efg::CommPtr& comm, const std::vector<std::string>& args)
     if (cl.command == "help") {
       if (comm->getRank() == 0) std::cout << efg::help_text();
     } else if (cl.command == "version") {
-      if (comm->getRank() == 0) std::cout << "efg " << efg::version_string << " (" << efg::git_describe << ")\n";
+      if (comm->getRank() == 0)
+        std::cout << "efg " << efg::version_string << " (" << efg::git_describe << ")\n";
     } else if (cl.command == "run") {
       efg::run_command(comm, cl);
     } else if (cl.command == "check") {

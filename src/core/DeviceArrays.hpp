@@ -16,7 +16,8 @@ using MemSpace = ExecSpace::memory_space;
 template <class T>
 using DeviceView = Kokkos::View<T, Kokkos::LayoutRight, MemSpace>;
 template <class T>
-using HostUnmanaged = Kokkos::View<T, Kokkos::LayoutRight, Kokkos::HostSpace, Kokkos::MemoryTraits<Kokkos::Unmanaged>>;
+using HostUnmanaged = Kokkos::View<T, Kokkos::LayoutRight, Kokkos::HostSpace,
+                                   Kokkos::MemoryTraits<Kokkos::Unmanaged>>;
 
 /// A device copy of a host vector.
 template <class T>
@@ -28,7 +29,8 @@ DeviceView<T*> to_device(const std::vector<T>& host, const std::string& name) {
 
 /// A device copy of a row-major host matrix (rows x cols).
 template <class T>
-DeviceView<T**> to_device(const T* host, std::size_t rows, std::size_t cols, const std::string& name) {
+DeviceView<T**> to_device(const T* host, std::size_t rows, std::size_t cols,
+                          const std::string& name) {
   DeviceView<T**> view(Kokkos::view_alloc(Kokkos::WithoutInitializing, name), rows, cols);
   Kokkos::deep_copy(view, HostUnmanaged<const T**>(host, rows, cols));
   return view;
@@ -40,7 +42,8 @@ std::vector<typename View::non_const_value_type> to_host(const View& device) {
   using T = typename View::non_const_value_type;
   std::vector<T> host(device.size());
   Kokkos::deep_copy(HostUnmanaged<T*>(host.data(), host.size()),
-                    Kokkos::View<const T*, Kokkos::LayoutRight, typename View::memory_space>(device.data(), device.size()));
+                    Kokkos::View<const T*, Kokkos::LayoutRight, typename View::memory_space>(
+                        device.data(), device.size()));
   return host;
 }
 

@@ -7,7 +7,13 @@
 namespace efg {
 
 /// Exit codes documented in `efg --help` and the README.
-enum class ExitCode : int { success = 0, other = 1, bad_input = 2, numerical = 3, verification = 4 };
+enum class ExitCode : int {
+  success = 0,
+  other = 1,
+  bad_input = 2,
+  numerical = 3,
+  verification = 4
+};
 
 /// Bad user input: scene file, mesh file, command line. Carries the whole user-facing message,
 /// which already names the file, line and key path.

@@ -11,8 +11,11 @@
 namespace efg {
 
 Progress::Progress(std::string label, double total, bool interactive)
-    : label_(std::move(label)), total_(total), interactive_(interactive),
-      start_(std::chrono::steady_clock::now()), last_print_(start_) {}
+    : label_(std::move(label)),
+      total_(total),
+      interactive_(interactive),
+      start_(std::chrono::steady_clock::now()),
+      last_print_(start_) {}
 
 Progress::Progress(std::string label, double total)
     : Progress(std::move(label), total, Log::is_root() && isatty(fileno(stderr))) {}

@@ -19,7 +19,8 @@ class Progress {
   void finish();
 
   /// "stage 'impact':  45.0 %  t = 4.5e-04  elapsed 3.2 s  ETA 3.9 s" (exposed for tests).
-  static std::string format(const std::string& label, double done, double total, double elapsed_seconds);
+  static std::string format(const std::string& label, double done, double total,
+                            double elapsed_seconds);
 
  private:
   std::string label_;

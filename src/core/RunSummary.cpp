@@ -1,8 +1,8 @@
 #include "core/RunSummary.hpp"
 
+#include <sys/resource.h>
 #include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_TimeMonitor.hpp>
-#include <sys/resource.h>
 
 #include <iomanip>
 #include <iostream>
@@ -26,9 +26,10 @@ void print_run_summary(const CommPtr& comm) {
   Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, mine, Teuchos::outArg(max));
   Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, mine, Teuchos::outArg(sum));
   std::ostringstream memory;
-  memory << std::fixed << std::setprecision(1) << "memory high-water mark: " << static_cast<double>(max) / 1048576.0
-         << " MiB per rank (max), " << static_cast<double>(sum) / 1048576.0 << " MiB over " << comm->getSize()
-         << " rank(s)";
+  memory << std::fixed << std::setprecision(1)
+         << "memory high-water mark: " << static_cast<double>(max) / 1048576.0
+         << " MiB per rank (max), " << static_cast<double>(sum) / 1048576.0 << " MiB over "
+         << comm->getSize() << " rank(s)";
   Log::info(table.str());
   Log::info(memory.str());
 }

@@ -3,8 +3,8 @@
 #include <mpi.h>
 #include <sched.h>
 
-#include <cstring>
 #include <cstdlib>
+#include <cstring>
 #include <string>
 #include <thread>
 
@@ -15,9 +15,12 @@ namespace efg {
 int threads_option(int argc, char** argv) {
   for (int i = 1; i < argc; ++i) {
     std::string value;
-    if (std::strcmp(argv[i], "--threads") == 0 && i + 1 < argc) value = argv[i + 1];
-    else if (std::strncmp(argv[i], "--threads=", 10) == 0) value = argv[i] + 10;
-    else continue;
+    if (std::strcmp(argv[i], "--threads") == 0 && i + 1 < argc)
+      value = argv[i + 1];
+    else if (std::strncmp(argv[i], "--threads=", 10) == 0)
+      value = argv[i] + 10;
+    else
+      continue;
     try {
       std::size_t used = 0;
       const int n = std::stoi(value, &used);
@@ -40,26 +43,32 @@ LibraryArguments::LibraryArguments(int argc, char** argv) {
   argv_ = args_.data();
 }
 
-int threads_per_rank() { return ExecSpace::concurrency(); }
+int threads_per_rank() {
+  return ExecSpace::concurrency();
+}
 
 std::string execution_summary() {
   const int n = threads_per_rank();
-  return std::string("Kokkos ") + ExecSpace::name() + ", " + std::to_string(n) + (n == 1 ? " thread" : " threads") +
-         " per rank";
+  return std::string("Kokkos ") + ExecSpace::name() + ", " + std::to_string(n) +
+         (n == 1 ? " thread" : " threads") + " per rank";
 }
 
 std::vector<std::string> thread_warnings(int requested) {
   std::vector<std::string> warnings;
   const int n = threads_per_rank();
   if (requested > n)
-    warnings.push_back("--threads " + std::to_string(requested) + " asked, but this build runs " + execution_summary() +
-                       " (Debian's Trilinos is Serial only; build against scripts/build_trilinos_openmp.sh for threads, "
+    warnings.push_back("--threads " + std::to_string(requested) + " asked, but this build runs " +
+                       execution_summary() +
+                       " (Debian's Trilinos is Serial only; build against "
+                       "scripts/build_trilinos_openmp.sh for threads, "
                        "docs/threads.md)");
   cpu_set_t set;
   CPU_ZERO(&set);
   if (n > 1 && sched_getaffinity(0, sizeof set, &set) == 0 && CPU_COUNT(&set) < n)
-    warnings.push_back(std::to_string(n) + " threads per rank, but this process may run on " + std::to_string(CPU_COUNT(&set)) +
-                       " CPU(s) only: mpirun binds each rank to one core unless given --bind-to none or --map-by slot:PE=" +
+    warnings.push_back(std::to_string(n) + " threads per rank, but this process may run on " +
+                       std::to_string(CPU_COUNT(&set)) +
+                       " CPU(s) only: mpirun binds each rank to one core unless given --bind-to "
+                       "none or --map-by slot:PE=" +
                        std::to_string(n));
   // Ranks sharing this node (MPI-3 shared-memory split) times threads against its CPUs.
   int ranks_here = 1, initialized = 0;
@@ -74,9 +83,11 @@ std::vector<std::string> thread_warnings(int requested) {
   const char* wait = std::getenv("OMP_WAIT_POLICY");
   const bool passive = wait && (std::string(wait) == "passive" || std::string(wait) == "PASSIVE");
   if (n > 1 && cpus > 0 && ranks_here * n > cpus && !passive)
-    warnings.push_back(std::to_string(ranks_here) + " rank(s) x " + std::to_string(n) + " threads on " + std::to_string(cpus) +
-                       " CPUs: spinning OpenMP threads on shared cores can slow the run many times over; set "
-                       "OMP_WAIT_POLICY=passive or use fewer ranks or threads");
+    warnings.push_back(
+        std::to_string(ranks_here) + " rank(s) x " + std::to_string(n) + " threads on " +
+        std::to_string(cpus) +
+        " CPUs: spinning OpenMP threads on shared cores can slow the run many times over; set "
+        "OMP_WAIT_POLICY=passive or use fewer ranks or threads");
   return warnings;
 }
 

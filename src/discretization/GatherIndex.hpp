@@ -18,7 +18,7 @@ struct GatherIndex {
 /// Transposes the table (row offsets, column of every entry; columns in [0, column_count)).
 /// Counting and filling run as Kokkos kernels (integer atomics for the counts and slots), then
 /// every column's entries are sorted, so the result is the same on any execution space.
-GatherIndex gather_index(const DeviceView<const std::size_t*>& row_offsets, const DeviceView<const int*>& column,
-                         std::size_t column_count);
+GatherIndex gather_index(const DeviceView<const std::size_t*>& row_offsets,
+                         const DeviceView<const int*>& column, std::size_t column_count);
 
 }  // namespace efg

@@ -23,14 +23,18 @@ void add_nodal_points(const ParticleCloud& cloud, IntegrationPoints& ip) {
 }
 
 PointLabel node_label(const IntegrationPoints& ip, const char* what) {
-  return [&ip, what](std::size_t p) { return std::string(what) + " at particle " + std::to_string(ip.node[p] + 1); };
+  return [&ip, what](std::size_t p) {
+    return std::string(what) + " at particle " + std::to_string(ip.node[p] + 1);
+  };
 }
 
 void build_nodal(const BackgroundMesh& mesh, const ParticleCloud& cloud, IntegrationPoints& ip) {
   (void)mesh;
   add_nodal_points(cloud, ip);
-  ip.weight.assign(cloud.volume.begin(), cloud.volume.begin() + static_cast<std::ptrdiff_t>(cloud.owned_count));
-  const auto v = evaluate_shape_functions(cloud, ip.x.data(), ip.node.size(), true, node_label(ip, "nodal integration point"));
+  ip.weight.assign(cloud.volume.begin(),
+                   cloud.volume.begin() + static_cast<std::ptrdiff_t>(cloud.owned_count));
+  const auto v = evaluate_shape_functions(cloud, ip.x.data(), ip.node.size(), true,
+                                          node_label(ip, "nodal integration point"));
   ip.values = table_from(v, false, cloud.dimension);
   ip.gradients = table_from(v, true, cloud.dimension);
 }
@@ -39,7 +43,8 @@ void build_scni(const BackgroundMesh& mesh, const PartSpec& part, const Particle
                 const std::vector<int>& owner, int rank, IntegrationPoints& ip) {
   const auto dim = static_cast<std::size_t>(cloud.dimension);
   add_nodal_points(cloud, ip);
-  const auto values = evaluate_shape_functions(cloud, ip.x.data(), ip.node.size(), false, node_label(ip, "SCNI node"));
+  const auto values = evaluate_shape_functions(cloud, ip.x.data(), ip.node.size(), false,
+                                               node_label(ip, "SCNI node"));
   ip.values = table_from(values, false, cloud.dimension);
 
   std::vector<char> owned(mesh.node_count(), 0);
@@ -47,15 +52,20 @@ void build_scni(const BackgroundMesh& mesh, const PartSpec& part, const Particle
   const auto points = smoothing_points(mesh, part.blocks, owned);
   const auto volume = smoothing_domain_volumes(points, mesh.node_count(), cloud.dimension);
   std::vector<double> coords;
-  for (const auto& p : points) coords.insert(coords.end(), p.x.begin(), p.x.begin() + static_cast<std::ptrdiff_t>(dim));
-  const auto phi = evaluate_shape_functions(cloud, coords.data(), points.size(), false, [&](std::size_t p) {
-    return "SCNI smoothing point " + std::to_string(p) + " next to particle " + std::to_string(points[p].plus + 1);
-  });
+  for (const auto& p : points)
+    coords.insert(coords.end(), p.x.begin(), p.x.begin() + static_cast<std::ptrdiff_t>(dim));
+  const auto phi =
+      evaluate_shape_functions(cloud, coords.data(), points.size(), false, [&](std::size_t p) {
+        return "SCNI smoothing point " + std::to_string(p) + " next to particle " +
+               std::to_string(points[p].plus + 1);
+      });
 
   std::vector<LocalIndex> owned_index(mesh.node_count(), -1);
-  for (std::size_t l = 0; l < cloud.owned_count; ++l) owned_index[static_cast<std::size_t>(cloud.mesh_node[l])] = static_cast<LocalIndex>(l);
+  for (std::size_t l = 0; l < cloud.owned_count; ++l)
+    owned_index[static_cast<std::size_t>(cloud.mesh_node[l])] = static_cast<LocalIndex>(l);
   ip.gradients = smoothed_gradients(cloud, points, phi, volume, owned_index);
-  for (std::size_t l = 0; l < cloud.owned_count; ++l) ip.weight.push_back(volume[static_cast<std::size_t>(cloud.mesh_node[l])]);
+  for (std::size_t l = 0; l < cloud.owned_count; ++l)
+    ip.weight.push_back(volume[static_cast<std::size_t>(cloud.mesh_node[l])]);
 }
 
 void build_gauss(const BackgroundMesh& mesh, const PartSpec& part, const ParticleCloud& cloud,
@@ -64,7 +74,8 @@ void build_gauss(const BackgroundMesh& mesh, const PartSpec& part, const Particl
   std::vector<std::size_t> cell_of_point;
   std::size_t global_cell = 0;
   for (const auto& b : mesh.blocks) {
-    const bool in_part = std::find(part.blocks.begin(), part.blocks.end(), b.name) != part.blocks.end();
+    const bool in_part =
+        std::find(part.blocks.begin(), part.blocks.end(), b.name) != part.blocks.end();
     const auto npc = static_cast<std::size_t>(cell_node_count(b.type));
     const auto rule = reference_rule(b.type, part.section.gauss_order);
     std::vector<double> x(npc * dim);
@@ -73,7 +84,8 @@ void build_gauss(const BackgroundMesh& mesh, const PartSpec& part, const Particl
       const auto* node = &b.connectivity[c * npc];
       if (owner[static_cast<std::size_t>(*std::min_element(node, node + npc))] != rank) continue;
       for (std::size_t a = 0; a < npc; ++a)
-        for (std::size_t d = 0; d < dim; ++d) x[a * dim + d] = mesh.coordinates[static_cast<std::size_t>(node[a]) * dim + d];
+        for (std::size_t d = 0; d < dim; ++d)
+          x[a * dim + d] = mesh.coordinates[static_cast<std::size_t>(node[a]) * dim + d];
       for (std::size_t q = 0; q < rule.weight.size(); ++q) {
         double point[3];
         const double det = map_to_cell(b.type, x.data(), &rule.xi[q * dim], point);
@@ -84,9 +96,9 @@ void build_gauss(const BackgroundMesh& mesh, const PartSpec& part, const Particl
       }
     }
   }
-  const auto v = evaluate_shape_functions(cloud, ip.x.data(), ip.weight.size(), true, [&](std::size_t p) {
-    return "Gauss point of cell " + std::to_string(cell_of_point[p] + 1);
-  });
+  const auto v = evaluate_shape_functions(
+      cloud, ip.x.data(), ip.weight.size(), true,
+      [&](std::size_t p) { return "Gauss point of cell " + std::to_string(cell_of_point[p] + 1); });
   ip.values = table_from(v, false, cloud.dimension);
   ip.gradients = table_from(v, true, cloud.dimension);
 }
@@ -102,15 +114,22 @@ CsrTable table_from(const ShapeFunctionValues& v, bool gradients, int dim) {
   return t;
 }
 
-IntegrationPoints integrate_part(const BackgroundMesh& mesh, const PartSpec& part, const ParticleCloud& cloud,
-                                 const std::vector<int>& owner, int rank) {
+IntegrationPoints integrate_part(const BackgroundMesh& mesh, const PartSpec& part,
+                                 const ParticleCloud& cloud, const std::vector<int>& owner,
+                                 int rank) {
   IntegrationPoints ip;
   ip.dimension = cloud.dimension;
   ip.scheme = part.section.integration;
   switch (part.section.integration) {
-    case Integration::scni: build_scni(mesh, part, cloud, owner, rank, ip); break;
-    case Integration::nodal: build_nodal(mesh, cloud, ip); break;
-    case Integration::gauss: build_gauss(mesh, part, cloud, owner, rank, ip); break;
+    case Integration::scni:
+      build_scni(mesh, part, cloud, owner, rank, ip);
+      break;
+    case Integration::nodal:
+      build_nodal(mesh, cloud, ip);
+      break;
+    case Integration::gauss:
+      build_gauss(mesh, part, cloud, owner, rank, ip);
+      break;
   }
   return ip;
 }
@@ -122,7 +141,8 @@ double ghost_radius(const BackgroundMesh& mesh, const PartSpec& part) {
   for (std::size_t n = 0; n < mesh.node_count(); ++n) {
     double r2 = 0;
     for (std::size_t d = 0; d < dim; ++d) r2 += a[n * dim + d] * a[n * dim + d];
-    reach = std::max(reach, part.section.support == SupportShape::sphere ? a[n * dim] : std::sqrt(r2));
+    reach =
+        std::max(reach, part.section.support == SupportShape::sphere ? a[n * dim] : std::sqrt(r2));
   }
   double diameter = 0;
   for (const auto& b : mesh.blocks) {
@@ -133,8 +153,9 @@ double ghost_radius(const BackgroundMesh& mesh, const PartSpec& part) {
         for (std::size_t j = i + 1; j < npc; ++j) {
           double d2 = 0;
           for (std::size_t d = 0; d < dim; ++d) {
-            const double dx = mesh.coordinates[static_cast<std::size_t>(b.connectivity[c * npc + i]) * dim + d] -
-                              mesh.coordinates[static_cast<std::size_t>(b.connectivity[c * npc + j]) * dim + d];
+            const double dx =
+                mesh.coordinates[static_cast<std::size_t>(b.connectivity[c * npc + i]) * dim + d] -
+                mesh.coordinates[static_cast<std::size_t>(b.connectivity[c * npc + j]) * dim + d];
             d2 += dx * dx;
           }
           diameter = std::max(diameter, std::sqrt(d2));

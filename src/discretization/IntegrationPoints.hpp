@@ -15,9 +15,9 @@ namespace efg {
 /// Per-point rows of (particle, value[width]) entries.
 struct CsrTable {
   int width = 1;
-  std::vector<std::size_t> offsets;  ///< size points + 1
-  std::vector<LocalIndex> particles; ///< cloud indices, ascending global id within a row
-  std::vector<double> values;        ///< width per entry
+  std::vector<std::size_t> offsets;   ///< size points + 1
+  std::vector<LocalIndex> particles;  ///< cloud indices, ascending global id within a row
+  std::vector<double> values;         ///< width per entry
 
   std::size_t rows() const { return offsets.empty() ? 0 : offsets.size() - 1; }
 };
@@ -25,11 +25,11 @@ struct CsrTable {
 struct IntegrationPoints {
   int dimension = 3;
   Integration scheme = Integration::scni;
-  std::vector<double> x;            ///< dimension per point (reference configuration)
-  std::vector<double> weight;       ///< volume represented by the point
-  std::vector<LocalIndex> node;     ///< SCNI and nodal: the mesh node of the point; Gauss: -1
-  CsrTable values;                  ///< phi_I at the point
-  CsrTable gradients;               ///< grad phi_I (SCNI: smoothed B~_I), dimension per entry
+  std::vector<double> x;         ///< dimension per point (reference configuration)
+  std::vector<double> weight;    ///< volume represented by the point
+  std::vector<LocalIndex> node;  ///< SCNI and nodal: the mesh node of the point; Gauss: -1
+  CsrTable values;               ///< phi_I at the point
+  CsrTable gradients;            ///< grad phi_I (SCNI: smoothed B~_I), dimension per entry
 
   std::size_t size() const { return weight.size(); }
 };
@@ -41,8 +41,9 @@ CsrTable table_from(const ShapeFunctionValues& v, bool gradients, int dim);
 /// Builds the integration points of the cells of `part` that this rank owns (SCNI and nodal:
 /// owned particles; Gauss: cells whose lowest node is owned), with shape functions from `cloud`
 /// (owned and ghost particles). `owner` is the owning rank of every mesh node.
-IntegrationPoints integrate_part(const BackgroundMesh& mesh, const PartSpec& part, const ParticleCloud& cloud,
-                                 const std::vector<int>& owner, int rank);
+IntegrationPoints integrate_part(const BackgroundMesh& mesh, const PartSpec& part,
+                                 const ParticleCloud& cloud, const std::vector<int>& owner,
+                                 int rank);
 
 /// Distance from an owned node within which every particle that can reach one of this rank's
 /// integration points lies: the largest support reach plus the largest cell diameter of the part.

@@ -31,7 +31,8 @@ KOKKOS_INLINE_FUNCTION KernelValue kernel_value(KernelShape shape, double r) {
   switch (shape) {
     case KernelShape::cubic_spline:
       if (r <= 0.5) return {2.0 / 3.0 - 4.0 * r * r + 4.0 * r * r * r, -8.0 * r + 12.0 * r * r};
-      return {4.0 / 3.0 - 4.0 * r + 4.0 * r * r - 4.0 / 3.0 * r * r * r, -4.0 + 8.0 * r - 4.0 * r * r};
+      return {4.0 / 3.0 - 4.0 * r + 4.0 * r * r - 4.0 / 3.0 * r * r * r,
+              -4.0 + 8.0 * r - 4.0 * r * r};
     case KernelShape::quartic_spline:
       return {1.0 - 6.0 * r * r + 8.0 * r * r * r - 3.0 * r * r * r * r,
               -12.0 * r + 24.0 * r * r - 12.0 * r * r * r};

@@ -22,7 +22,12 @@
 namespace efg {
 
 /// Outcome of one point's evaluation, written to MlsKernel::status.
-enum MlsStatus : int { mls_ok = 0, mls_too_few_neighbors = 1, mls_singular = 2, mls_not_finite = 3 };
+enum MlsStatus : int {
+  mls_ok = 0,
+  mls_too_few_neighbors = 1,
+  mls_singular = 2,
+  mls_not_finite = 3
+};
 
 template <int Dim, int Order>
 struct MlsKernel {
@@ -34,10 +39,10 @@ struct MlsKernel {
   DeviceView<const double**> support;    // particles x Dim, support half-widths
   DeviceView<const std::size_t*> offsets;
   DeviceView<const int*> neighbors;
-  DeviceView<double*> phi;               // per neighbour entry
-  DeviceView<double**> grad;             // per neighbour entry x Dim (unused without gradients)
-  DeviceView<double*> condition;         // per point: 1-norm condition number of A
-  DeviceView<int*> status;               // per point: MlsStatus
+  DeviceView<double*> phi;        // per neighbour entry
+  DeviceView<double**> grad;      // per neighbour entry x Dim (unused without gradients)
+  DeviceView<double*> condition;  // per point: 1-norm condition number of A
+  DeviceView<int*> status;        // per point: MlsStatus
   KernelShape kernel = KernelShape::cubic_spline;
   bool sphere = false;
   bool with_gradients = true;
@@ -51,7 +56,8 @@ struct MlsKernel {
       const double r = Kokkos::Experimental::sqrt(r2) / a;
       const auto k = kernel_value(kernel, r);
       w = k.w;
-      for (int d = 0; d < Dim; ++d) dw[d] = r > 0 ? k.dw_dr * (x[d] - particles(j, d)) / (r * a * a) : 0.0;
+      for (int d = 0; d < Dim; ++d)
+        dw[d] = r > 0 ? k.dw_dr * (x[d] - particles(j, d)) / (r * a * a) : 0.0;
       return;
     }
     double value[Dim], slope[Dim];
@@ -71,7 +77,8 @@ struct MlsKernel {
     }
   }
 
-  KOKKOS_INLINE_FUNCTION void basis_at(int j, const double* x, double s, double* p, double (*dp)[N]) const {
+  KOKKOS_INLINE_FUNCTION void basis_at(int j, const double* x, double s, double* p,
+                                       double (*dp)[N]) const {
     double xi[Dim];
     for (int d = 0; d < Dim; ++d) xi[d] = (particles(j, d) - x[d]) / s;
     Basis::values(xi, p);
@@ -108,7 +115,8 @@ struct MlsKernel {
         for (int n = 0; n < N; ++n) {
           A[m][n] += w * p[m] * p[n];
           if (with_gradients)
-            for (int d = 0; d < Dim; ++d) dA[d][m][n] += dw[d] * p[m] * p[n] + w * (dp[d][m] * p[n] + p[m] * dp[d][n]);
+            for (int d = 0; d < Dim; ++d)
+              dA[d][m][n] += dw[d] * p[m] * p[n] + w * (dp[d][m] * p[n] + p[m] * dp[d][n]);
         }
     }
     double Ainv[N][N];

@@ -78,7 +78,8 @@ DeviceNeighborLists find_neighbors(const ParticleCloud& cloud, const DeviceCloud
   search.cloud = device;
   search.points = points;
   using Range = Kokkos::RangePolicy<ExecSpace>;
-  search.count = DeviceView<std::size_t*>(Kokkos::view_alloc(Kokkos::WithoutInitializing, "efg::neighbor count"), count);
+  search.count = DeviceView<std::size_t*>(
+      Kokkos::view_alloc(Kokkos::WithoutInitializing, "efg::neighbor count"), count);
   Kokkos::parallel_for("efg::neighbor_count", Range(0, count), search);
   const auto counts = search.count;
   const auto offsets = lists.offsets;
@@ -90,7 +91,8 @@ DeviceNeighborLists find_neighbors(const ParticleCloud& cloud, const DeviceCloud
         if (final) offsets(p + 1) = running;
       },
       total);
-  lists.particles = DeviceView<int*>(Kokkos::view_alloc(Kokkos::WithoutInitializing, "efg::neighbors"), total);
+  lists.particles =
+      DeviceView<int*>(Kokkos::view_alloc(Kokkos::WithoutInitializing, "efg::neighbors"), total);
   search.count = {};
   search.offsets = lists.offsets;
   search.rows = lists.particles;
@@ -99,8 +101,9 @@ DeviceNeighborLists find_neighbors(const ParticleCloud& cloud, const DeviceCloud
 }
 
 NeighborLists find_neighbors(const ParticleCloud& cloud, const double* points, std::size_t count) {
-  const auto device = find_neighbors(cloud, device_cloud(cloud),
-                                     to_device(points, count, static_cast<std::size_t>(cloud.dimension), "efg::search points"));
+  const auto device = find_neighbors(
+      cloud, device_cloud(cloud),
+      to_device(points, count, static_cast<std::size_t>(cloud.dimension), "efg::search points"));
   NeighborLists lists;
   lists.offsets = to_host(device.offsets);
   lists.particles = to_host(device.particles);

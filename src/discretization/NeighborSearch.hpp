@@ -39,7 +39,8 @@ DeviceCloud device_cloud(const ParticleCloud& cloud);
 
 /// True when x lies strictly inside the support (half-widths a, or radius a[0] for a sphere)
 /// of the particle at xi.
-KOKKOS_INLINE_FUNCTION bool covers(bool sphere, int dim, const double* xi, const double* a, const double* x) {
+KOKKOS_INLINE_FUNCTION bool covers(bool sphere, int dim, const double* xi, const double* a,
+                                   const double* x) {
   if (sphere) {
     double r2 = 0;
     for (int d = 0; d < dim; ++d) r2 += (x[d] - xi[d]) * (x[d] - xi[d]);

@@ -7,19 +7,23 @@
 
 namespace efg {
 
-PartDiscretization discretize_part(const BackgroundMesh& mesh, const PartSpec& part, const NodePartition& partition) {
+PartDiscretization discretize_part(const BackgroundMesh& mesh, const PartSpec& part,
+                                   const NodePartition& partition) {
   PartDiscretization d;
   d.part = &part;
   {
-    Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewCounter("efg: neighbour search (ghosts, particles)"));
+    Teuchos::TimeMonitor timer(
+        *Teuchos::TimeMonitor::getNewCounter("efg: neighbour search (ghosts, particles)"));
     d.ghosts = ghost_layer(mesh, partition.owner, partition.rank, ghost_radius(mesh, part));
     d.cloud = make_particle_cloud(mesh, part, partition.owner, partition.rank, d.ghosts);
   }
-  Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewCounter("efg: shape functions and integration"));
+  Teuchos::TimeMonitor timer(
+      *Teuchos::TimeMonitor::getNewCounter("efg: shape functions and integration"));
   d.points = integrate_part(mesh, part, d.cloud, partition.owner, partition.rank);
   if (part.section.integration == Integration::gauss) {
-    const auto v = evaluate_shape_functions(d.cloud, d.cloud.position.data(), d.cloud.owned_count, true,
-                                            [&](std::size_t p) { return "particle " + std::to_string(d.cloud.mesh_node[p] + 1); });
+    const auto v = evaluate_shape_functions(
+        d.cloud, d.cloud.position.data(), d.cloud.owned_count, true,
+        [&](std::size_t p) { return "particle " + std::to_string(d.cloud.mesh_node[p] + 1); });
     d.particle_values = table_from(v, false, d.cloud.dimension);
     d.particle_gradients = table_from(v, true, d.cloud.dimension);
   } else {
@@ -29,14 +33,15 @@ PartDiscretization discretize_part(const BackgroundMesh& mesh, const PartSpec& p
   return d;
 }
 
-void check_parts_do_not_share_nodes(const BackgroundMesh& mesh, const std::vector<PartSpec>& parts) {
+void check_parts_do_not_share_nodes(const BackgroundMesh& mesh,
+                                    const std::vector<PartSpec>& parts) {
   std::vector<int> part_of(mesh.node_count(), -1);
   for (std::size_t p = 0; p < parts.size(); ++p)
     for (auto node : nodes_of_blocks(mesh, parts[p].blocks)) {
       auto& owner = part_of[static_cast<std::size_t>(node)];
       if (owner >= 0 && owner != static_cast<int>(p))
-        throw InputError("parts '" + parts[static_cast<std::size_t>(owner)].name + "' and '" + parts[p].name +
-                         "' share mesh node " + std::to_string(node + 1) +
+        throw InputError("parts '" + parts[static_cast<std::size_t>(owner)].name + "' and '" +
+                         parts[p].name + "' share mesh node " + std::to_string(node + 1) +
                          "; meshfree parts must not share nodes (give each part its own nodes)");
       owner = static_cast<int>(p);
     }

@@ -21,7 +21,8 @@ struct PartDiscretization {
 };
 
 /// Ghost layer from the part's support reach and cell size, particle cloud, integration points.
-PartDiscretization discretize_part(const BackgroundMesh& mesh, const PartSpec& part, const NodePartition& partition);
+PartDiscretization discretize_part(const BackgroundMesh& mesh, const PartSpec& part,
+                                   const NodePartition& partition);
 
 /// Throws InputError when a mesh node belongs to the blocks of two parts (meshfree parts do not
 /// share particles).

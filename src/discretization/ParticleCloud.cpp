@@ -7,7 +7,8 @@
 
 namespace efg {
 
-std::vector<LocalIndex> nodes_of_blocks(const BackgroundMesh& mesh, const std::vector<std::string>& blocks) {
+std::vector<LocalIndex> nodes_of_blocks(const BackgroundMesh& mesh,
+                                        const std::vector<std::string>& blocks) {
   std::vector<char> in(mesh.node_count(), 0);
   for (const auto& b : mesh.blocks)
     if (std::find(blocks.begin(), blocks.end(), b.name) != blocks.end())
@@ -18,7 +19,8 @@ std::vector<LocalIndex> nodes_of_blocks(const BackgroundMesh& mesh, const std::v
   return nodes;
 }
 
-std::vector<double> support_sizes(const BackgroundMesh& mesh, const std::vector<std::string>& blocks,
+std::vector<double> support_sizes(const BackgroundMesh& mesh,
+                                  const std::vector<std::string>& blocks,
                                   const SectionSpec& section) {
   const auto dim = static_cast<std::size_t>(mesh.dimension);
   std::vector<double> h(mesh.node_count() * dim, 0.0);
@@ -52,8 +54,10 @@ std::vector<double> support_sizes(const BackgroundMesh& mesh, const std::vector<
     double hmax = 0;
     for (std::size_t d = 0; d < dim; ++d) hmax = std::max(hmax, h[n * dim + d]);
     for (std::size_t d = 0; d < dim; ++d) {
-      const double dilation = section.dilation.size() == 1 ? section.dilation[0] : section.dilation[d];
-      a[n * dim + d] = section.support == SupportShape::sphere ? dilation * hmax : dilation * h[n * dim + d];
+      const double dilation =
+          section.dilation.size() == 1 ? section.dilation[0] : section.dilation[d];
+      a[n * dim + d] =
+          section.support == SupportShape::sphere ? dilation * hmax : dilation * h[n * dim + d];
       part_max[d] = std::max(part_max[d], a[n * dim + d]);
     }
   }
@@ -64,8 +68,9 @@ std::vector<double> support_sizes(const BackgroundMesh& mesh, const std::vector<
   return a;
 }
 
-ParticleCloud make_particle_cloud(const BackgroundMesh& mesh, const PartSpec& part, const std::vector<int>& owner,
-                                  int rank, const std::vector<LocalIndex>& ghost_nodes) {
+ParticleCloud make_particle_cloud(const BackgroundMesh& mesh, const PartSpec& part,
+                                  const std::vector<int>& owner, int rank,
+                                  const std::vector<LocalIndex>& ghost_nodes) {
   const auto dim = static_cast<std::size_t>(mesh.dimension);
   const auto nodes = nodes_of_blocks(mesh, part.blocks);
   std::vector<char> in_part(mesh.node_count(), 0);
@@ -89,7 +94,8 @@ ParticleCloud make_particle_cloud(const BackgroundMesh& mesh, const PartSpec& pa
     if (owner[static_cast<std::size_t>(node)] == rank) add(node);
   cloud.owned_count = cloud.size();
   for (auto node : ghost_nodes)
-    if (in_part[static_cast<std::size_t>(node)] && owner[static_cast<std::size_t>(node)] != rank) add(node);
+    if (in_part[static_cast<std::size_t>(node)] && owner[static_cast<std::size_t>(node)] != rank)
+      add(node);
   return cloud;
 }
 
@@ -98,8 +104,10 @@ double largest_support_radius(const ParticleCloud& cloud) {
   const auto dim = static_cast<std::size_t>(cloud.dimension);
   for (std::size_t i = 0; i < cloud.size(); ++i) {
     double r2 = 0;
-    for (std::size_t d = 0; d < dim; ++d) r2 += cloud.support[i * dim + d] * cloud.support[i * dim + d];
-    const double reach = cloud.section.support == SupportShape::sphere ? cloud.support[i * dim] : std::sqrt(r2);
+    for (std::size_t d = 0; d < dim; ++d)
+      r2 += cloud.support[i * dim + d] * cloud.support[i * dim + d];
+    const double reach =
+        cloud.section.support == SupportShape::sphere ? cloud.support[i * dim] : std::sqrt(r2);
     largest = std::max(largest, reach);
   }
   return largest;

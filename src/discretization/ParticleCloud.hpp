@@ -15,13 +15,17 @@ struct ParticleCloud {
   SectionSpec section;                ///< basis, kernel, support shape of the part
   std::vector<LocalIndex> mesh_node;  ///< mesh node (= global particle id) of each particle
   std::vector<double> position;       ///< reference position X, `dimension` per particle
-  std::vector<double> support;        ///< support half-width a per direction, `dimension` per particle
-  std::vector<double> volume;         ///< nodal volume from the background cells
-  std::size_t owned_count = 0;        ///< particles [0, owned_count) are owned by this rank
+  std::vector<double> support;  ///< support half-width a per direction, `dimension` per particle
+  std::vector<double> volume;   ///< nodal volume from the background cells
+  std::size_t owned_count = 0;  ///< particles [0, owned_count) are owned by this rank
 
   std::size_t size() const { return mesh_node.size(); }
-  const double* x(std::size_t i) const { return position.data() + i * static_cast<std::size_t>(dimension); }
-  const double* a(std::size_t i) const { return support.data() + i * static_cast<std::size_t>(dimension); }
+  const double* x(std::size_t i) const {
+    return position.data() + i * static_cast<std::size_t>(dimension);
+  }
+  const double* a(std::size_t i) const {
+    return support.data() + i * static_cast<std::size_t>(dimension);
+  }
 };
 
 /// Support half-widths of every node of `blocks` (a_d = dilation_d x h_d), indexed by mesh node;
@@ -32,16 +36,19 @@ struct ParticleCloud {
 ///                        (IDILA = 1).
 /// A sphere support takes a = dilation x max_d h_d in every direction. With per_part_support
 /// every node gets the part's largest value per direction.
-std::vector<double> support_sizes(const BackgroundMesh& mesh, const std::vector<std::string>& blocks,
+std::vector<double> support_sizes(const BackgroundMesh& mesh,
+                                  const std::vector<std::string>& blocks,
                                   const SectionSpec& section);
 
 /// Mesh nodes of the blocks, ascending.
-std::vector<LocalIndex> nodes_of_blocks(const BackgroundMesh& mesh, const std::vector<std::string>& blocks);
+std::vector<LocalIndex> nodes_of_blocks(const BackgroundMesh& mesh,
+                                        const std::vector<std::string>& blocks);
 
 /// The cloud of `part`: its nodes owned here (owner[node] == rank) then the others listed in
 /// `ghost_nodes` (mesh nodes, ascending; those outside the part are skipped).
-ParticleCloud make_particle_cloud(const BackgroundMesh& mesh, const PartSpec& part, const std::vector<int>& owner,
-                                  int rank, const std::vector<LocalIndex>& ghost_nodes);
+ParticleCloud make_particle_cloud(const BackgroundMesh& mesh, const PartSpec& part,
+                                  const std::vector<int>& owner, int rank,
+                                  const std::vector<LocalIndex>& ghost_nodes);
 
 /// Largest distance from a particle at which its support still reaches: the half-diagonal |a|
 /// of a box support, the radius of a sphere.

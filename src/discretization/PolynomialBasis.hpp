@@ -33,7 +33,8 @@ struct PolynomialBasis {
       if constexpr (Order == 2) {
         int k = 1 + Dim;
         for (int i = 0; i < Dim; ++i)
-          for (int j = i; j < Dim; ++j, ++k) dp[d][k] = (i == d ? xi[j] : 0.0) + (j == d ? xi[i] : 0.0);
+          for (int j = i; j < Dim; ++j, ++k)
+            dp[d][k] = (i == d ? xi[j] : 0.0) + (j == d ? xi[i] : 0.0);
       }
     }
   }

@@ -11,16 +11,16 @@ namespace {
 // (sign -1 where L is the point's `minus` side) into L's row, then divides by V_L.
 template <int Dim>
 struct SmoothedGradientKernel {
-  GatherIndex points_of;                      // slot 2p (plus side) or 2p + 1 (minus side) per particle
-  DeviceView<const std::size_t*> phi_offsets; // neighbours of every smoothing point
+  GatherIndex points_of;  // slot 2p (plus side) or 2p + 1 (minus side) per particle
+  DeviceView<const std::size_t*> phi_offsets;  // neighbours of every smoothing point
   DeviceView<const int*> phi_particle;
   DeviceView<const double*> phi;
-  DeviceView<const double**> normal;          // weighted normal of every smoothing point
-  DeviceView<const LocalIndex*> global_id;    // of every cloud particle
-  DeviceView<const std::size_t*> row_offsets; // rows of B~, particles by ascending global id
+  DeviceView<const double**> normal;           // weighted normal of every smoothing point
+  DeviceView<const LocalIndex*> global_id;     // of every cloud particle
+  DeviceView<const std::size_t*> row_offsets;  // rows of B~, particles by ascending global id
   DeviceView<const LocalIndex*> row_gid;
-  DeviceView<const double*> volume;           // V_L per row
-  DeviceView<double**> value;                 // B~ per row entry
+  DeviceView<const double*> volume;  // V_L per row
+  DeviceView<double**> value;        // B~ per row entry
 
   KOKKOS_INLINE_FUNCTION void operator()(const std::size_t l) const {
     const auto begin = row_offsets(l), end = row_offsets(l + 1);
@@ -34,10 +34,14 @@ struct SmoothedGradientKernel {
         auto lo = begin, hi = end;
         while (hi - lo > 1) {
           const auto mid = lo + (hi - lo) / 2;
-          if (row_gid(mid) <= gid) lo = mid;
-          else hi = mid;
+          if (row_gid(mid) <= gid)
+            lo = mid;
+          else
+            hi = mid;
         }
-        for (int d = 0; d < Dim; ++d) value(lo, static_cast<std::size_t>(d)) += sign * phi(k) * normal(p, static_cast<std::size_t>(d));
+        for (int d = 0; d < Dim; ++d)
+          value(lo, static_cast<std::size_t>(d)) +=
+              sign * phi(k) * normal(p, static_cast<std::size_t>(d));
       }
     }
     for (auto k = begin; k < end; ++k)
@@ -69,7 +73,8 @@ CsrTable smoothed_gradients(const ParticleCloud& cloud, const std::vector<Smooth
     }
   }
   for (std::size_t k = 0; k < slot_offsets.size(); ++k) slot_offsets[k] = k;
-  const auto points_of = gather_index(to_device(slot_offsets, "efg::scni slots"), to_device(side, "efg::scni sides"), owned + 1);
+  const auto points_of = gather_index(to_device(slot_offsets, "efg::scni slots"),
+                                      to_device(side, "efg::scni sides"), owned + 1);
 
   // Row structure on the host: the neighbours of L's points, by ascending global id.
   const auto of_offsets = to_host(points_of.offsets);
@@ -84,11 +89,15 @@ CsrTable smoothed_gradients(const ParticleCloud& cloud, const std::vector<Smooth
     row.clear();
     for (auto e = of_offsets[l]; e < of_offsets[l + 1]; ++e) {
       const auto p = of_entry[e] / 2;
-      row.insert(row.end(), phi.neighbors.particles.begin() + static_cast<std::ptrdiff_t>(phi.neighbors.offsets[p]),
-                 phi.neighbors.particles.begin() + static_cast<std::ptrdiff_t>(phi.neighbors.offsets[p + 1]));
+      row.insert(
+          row.end(),
+          phi.neighbors.particles.begin() + static_cast<std::ptrdiff_t>(phi.neighbors.offsets[p]),
+          phi.neighbors.particles.begin() +
+              static_cast<std::ptrdiff_t>(phi.neighbors.offsets[p + 1]));
     }
     auto by_gid = [&](LocalIndex a, LocalIndex b) {
-      return cloud.mesh_node[static_cast<std::size_t>(a)] < cloud.mesh_node[static_cast<std::size_t>(b)];
+      return cloud.mesh_node[static_cast<std::size_t>(a)] <
+             cloud.mesh_node[static_cast<std::size_t>(b)];
     };
     std::sort(row.begin(), row.end(), by_gid);
     row.erase(std::unique(row.begin(), row.end()), row.end());
@@ -119,9 +128,15 @@ CsrTable smoothed_gradients(const ParticleCloud& cloud, const std::vector<Smooth
     run(kernel, owned);
   };
   switch (cloud.dimension) {
-    case 1: fill(SmoothedGradientKernel<1>{}); break;
-    case 2: fill(SmoothedGradientKernel<2>{}); break;
-    default: fill(SmoothedGradientKernel<3>{}); break;
+    case 1:
+      fill(SmoothedGradientKernel<1>{});
+      break;
+    case 2:
+      fill(SmoothedGradientKernel<2>{});
+      break;
+    default:
+      fill(SmoothedGradientKernel<3>{});
+      break;
   }
   table.values = to_host(value);
   return table;

@@ -22,10 +22,12 @@ void run_kernel(const ParticleCloud& cloud, const double* points, std::size_t co
   k.neighbors = lists.particles;
   const auto nnz = lists.particles.extent(0);
   DeviceView<double*> phi(Kokkos::view_alloc(Kokkos::WithoutInitializing, "efg::mls phi"), nnz);
-  DeviceView<double**> grad(Kokkos::view_alloc(Kokkos::WithoutInitializing, "efg::mls grad"), gradients ? nnz : 0,
-                            static_cast<std::size_t>(Dim));
-  DeviceView<double*> condition(Kokkos::view_alloc(Kokkos::WithoutInitializing, "efg::mls condition"), count);
-  DeviceView<int*> point_status(Kokkos::view_alloc(Kokkos::WithoutInitializing, "efg::mls status"), count);
+  DeviceView<double**> grad(Kokkos::view_alloc(Kokkos::WithoutInitializing, "efg::mls grad"),
+                            gradients ? nnz : 0, static_cast<std::size_t>(Dim));
+  DeviceView<double*> condition(
+      Kokkos::view_alloc(Kokkos::WithoutInitializing, "efg::mls condition"), count);
+  DeviceView<int*> point_status(Kokkos::view_alloc(Kokkos::WithoutInitializing, "efg::mls status"),
+                                count);
   k.phi = phi;
   k.grad = grad;
   k.condition = condition;
@@ -33,7 +35,8 @@ void run_kernel(const ParticleCloud& cloud, const double* points, std::size_t co
   k.kernel = static_cast<KernelShape>(static_cast<int>(cloud.section.kernel));
   k.sphere = cloud.section.support == SupportShape::sphere;
   k.with_gradients = gradients;
-  Kokkos::parallel_for("efg::mls_shape_functions", Kokkos::RangePolicy<ExecSpace>(0, static_cast<int>(count)), k);
+  Kokkos::parallel_for("efg::mls_shape_functions",
+                       Kokkos::RangePolicy<ExecSpace>(0, static_cast<int>(count)), k);
   out.neighbors.offsets = to_host(lists.offsets);
   out.neighbors.particles = to_host(lists.particles);
   out.phi = to_host(phi);
@@ -43,10 +46,12 @@ void run_kernel(const ParticleCloud& cloud, const double* points, std::size_t co
 }
 
 template <int Dim>
-void dispatch_order(const ParticleCloud& cloud, const double* points, std::size_t count, bool gradients,
-                    ShapeFunctionValues& out, std::vector<int>& status) {
-  if (cloud.section.basis == Basis::linear) run_kernel<Dim, 1>(cloud, points, count, gradients, out, status);
-  else run_kernel<Dim, 2>(cloud, points, count, gradients, out, status);
+void dispatch_order(const ParticleCloud& cloud, const double* points, std::size_t count,
+                    bool gradients, ShapeFunctionValues& out, std::vector<int>& status) {
+  if (cloud.section.basis == Basis::linear)
+    run_kernel<Dim, 1>(cloud, points, count, gradients, out, status);
+  else
+    run_kernel<Dim, 2>(cloud, points, count, gradients, out, status);
 }
 
 std::string describe_dilation(const SectionSpec& s) {
@@ -61,38 +66,49 @@ int basis_size(Basis basis, int dimension) {
   return basis == Basis::linear ? 1 + dimension : 1 + dimension + dimension * (dimension + 1) / 2;
 }
 
-ShapeFunctionValues evaluate_shape_functions(const ParticleCloud& cloud, const double* points, std::size_t count,
-                                             bool gradients, const PointLabel& label) {
+ShapeFunctionValues evaluate_shape_functions(const ParticleCloud& cloud, const double* points,
+                                             std::size_t count, bool gradients,
+                                             const PointLabel& label) {
   ShapeFunctionValues out;
   std::vector<int> status;
   switch (cloud.dimension) {
-    case 1: dispatch_order<1>(cloud, points, count, gradients, out, status); break;
-    case 2: dispatch_order<2>(cloud, points, count, gradients, out, status); break;
-    case 3: dispatch_order<3>(cloud, points, count, gradients, out, status); break;
-    default: throw std::logic_error("shape functions: dimension must be 1, 2 or 3");
+    case 1:
+      dispatch_order<1>(cloud, points, count, gradients, out, status);
+      break;
+    case 2:
+      dispatch_order<2>(cloud, points, count, gradients, out, status);
+      break;
+    case 3:
+      dispatch_order<3>(cloud, points, count, gradients, out, status);
+      break;
+    default:
+      throw std::logic_error("shape functions: dimension must be 1, 2 or 3");
   }
   const auto dim = static_cast<std::size_t>(cloud.dimension);
   const int needed = basis_size(cloud.section.basis, cloud.dimension);
   for (std::size_t p = 0; p < count; ++p) {
     const bool finite = status[p] != mls_not_finite;
-    const bool bad_condition = status[p] == mls_ok && !(out.condition[p] <= condition_error_threshold);
+    const bool bad_condition =
+        status[p] == mls_ok && !(out.condition[p] <= condition_error_threshold);
     if (status[p] == mls_ok && finite && !bad_condition) {
       if (out.condition[p] > condition_warning_threshold) ++out.ill_conditioned;
       continue;
     }
     std::ostringstream o;
-    o << "shape functions: " << (label ? label(p) : "evaluation point " + std::to_string(p)) << " at (";
+    o << "shape functions: " << (label ? label(p) : "evaluation point " + std::to_string(p))
+      << " at (";
     for (std::size_t d = 0; d < dim; ++d) o << (d ? ", " : "") << points[p * dim + d];
     o << "), at setup (step 0, time 0): ";
     const auto n = out.neighbors.count(p);
     if (status[p] == mls_too_few_neighbors) {
-      o << "only " << n << " particle support(s) cover it, a " << (cloud.section.basis == Basis::linear ? "linear" : "quadratic")
-        << " basis in " << dim << "D needs at least " << needed;
+      o << "only " << n << " particle support(s) cover it, a "
+        << (cloud.section.basis == Basis::linear ? "linear" : "quadratic") << " basis in " << dim
+        << "D needs at least " << needed;
     } else if (status[p] == mls_singular || bad_condition) {
-      o << "the moment matrix is " << (status[p] == mls_singular ? "singular" : "ill-conditioned (condition number ")
-        << (status[p] == mls_singular ? "" : std::to_string(out.condition[p]) + ")") << " with " << n
-        << " neighbours (at least " << needed
-        << " needed, not all on one line or plane)";
+      o << "the moment matrix is "
+        << (status[p] == mls_singular ? "singular" : "ill-conditioned (condition number ")
+        << (status[p] == mls_singular ? "" : std::to_string(out.condition[p]) + ")") << " with "
+        << n << " neighbours (at least " << needed << " needed, not all on one line or plane)";
     } else {
       o << "a shape function value is not finite";
     }

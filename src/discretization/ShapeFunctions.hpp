@@ -15,8 +15,8 @@ namespace efg {
 struct ShapeFunctionValues {
   NeighborLists neighbors;
   std::vector<double> phi;
-  std::vector<double> grad;       ///< empty without gradients
-  std::vector<double> condition;  ///< per point: 1-norm condition number of the moment matrix
+  std::vector<double> grad;         ///< empty without gradients
+  std::vector<double> condition;    ///< per point: 1-norm condition number of the moment matrix
   std::size_t ill_conditioned = 0;  ///< points above condition_warning_threshold
 };
 
@@ -35,7 +35,8 @@ int basis_size(Basis basis, int dimension);
 /// Throws NumericalError for the first point whose moment matrix is singular or worse than
 /// condition_error_threshold, naming the point, its coordinates, its neighbour count, the
 /// minimum needed and the dilation to raise.
-ShapeFunctionValues evaluate_shape_functions(const ParticleCloud& cloud, const double* points, std::size_t count,
-                                             bool gradients, const PointLabel& label = {});
+ShapeFunctionValues evaluate_shape_functions(const ParticleCloud& cloud, const double* points,
+                                             std::size_t count, bool gradients,
+                                             const PointLabel& label = {});
 
 }  // namespace efg

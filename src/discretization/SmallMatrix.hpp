@@ -9,7 +9,8 @@ namespace efg {
 /// Inverts a[N][N] into inv[N][N]. Returns false when a pivot is zero or below
 /// `relative_pivot_floor` times the largest entry (numerically singular); then inv is undefined.
 template <int N>
-KOKKOS_INLINE_FUNCTION bool invert_small(const double (&a)[N][N], double (&inv)[N][N], double relative_pivot_floor) {
+KOKKOS_INLINE_FUNCTION bool invert_small(const double (&a)[N][N], double (&inv)[N][N],
+                                         double relative_pivot_floor) {
   double lu[N][N];
   int perm[N];
   double scale = 0.0;

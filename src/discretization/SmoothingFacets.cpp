@@ -9,11 +9,15 @@ namespace {
 
 using Vec = std::array<double, 3>;
 
-Vec sub(const Vec& a, const Vec& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+Vec sub(const Vec& a, const Vec& b) {
+  return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+}
 Vec cross(const Vec& a, const Vec& b) {
   return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
 }
-double dot(const Vec& a, const Vec& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+double dot(const Vec& a, const Vec& b) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
 
 Vec average(const std::vector<Vec>& pts) {
   Vec c{0, 0, 0};
@@ -87,7 +91,8 @@ void emit_side(Emitter& emit, const std::vector<Vec>& x, const std::vector<Local
 }
 
 // Sides of the blocks not shared with another cell of the blocks: the part's boundary.
-std::map<std::vector<LocalIndex>, int> count_sides(const BackgroundMesh& mesh, const std::vector<std::string>& blocks) {
+std::map<std::vector<LocalIndex>, int> count_sides(const BackgroundMesh& mesh,
+                                                   const std::vector<std::string>& blocks) {
   std::map<std::vector<LocalIndex>, int> count;
   for (const auto& b : mesh.blocks) {
     if (std::find(blocks.begin(), blocks.end(), b.name) == blocks.end()) continue;
@@ -95,7 +100,8 @@ std::map<std::vector<LocalIndex>, int> count_sides(const BackgroundMesh& mesh, c
     for (std::size_t c = 0; c < b.cell_count(); ++c)
       for (int s = 0; s < cell_side_count(b.type); ++s) {
         std::vector<LocalIndex> key;
-        for (int a : cell_side_nodes(b.type, s)) key.push_back(b.connectivity[c * npc + static_cast<std::size_t>(a)]);
+        for (int a : cell_side_nodes(b.type, s))
+          key.push_back(b.connectivity[c * npc + static_cast<std::size_t>(a)]);
         std::sort(key.begin(), key.end());
         ++count[key];
       }
@@ -105,7 +111,8 @@ std::map<std::vector<LocalIndex>, int> count_sides(const BackgroundMesh& mesh, c
 
 }  // namespace
 
-std::vector<SmoothingPoint> smoothing_points(const BackgroundMesh& mesh, const std::vector<std::string>& blocks,
+std::vector<SmoothingPoint> smoothing_points(const BackgroundMesh& mesh,
+                                             const std::vector<std::string>& blocks,
                                              const std::vector<char>& node_wanted) {
   std::vector<SmoothingPoint> out;
   Emitter emit(mesh.dimension, out);
@@ -125,9 +132,12 @@ std::vector<SmoothingPoint> smoothing_points(const BackgroundMesh& mesh, const s
       std::vector<Vec> x(static_cast<std::size_t>(npc), Vec{0, 0, 0});
       for (int a = 0; a < npc; ++a)
         for (std::size_t d = 0; d < dim; ++d)
-          x[static_cast<std::size_t>(a)][d] = mesh.coordinates[static_cast<std::size_t>(node[a]) * dim + d];
+          x[static_cast<std::size_t>(a)][d] =
+              mesh.coordinates[static_cast<std::size_t>(node[a]) * dim + d];
       const Vec centroid = average(x);
-      auto mid = [&](int a, int bnode) { return average({x[static_cast<std::size_t>(a)], x[static_cast<std::size_t>(bnode)]}); };
+      auto mid = [&](int a, int bnode) {
+        return average({x[static_cast<std::size_t>(a)], x[static_cast<std::size_t>(bnode)]});
+      };
 
       // Interior facets, one per cell edge (a, b): they separate the domains of a and b.
       // In 2D the edges are the sides; in 3D each edge borders two sides.
@@ -147,8 +157,10 @@ std::vector<SmoothingPoint> smoothing_points(const BackgroundMesh& mesh, const s
         if (emit.dim() == 2) {
           // Segment from the edge midpoint to the centroid; orient its normal from a to e.
           const Vec n = {centroid[1] - m[1], -(centroid[0] - m[0]), 0.0};
-          if (dot(n, toward) >= 0) emit.segment(m, centroid, node[a], node[e]);
-          else emit.segment(centroid, m, node[a], node[e]);
+          if (dot(n, toward) >= 0)
+            emit.segment(m, centroid, node[a], node[e]);
+          else
+            emit.segment(centroid, m, node[a], node[e]);
         } else {
           std::vector<Vec> side_centre;
           for (int s : sides) {
@@ -184,7 +196,8 @@ std::vector<SmoothingPoint> smoothing_points(const BackgroundMesh& mesh, const s
   return out;
 }
 
-std::vector<std::pair<std::size_t, int>> boundary_sides(const BackgroundMesh& mesh, const std::vector<std::string>& blocks) {
+std::vector<std::pair<std::size_t, int>> boundary_sides(const BackgroundMesh& mesh,
+                                                        const std::vector<std::string>& blocks) {
   const auto count = count_sides(mesh, blocks);
   std::vector<std::pair<std::size_t, int>> sides;
   std::size_t global = 0;
@@ -195,7 +208,8 @@ std::vector<std::pair<std::size_t, int>> boundary_sides(const BackgroundMesh& me
       if (!in) continue;
       for (int s = 0; s < cell_side_count(b.type); ++s) {
         std::vector<LocalIndex> key;
-        for (int k : cell_side_nodes(b.type, s)) key.push_back(b.connectivity[c * npc + static_cast<std::size_t>(k)]);
+        for (int k : cell_side_nodes(b.type, s))
+          key.push_back(b.connectivity[c * npc + static_cast<std::size_t>(k)]);
         std::sort(key.begin(), key.end());
         if (count.at(key) == 1) sides.emplace_back(global, s);
       }
@@ -205,18 +219,21 @@ std::vector<std::pair<std::size_t, int>> boundary_sides(const BackgroundMesh& me
 }
 
 std::vector<SmoothingPoint> side_smoothing_points(const std::vector<std::array<double, 3>>& side_x,
-                                                  const std::vector<LocalIndex>& side_nodes, int dim) {
+                                                  const std::vector<LocalIndex>& side_nodes,
+                                                  int dim) {
   std::vector<SmoothingPoint> out;
   Emitter emit(dim, out);
   emit_side(emit, side_x, side_nodes);
   return out;
 }
 
-std::vector<double> smoothing_domain_volumes(const std::vector<SmoothingPoint>& points, std::size_t node_count, int dim) {
+std::vector<double> smoothing_domain_volumes(const std::vector<SmoothingPoint>& points,
+                                             std::size_t node_count, int dim) {
   std::vector<double> volume(node_count, 0.0);
   for (const auto& p : points) {
     double xn = 0;
-    for (std::size_t d = 0; d < static_cast<std::size_t>(dim); ++d) xn += p.x[d] * p.weighted_normal[d];
+    for (std::size_t d = 0; d < static_cast<std::size_t>(dim); ++d)
+      xn += p.x[d] * p.weighted_normal[d];
     volume[static_cast<std::size_t>(p.plus)] += xn / dim;
     if (p.minus >= 0) volume[static_cast<std::size_t>(p.minus)] -= xn / dim;
   }

@@ -29,7 +29,8 @@ struct SmoothingPoint {
 /// segments get 2 Gauss points; 3D facets are split into 4 triangles about their centre, one
 /// centroid point each (exact for the linear fields of the patch test, and the same points on
 /// every rank).
-std::vector<SmoothingPoint> smoothing_points(const BackgroundMesh& mesh, const std::vector<std::string>& blocks,
+std::vector<SmoothingPoint> smoothing_points(const BackgroundMesh& mesh,
+                                             const std::vector<std::string>& blocks,
                                              const std::vector<char>& node_wanted = {});
 
 /// The boundary part of the same rule for one side of a cell: the side split among its nodes,
@@ -38,14 +39,17 @@ std::vector<SmoothingPoint> smoothing_points(const BackgroundMesh& mesh, const s
 /// Tractions and Nitsche terms integrate with these very points, so that boundary integrals and
 /// the SCNI divergence identity use one quadrature (the patch test then holds to round-off).
 std::vector<SmoothingPoint> side_smoothing_points(const std::vector<std::array<double, 3>>& side_x,
-                                                  const std::vector<LocalIndex>& side_nodes, int dim);
+                                                  const std::vector<LocalIndex>& side_nodes,
+                                                  int dim);
 
 /// The sides of the blocks' cells that no other cell of the blocks shares (the part's
 /// boundary), as (global cell index, side), in global cell order.
-std::vector<std::pair<std::size_t, int>> boundary_sides(const BackgroundMesh& mesh, const std::vector<std::string>& blocks);
+std::vector<std::pair<std::size_t, int>> boundary_sides(const BackgroundMesh& mesh,
+                                                        const std::vector<std::string>& blocks);
 
 /// Volumes of the nodal domains by the divergence theorem over the same points,
 /// V_L = 1/dim * sum over L's boundary of x . n, indexed by mesh node.
-std::vector<double> smoothing_domain_volumes(const std::vector<SmoothingPoint>& points, std::size_t node_count, int dim);
+std::vector<double> smoothing_domain_volumes(const std::vector<SmoothingPoint>& points,
+                                             std::size_t node_count, int dim);
 
 }  // namespace efg

@@ -33,7 +33,8 @@ ExplicitDriver::ExplicitDriver(const ModelOperators& ops, const StageSpec& stage
   inverse_mass_.reciprocal(mass_);
 }
 
-std::vector<double> ExplicitDriver::acceleration(double time, double dt, const Vector& d, Vector& a) {
+std::vector<double> ExplicitDriver::acceleration(double time, double dt, const Vector& d,
+                                                 Vector& a) {
   ops_.loads().assemble(curve_factor(ops_.model().scene, time, 1.0), f_ext_);
   ops_.internal_force(d, f_int_);
   std::vector<double> wall_forces;
@@ -57,7 +58,8 @@ bool ExplicitDriver::finite(const RunState& state) const {
   Kokkos::parallel_reduce(
       "efg::finite_state", Kokkos::RangePolicy<ExecSpace>(0, d.extent(0)),
       KOKKOS_LAMBDA(const std::size_t k, int& good) {
-        good = good && Kokkos::Experimental::isfinite(d(k, 0)) && Kokkos::Experimental::isfinite(v(k, 0));
+        good = good && Kokkos::Experimental::isfinite(d(k, 0)) &&
+               Kokkos::Experimental::isfinite(v(k, 0));
       },
       Kokkos::Min<int>(ok));
   int all = 0;
@@ -71,22 +73,29 @@ void ExplicitDriver::report_non_finite(const RunState& state, long long step) co
   const auto v = state.v.getLocalViewHost(Tpetra::Access::ReadOnly);
   long long bad = -1;
   for (std::size_t k = 0; k < d.extent(0) && bad < 0; ++k)
-    if (!std::isfinite(d(k, 0)) || !std::isfinite(v(k, 0))) bad = map.getGlobalElement(static_cast<int>(k));
+    if (!std::isfinite(d(k, 0)) || !std::isfinite(v(k, 0)))
+      bad = map.getGlobalElement(static_cast<int>(k));
   long long any = -1;
   Teuchos::reduceAll(*map.getComm(), Teuchos::REDUCE_MAX, bad, Teuchos::outArg(any));
   const int dim = ops_.model().mesh.dimension;
   const auto node = static_cast<std::size_t>(any / dim);
   std::ostringstream o;
-  o << "stage '" << stage_.name << "': a displacement or velocity is not finite at particle " << node + 1 << " (X = (";
-  for (int k = 0; k < dim; ++k) o << (k ? ", " : "") << ops_.model().mesh.coordinates[node * static_cast<std::size_t>(dim) + static_cast<std::size_t>(k)];
+  o << "stage '" << stage_.name << "': a displacement or velocity is not finite at particle "
+    << node + 1 << " (X = (";
+  for (int k = 0; k < dim; ++k)
+    o << (k ? ", " : "")
+      << ops_.model()
+             .mesh.coordinates[node * static_cast<std::size_t>(dim) + static_cast<std::size_t>(k)];
   o << ")) at step " << step << ", t = " << state.time << "; the last good state is in the results";
   throw NumericalError(o.str());
 }
 
 void ExplicitDriver::account_energy(RunState& state, const Vector& delta_d) const {
   // Trapezoidal work of the external and wall forces over the step.
-  state.external_work += 0.5 * (reproducible_dot(f_ext_old_, delta_d) + reproducible_dot(f_ext_, delta_d));
-  state.wall_work += 0.5 * (reproducible_dot(f_wall_old_, delta_d) + reproducible_dot(f_wall_, delta_d));
+  state.external_work +=
+      0.5 * (reproducible_dot(f_ext_old_, delta_d) + reproducible_dot(f_ext_, delta_d));
+  state.wall_work +=
+      0.5 * (reproducible_dot(f_wall_old_, delta_d) + reproducible_dot(f_wall_, delta_d));
 }
 
 ExplicitSummary ExplicitDriver::run(RunState& state, const StateOutput& output) {
@@ -99,10 +108,12 @@ ExplicitSummary ExplicitDriver::run(RunState& state, const StateOutput& output) 
   const double fixed_dt = fixed ? stage_.settings["dt"].as<double>() : 0.0;
   const bool allow_unstable = stage_.settings["allow_unstable_dt"].as<bool>();
   const long long refresh = stage_.settings["dt_update_interval"].as<long long>();
-  Vector delta(mass_.getMap()), v_half(mass_.getMap()), previous_d(mass_.getMap()), previous_v(mass_.getMap()),
-      previous_a(mass_.getMap());
+  Vector delta(mass_.getMap()), v_half(mass_.getMap()), previous_d(mass_.getMap()),
+      previous_v(mass_.getMap()), previous_a(mass_.getMap());
 
-  auto accelerate = [&](double time, double dt) { return acceleration(time, dt, state.d, state.a); };
+  auto accelerate = [&](double time, double dt) {
+    return acceleration(time, dt, state.d, state.a);
+  };
   auto energies = [&] {
     state.kinetic = 0;
     Vector mv(mass_.getMap());
@@ -116,12 +127,13 @@ ExplicitSummary ExplicitDriver::run(RunState& state, const StateOutput& output) 
   double dt_crit = stable_.estimate(state.d);
   double dt = fixed ? fixed_dt : scale * dt_crit;
   std::ostringstream o;
-  o << "stage '" << stage_.name << "': stable time step " << dt_crit << " (largest frequency " << stable_.largest_frequency()
-    << " rad/time), dt = " << dt;
+  o << "stage '" << stage_.name << "': stable time step " << dt_crit << " (largest frequency "
+    << stable_.largest_frequency() << " rad/time), dt = " << dt;
   Log::info(o.str());
   if (fixed && fixed_dt > dt_crit && !allow_unstable)
-    throw NumericalError("stage '" + stage_.name + "': dt = " + std::to_string(fixed_dt) + " exceeds the stable time step " +
-                         std::to_string(dt_crit) + " at step 0, t = " + std::to_string(start) +
+    throw NumericalError("stage '" + stage_.name + "': dt = " + std::to_string(fixed_dt) +
+                         " exceeds the stable time step " + std::to_string(dt_crit) +
+                         " at step 0, t = " + std::to_string(start) +
                          "; lower dt, or set allow_unstable_dt: true to run it anyway");
 
   state.wall_forces = accelerate(state.time, dt);
@@ -161,7 +173,8 @@ ExplicitSummary ExplicitDriver::run(RunState& state, const StateOutput& output) 
     // An inverted point (det F <= 0) may show on one rank only: agree on it collectively, write
     // the last good state, and name the point, step and time.
     try {
-      run_collectively(mass_.getMap()->getComm(), [&] { state.wall_forces = accelerate(state.time + step_dt, step_dt); });
+      run_collectively(mass_.getMap()->getComm(),
+                       [&] { state.wall_forces = accelerate(state.time + step_dt, step_dt); });
     } catch (const std::exception& e) {
       const bool here = dynamic_cast<const NumericalError*>(&e) != nullptr;
       const std::string what = e.what();
@@ -171,8 +184,8 @@ ExplicitSummary ExplicitDriver::run(RunState& state, const StateOutput& output) 
       output(state);
       if (!here) throw;
       std::ostringstream why;
-      why << "stage '" << stage_.name << "': " << what << " at step " << summary.steps + 1 << ", t = " << state.time + step_dt
-          << "; the last good state is in the results";
+      why << "stage '" << stage_.name << "': " << what << " at step " << summary.steps + 1
+          << ", t = " << state.time + step_dt << "; the last good state is in the results";
       throw NumericalError(why.str());
     }
     Tpetra::deep_copy(state.v, v_half);
@@ -202,19 +215,24 @@ ExplicitSummary ExplicitDriver::run(RunState& state, const StateOutput& output) 
     if (record || allow_unstable) {
       energies();
       summary.worst_balance_error = std::max(summary.worst_balance_error, state.balance_error());
-      reference_energy = std::max({reference_energy, state.initial_energy + std::abs(state.external_work) + std::abs(state.wall_work)});
+      reference_energy =
+          std::max({reference_energy, state.initial_energy + std::abs(state.external_work) +
+                                          std::abs(state.wall_work)});
       // An unstable step size shows as energy growing far beyond what the loads put in.
       if (state.kinetic + state.internal > 10.0 * reference_energy && state.balance_error() > 0.5) {
         output(state);
         std::ostringstream why;
-        why << "stage '" << stage_.name << "': unstable: the energy grew to " << state.kinetic + state.internal << " (loads and initial state put in "
-            << reference_energy << ") at step " << summary.steps << ", t = " << state.time << " with dt = " << step_dt
-            << " above the stable time step " << dt_crit;
+        why << "stage '" << stage_.name << "': unstable: the energy grew to "
+            << state.kinetic + state.internal << " (loads and initial state put in "
+            << reference_energy << ") at step " << summary.steps << ", t = " << state.time
+            << " with dt = " << step_dt << " above the stable time step " << dt_crit;
         throw NumericalError(why.str());
       }
     }
     if (record) {
-      if (state.balance_error() > 0.01) Log::warning("energy balance error " + std::to_string(100 * state.balance_error()) + " % at t = " + std::to_string(state.time));
+      if (state.balance_error() > 0.01)
+        Log::warning("energy balance error " + std::to_string(100 * state.balance_error()) +
+                     " % at t = " + std::to_string(state.time));
       output(state);
       next_output = std::min(end, next_output + interval);
     }

@@ -12,7 +12,8 @@
 
 namespace efg {
 
-ImplicitDriver::ImplicitDriver(StaticProblem& problem, const StageSpec& stage, double start_time, double first_stage_end)
+ImplicitDriver::ImplicitDriver(StaticProblem& problem, const StageSpec& stage, double start_time,
+                               double first_stage_end)
     : problem_(problem), stage_(stage), start_(start_time), first_end_(first_stage_end) {}
 
 StageSummary ImplicitDriver::run(Vector& d, const OutputHook& output) {
@@ -24,13 +25,15 @@ StageSummary ImplicitDriver::run(Vector& d, const OutputHook& output) {
   NewtonSolver newton(problem_, stage_.settings, scene.file, "stage '" + stage_.name + "'");
   Progress progress("stage '" + stage_.name + "'", span);
   StageSummary summary;
-  double t = start_, dt = span / steps, next_output = std::min(end, start_ + interval), last_output = start_;
+  double t = start_, dt = span / steps, next_output = std::min(end, start_ + interval),
+         last_output = start_;
   Vector saved(d, Teuchos::Copy);
   while (t < end - 1e-12 * span) {
     const double target = std::min(end, t + dt);
     const double ramp = std::min(1.0, target / first_end_);
     problem_.set_load_factor(curve_factor(scene, target, ramp));
-    Log::info("  stage '" + stage_.name + "' step " + std::to_string(summary.steps + 1) + ": t = " + std::to_string(target));
+    Log::info("  stage '" + stage_.name + "' step " + std::to_string(summary.steps + 1) +
+              ": t = " + std::to_string(target));
     Tpetra::deep_copy(saved, d);
     const auto result = newton.solve(d);
     summary.newton_iterations += result.iterations;
@@ -40,8 +43,9 @@ StageSummary ImplicitDriver::run(Vector& d, const OutputHook& output) {
       ++summary.cutbacks;
       dt /= 2;
       std::ostringstream why;
-      why << "stage '" << stage_.name << "': Newton did not converge at t = " << target << " (load step " << summary.steps + 1
-          << ", " << result.iterations << " iterations, ||r||:";
+      why << "stage '" << stage_.name << "': Newton did not converge at t = " << target
+          << " (load step " << summary.steps + 1 << ", " << result.iterations
+          << " iterations, ||r||:";
       const auto& h = result.residual_history;
       for (std::size_t k = 0; k < h.size(); ++k) {
         if (h.size() > 6 && k == 3) {
@@ -54,7 +58,8 @@ StageSummary ImplicitDriver::run(Vector& d, const OutputHook& output) {
       if (!result.failure.empty()) why << ": " << result.failure;
       if (dt < min_step * (1 - 1e-12)) {
         if (t > last_output) output(t, d);  // keep the last converged state in the results
-        throw NumericalError(why.str() + "; the minimum step " + std::to_string(min_step) + " is reached");
+        throw NumericalError(why.str() + "; the minimum step " + std::to_string(min_step) +
+                             " is reached");
       }
       Log::warning(why.str() + "; cutting the step to " + std::to_string(dt));
       continue;

@@ -17,12 +17,14 @@ using OutputHook = std::function<void(double, const Vector&)>;
 
 struct StageSummary {
   int steps = 0, cutbacks = 0, newton_iterations = 0, linear_iterations = 0;
-  std::vector<std::vector<double>> residual_histories;  ///< ||r|| per Newton iteration, per converged step
+  std::vector<std::vector<double>>
+      residual_histories;  ///< ||r|| per Newton iteration, per converged step
 };
 
 class ImplicitDriver {
  public:
-  ImplicitDriver(StaticProblem& problem, const StageSpec& stage, double start_time, double first_stage_end);
+  ImplicitDriver(StaticProblem& problem, const StageSpec& stage, double start_time,
+                 double first_stage_end);
 
   /// Advances d (owned generalized displacements) through the stage.
   StageSummary run(Vector& d, const OutputHook& output);

@@ -1,10 +1,10 @@
 #include "drivers/NewtonSolver.hpp"
 
 #include <NOX.H>
-#include <NOX_Observer.hpp>
-#include <NOX_SolverStats.hpp>
 #include <NOX_StatusTest_Factory.H>
 #include <NOX_Thyra.H>
+#include <NOX_Observer.hpp>
+#include <NOX_SolverStats.hpp>
 #include <Stratimikos_DefaultLinearSolverBuilder.hpp>
 #include <Stratimikos_MueLuHelpers.hpp>
 #include <Teuchos_AbstractFactoryStd.hpp>
@@ -36,10 +36,11 @@ class ResidualLog : public NOX::Observer {
     std::string rate;
     const auto& h = result_.residual_history;
     if (h.size() >= 2 && h[h.size() - 1] > 0 && h[h.size() - 2] > 0 && r > 0)
-      rate = ", order " + format(std::log(r / h.back()) / std::log(h[h.size() - 1] / h[h.size() - 2]));
+      rate =
+          ", order " + format(std::log(r / h.back()) / std::log(h[h.size() - 1] / h[h.size() - 2]));
     result_.residual_history.push_back(r);
-    Log::info("    Newton " + std::to_string(solver.getNumIterations()) + ": ||r|| = " + format(r) + " (" +
-              std::to_string(its) + " linear iterations" + rate + ")");
+    Log::info("    Newton " + std::to_string(solver.getNumIterations()) + ": ||r|| = " + format(r) +
+              " (" + std::to_string(its) + " linear iterations" + rate + ")");
   }
 
  private:
@@ -56,10 +57,12 @@ class ResidualLog : public NOX::Observer {
 // further iteration costs a full linear solve. The driver then cuts the load step.
 class RelativeDivergence : public NOX::StatusTest::Generic {
  public:
-  NOX::StatusTest::StatusType checkStatus(const NOX::Solver::Generic& solver, NOX::StatusTest::CheckType) override {
+  NOX::StatusTest::StatusType checkStatus(const NOX::Solver::Generic& solver,
+                                          NOX::StatusTest::CheckType) override {
     const double r = solver.getSolutionGroup().getNormF();
     if (solver.getNumIterations() == 0) initial_ = r;
-    status_ = initial_ > 0 && !(r <= 1e3 * initial_) ? NOX::StatusTest::Failed : NOX::StatusTest::Unconverged;
+    status_ = initial_ > 0 && !(r <= 1e3 * initial_) ? NOX::StatusTest::Failed
+                                                     : NOX::StatusTest::Unconverged;
     return status_;
   }
   NOX::StatusTest::StatusType getStatus() const override { return status_; }
@@ -73,7 +76,8 @@ class RelativeDivergence : public NOX::StatusTest::Generic {
   NOX::StatusTest::StatusType status_ = NOX::StatusTest::Unevaluated;
 };
 
-Teuchos::ParameterList from_stage(const YAML::Node& stage, const char* key, const std::string& file, const std::string& where) {
+Teuchos::ParameterList from_stage(const YAML::Node& stage, const char* key, const std::string& file,
+                                  const std::string& where) {
   return parameter_list_from_yaml(stage[key], key, file, where + "." + key);
 }
 
@@ -121,12 +125,13 @@ Teuchos::RCP<Teuchos::ParameterList> nonlinear_parameters(const Teuchos::Paramet
   return p;
 }
 
-Teuchos::RCP<Teuchos::ParameterList> linear_parameters(const Teuchos::ParameterList& solver,
-                                                       const Teuchos::ParameterList& preconditioner) {
+Teuchos::RCP<Teuchos::ParameterList> linear_parameters(
+    const Teuchos::ParameterList& solver, const Teuchos::ParameterList& preconditioner) {
   auto p = Teuchos::parameterList("Linear Solver");
   p->set("Linear Solver Type", "Belos");
   auto& belos = p->sublist("Linear Solver Types").sublist("Belos");
-  const std::string type = solver.isParameter("Solver Type") ? solver.get<std::string>("Solver Type") : "Block GMRES";
+  const std::string type =
+      solver.isParameter("Solver Type") ? solver.get<std::string>("Solver Type") : "Block GMRES";
   belos.set("Solver Type", type);
   auto& chosen = belos.sublist("Solver Types").sublist(type);
   chosen.set("Convergence Tolerance", 1e-10);  // NOX passes its own forcing term per solve
@@ -137,43 +142,53 @@ Teuchos::RCP<Teuchos::ParameterList> linear_parameters(const Teuchos::ParameterL
     if (solver.name(it) != "Solver Type") chosen.setEntry(solver.name(it), solver.entry(it));
   belos.sublist("VerboseObject").set("Verbosity Level", "none");
 
-  const std::string prec = preconditioner.isParameter("Type") ? preconditioner.get<std::string>("Type") : "Ifpack2";
+  const std::string prec =
+      preconditioner.isParameter("Type") ? preconditioner.get<std::string>("Type") : "Ifpack2";
   p->set("Preconditioner Type", prec);
   if (prec == "Ifpack2") {
     auto& ifpack = p->sublist("Preconditioner Types").sublist("Ifpack2");
-    const std::string kind = preconditioner.isParameter("Prec Type") ? preconditioner.get<std::string>("Prec Type") : "RILUK";
+    const std::string kind = preconditioner.isParameter("Prec Type")
+                                 ? preconditioner.get<std::string>("Prec Type")
+                                 : "RILUK";
     ifpack.set("Prec Type", kind);
     // ILU(2): ILU(1) stalls on the constraint rows of the transformation method at dilation 2.
     if (kind == "RILUK") ifpack.sublist("Ifpack2 Settings").set("fact: iluk level-of-fill", 2);
     for (auto it = preconditioner.begin(); it != preconditioner.end(); ++it)
       if (preconditioner.name(it) != "Type" && preconditioner.name(it) != "Prec Type")
-        ifpack.sublist("Ifpack2 Settings").setEntry(preconditioner.name(it), preconditioner.entry(it));
+        ifpack.sublist("Ifpack2 Settings")
+            .setEntry(preconditioner.name(it), preconditioner.entry(it));
   } else if (prec == "MueLu") {
     auto& muelu = p->sublist("Preconditioner Types").sublist("MueLu");
     muelu.set("verbosity", "none");
     muelu.set("coarse: type", "RELAXATION");  // not KLU2: wrong answers on more than one rank
     for (auto it = preconditioner.begin(); it != preconditioner.end(); ++it)
-      if (preconditioner.name(it) != "Type") muelu.setEntry(preconditioner.name(it), preconditioner.entry(it));
+      if (preconditioner.name(it) != "Type")
+        muelu.setEntry(preconditioner.name(it), preconditioner.entry(it));
   }
   return p;
 }
 
-NewtonSolver::NewtonSolver(StaticProblem& problem, const YAML::Node& stage, const std::string& file, const std::string& where)
+NewtonSolver::NewtonSolver(StaticProblem& problem, const YAML::Node& stage, const std::string& file,
+                           const std::string& where)
     : problem_(problem) {
   try {
     nox_params_ = nonlinear_parameters(from_stage(stage, "nonlinear_solver", file, where));
-    auto linear = linear_parameters(from_stage(stage, "linear_solver", file, where), from_stage(stage, "preconditioner", file, where));
+    auto linear = linear_parameters(from_stage(stage, "linear_solver", file, where),
+                                    from_stage(stage, "preconditioner", file, where));
     Stratimikos::DefaultLinearSolverBuilder builder;
     using Factory = Thyra::PreconditionerFactoryBase<double>;
     builder.setPreconditioningStrategyFactory(
-        Teuchos::abstractFactoryStd<Factory, Thyra::Ifpack2PreconditionerFactory<Tpetra::CrsMatrix<>>>(), "Ifpack2");
+        Teuchos::abstractFactoryStd<Factory,
+                                    Thyra::Ifpack2PreconditionerFactory<Tpetra::CrsMatrix<>>>(),
+        "Ifpack2");
     Stratimikos::enableMueLu<Map::local_ordinal_type, GlobalOrdinal, Map::node_type>(builder);
     builder.setParameterList(linear);
     lows_factory_ = builder.createLinearSolveStrategy("");
   } catch (const InputError&) {
     throw;
   } catch (const std::exception& e) {
-    throw InputError(file + ": " + where + ": the solver parameters were rejected by Trilinos: " + e.what());
+    throw InputError(file + ": " + where +
+                     ": the solver parameters were rejected by Trilinos: " + e.what());
   }
 }
 
@@ -185,7 +200,8 @@ NewtonResult NewtonSolver::solve(Vector& d) {
   NOX::Thyra::Vector x0(model->getNominalValues().get_x()->clone_v());
   auto group = Teuchos::rcp(new NOX::Thyra::Group(x0, model));
   auto params = Teuchos::rcp(new Teuchos::ParameterList(*nox_params_));
-  params->sublist("Solver Options").set<Teuchos::RCP<NOX::Observer>>("Observer", Teuchos::rcp(new ResidualLog(result)));
+  params->sublist("Solver Options")
+      .set<Teuchos::RCP<NOX::Observer>>("Observer", Teuchos::rcp(new ResidualLog(result)));
   NOX::Utils utils(params->sublist("Printing"));
   auto tests = Teuchos::rcp(new NOX::StatusTest::Combo(NOX::StatusTest::Combo::OR));
   tests->addStatusTest(NOX::StatusTest::buildStatusTests(params->sublist("Status Tests"), utils));
@@ -203,7 +219,8 @@ NewtonResult NewtonSolver::solve(Vector& d) {
   result.converged = status == NOX::StatusTest::Converged;
   result.iterations = solver->getNumIterations();
   if (!result.converged && !model->failure().empty()) result.failure = model->failure();
-  using Extract = Thyra::TpetraOperatorVectorExtraction<double, Map::local_ordinal_type, GlobalOrdinal, Map::node_type>;
+  using Extract = Thyra::TpetraOperatorVectorExtraction<double, Map::local_ordinal_type,
+                                                        GlobalOrdinal, Map::node_type>;
   const auto& x = dynamic_cast<const NOX::Thyra::Vector&>(solver->getSolutionGroup().getX());
   Tpetra::deep_copy(d, *Extract::getConstTpetraVector(x.getThyraRCPVector()));
   return result;

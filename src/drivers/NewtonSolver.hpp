@@ -24,7 +24,8 @@ struct NewtonResult {
 class NewtonSolver {
  public:
   /// `stage` is the stage's resolved YAML (its solver maps); `where` names it in messages.
-  NewtonSolver(StaticProblem& problem, const YAML::Node& stage, const std::string& scene_file, const std::string& where);
+  NewtonSolver(StaticProblem& problem, const YAML::Node& stage, const std::string& scene_file,
+               const std::string& where);
 
   /// Solves r(d) = 0 starting from d; d holds the last iterate on return.
   NewtonResult solve(Vector& d);
@@ -37,6 +38,7 @@ class NewtonSolver {
 
 /// The default NOX, Stratimikos lists, merged with a stage's maps (exposed for tests and docs).
 Teuchos::RCP<Teuchos::ParameterList> nonlinear_parameters(const Teuchos::ParameterList& user);
-Teuchos::RCP<Teuchos::ParameterList> linear_parameters(const Teuchos::ParameterList& solver, const Teuchos::ParameterList& preconditioner);
+Teuchos::RCP<Teuchos::ParameterList> linear_parameters(
+    const Teuchos::ParameterList& solver, const Teuchos::ParameterList& preconditioner);
 
 }  // namespace efg

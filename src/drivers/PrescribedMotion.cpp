@@ -10,14 +10,15 @@ PrescribedMotion::PrescribedMotion(const Model& model) {
       for (int i = 0; i < dim; ++i) {
         const auto& c = bc.components[static_cast<std::size_t>(i)];
         if (!c) continue;  // values from an exact solution are for static verification
-        const int row = model.maps.owned_dofs->getLocalElement(static_cast<GlobalOrdinal>(node) * dim + i);
+        const int row =
+            model.maps.owned_dofs->getLocalElement(static_cast<GlobalOrdinal>(node) * dim + i);
         dofs_.push_back({row, bc.type == "velocity", *c, bc.curve});
       }
     }
 }
 
-void PrescribedMotion::constrain_velocity(const LoadFactor& start, const LoadFactor& mid, const LoadFactor& end, double dt,
-                                          Vector& v_half) const {
+void PrescribedMotion::constrain_velocity(const LoadFactor& start, const LoadFactor& mid,
+                                          const LoadFactor& end, double dt, Vector& v_half) const {
   auto v = v_half.getLocalViewHost(Tpetra::Access::ReadWrite);
   for (const auto& c : dofs_) {
     const auto k = static_cast<std::size_t>(c.row);

@@ -1,18 +1,18 @@
 // Prescribed displacements and velocities in explicit stages, on the generalized dofs of the
 // condition's particles: velocity conditions set v_I, displacement conditions move d_I by the
 // change of the prescribed value over each step (so a stage that starts from an implicit
-// solution, whose generalized values at a clamp are not zero, does not jump). With non-interpolating shape functions this imposes the values on
-// the generalized dofs, not exactly on the physical displacement at the nodes (LS-DYNA's EFG
-// uses a boundary transformation); for fixed ends and uniform motions of a whole set the two
-// agree.
+// solution, whose generalized values at a clamp are not zero, does not jump). With
+// non-interpolating shape functions this imposes the values on the generalized dofs, not exactly on
+// the physical displacement at the nodes (LS-DYNA's EFG uses a boundary transformation); for fixed
+// ends and uniform motions of a whole set the two agree.
 #pragma once
 
 #include <string>
 #include <vector>
 
+#include "operators/SolidOperator.hpp"
 #include "run/Curves.hpp"
 #include "run/Model.hpp"
-#include "operators/SolidOperator.hpp"
 
 namespace efg {
 
@@ -22,7 +22,8 @@ class PrescribedMotion {
 
   /// Overwrites the constrained entries of the half-step velocity: the prescribed velocity at
   /// mid-step, or the change of the prescribed displacement from step start to end over dt.
-  void constrain_velocity(const LoadFactor& start, const LoadFactor& mid, const LoadFactor& end, double dt, Vector& v_half) const;
+  void constrain_velocity(const LoadFactor& start, const LoadFactor& mid, const LoadFactor& end,
+                          double dt, Vector& v_half) const;
   /// Zeroes the constrained entries of an acceleration and sets the constrained velocities.
   void constrain_end(const LoadFactor& factor_end, Vector& v, Vector& a) const;
 

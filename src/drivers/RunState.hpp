@@ -12,7 +12,8 @@
 namespace efg {
 
 struct RunState {
-  explicit RunState(const Teuchos::RCP<const Map>& owned_dofs) : d(owned_dofs), v(owned_dofs), a(owned_dofs) {}
+  explicit RunState(const Teuchos::RCP<const Map>& owned_dofs)
+      : d(owned_dofs), v(owned_dofs), a(owned_dofs) {}
 
   Vector d, v, a;
   double time = 0;
@@ -25,7 +26,9 @@ struct RunState {
   /// |E_kin + E_int - E_0 - W_ext - W_wall| relative to the largest energy involved.
   double balance_error() const {
     const double total = kinetic + internal - initial_energy - external_work - wall_work;
-    const double scale = std::max({std::abs(kinetic), std::abs(internal), std::abs(initial_energy) + std::abs(external_work) + std::abs(wall_work)});
+    const double scale =
+        std::max({std::abs(kinetic), std::abs(internal),
+                  std::abs(initial_energy) + std::abs(external_work) + std::abs(wall_work)});
     return scale > 0 ? std::abs(total) / scale : 0.0;
   }
 };

@@ -10,7 +10,8 @@
 
 namespace efg {
 namespace {
-using Extract = Thyra::TpetraOperatorVectorExtraction<double, Map::local_ordinal_type, GlobalOrdinal, Map::node_type>;
+using Extract = Thyra::TpetraOperatorVectorExtraction<double, Map::local_ordinal_type,
+                                                      GlobalOrdinal, Map::node_type>;
 }
 
 SolidModelEvaluator::SolidModelEvaluator(StaticProblem& problem, const Vector& initial_guess)
@@ -48,8 +49,9 @@ Teuchos::RCP<Thyra::LinearOpBase<double>> SolidModelEvaluator::create_W_op() con
   return Thyra::createLinearOp<double>(op, space_, space_);
 }
 
-void SolidModelEvaluator::evalModelImpl(const Thyra::ModelEvaluatorBase::InArgs<double>& in,
-                                        const Thyra::ModelEvaluatorBase::OutArgs<double>& out) const {
+void SolidModelEvaluator::evalModelImpl(
+    const Thyra::ModelEvaluatorBase::InArgs<double>& in,
+    const Thyra::ModelEvaluatorBase::OutArgs<double>& out) const {
   const auto x = Extract::getConstTpetraVector(in.get_x());
   const auto f_thyra = out.get_f();
   const auto w_thyra = out.get_W_op();
@@ -57,14 +59,17 @@ void SolidModelEvaluator::evalModelImpl(const Thyra::ModelEvaluatorBase::InArgs<
   try {
     if (!f_thyra.is_null()) problem_.residual(*x, *Extract::getTpetraVector(f_thyra));
     if (!w_thyra.is_null())
-      problem_.jacobian(*x, *Teuchos::rcp_dynamic_cast<FEMatrix>(Extract::getTpetraOperator(w_thyra), true));
+      problem_.jacobian(
+          *x, *Teuchos::rcp_dynamic_cast<FEMatrix>(Extract::getTpetraOperator(w_thyra), true));
   } catch (const NumericalError& e) {
     failure_ = e.what();
     failed = 1;
   }
   int any = 0;
-  Teuchos::reduceAll(*problem_.owned_dofs()->getComm(), Teuchos::REDUCE_MAX, failed, Teuchos::outArg(any));
-  if (any && !f_thyra.is_null()) Thyra::assign(f_thyra.ptr(), std::numeric_limits<double>::quiet_NaN());
+  Teuchos::reduceAll(*problem_.owned_dofs()->getComm(), Teuchos::REDUCE_MAX, failed,
+                     Teuchos::outArg(any));
+  if (any && !f_thyra.is_null())
+    Thyra::assign(f_thyra.ptr(), std::numeric_limits<double>::quiet_NaN());
   if (any && failure_.empty()) failure_ = "numerical failure on another rank";
 }
 

@@ -16,7 +16,10 @@ class SolidModelEvaluator : public Thyra::StateFuncModelEvaluatorBase<double> {
  public:
   SolidModelEvaluator(StaticProblem& problem, const Vector& initial_guess);
 
-  void set_W_factory(const Teuchos::RCP<const Thyra::LinearOpWithSolveFactoryBase<double>>& factory) { w_factory_ = factory; }
+  void set_W_factory(
+      const Teuchos::RCP<const Thyra::LinearOpWithSolveFactoryBase<double>>& factory) {
+    w_factory_ = factory;
+  }
   void set_initial_guess(const Vector& guess);
 
   /// The message of the last numerical failure inside an evaluation (empty when none). Such a
@@ -28,7 +31,9 @@ class SolidModelEvaluator : public Thyra::StateFuncModelEvaluatorBase<double> {
   Teuchos::RCP<const Thyra::VectorSpaceBase<double>> get_x_space() const override { return space_; }
   Teuchos::RCP<const Thyra::VectorSpaceBase<double>> get_f_space() const override { return space_; }
   Thyra::ModelEvaluatorBase::InArgs<double> getNominalValues() const override { return nominal_; }
-  Teuchos::RCP<const Thyra::LinearOpWithSolveFactoryBase<double>> get_W_factory() const override { return w_factory_; }
+  Teuchos::RCP<const Thyra::LinearOpWithSolveFactoryBase<double>> get_W_factory() const override {
+    return w_factory_;
+  }
   Thyra::ModelEvaluatorBase::InArgs<double> createInArgs() const override;
   Teuchos::RCP<Thyra::LinearOpBase<double>> create_W_op() const override;
 

@@ -23,7 +23,8 @@ StableTimeStep::StableTimeStep(const ModelOperators& ops, const Vector& mass_own
   auto v = v_.getLocalViewHost(Tpetra::Access::OverwriteAll);
   const auto& map = *mass_owned.getMap();
   for (std::size_t k = 0; k < v.extent(0); ++k)
-    v(k, 0) = std::sin(1.0 + 0.7 * static_cast<double>(map.getGlobalElement(static_cast<int>(k))) * 1.618);
+    v(k, 0) = std::sin(1.0 + 0.7 * static_cast<double>(map.getGlobalElement(static_cast<int>(k))) *
+                                 1.618);
 }
 
 double StableTimeStep::estimate(const Vector& d_owned, int iterations) {
@@ -44,7 +45,8 @@ double StableTimeStep::estimate(const Vector& d_owned, int iterations) {
     ops_.internal_force(d_, f1_);
     f1_.update(-1.0 / scale, f0_, 1.0 / scale);
     v_.elementWiseMultiply(1.0, inv_sqrt_mass_, f1_, 0.0);
-    lambda = reproducible_norm2(v_);  // ||A v|| with ||v|| = 1 approaches the largest eigenvalue from below
+    lambda = reproducible_norm2(
+        v_);  // ||A v|| with ||v|| = 1 approaches the largest eigenvalue from below
   }
   // Power iteration underestimates lambda_max: add 5 % so that dt_crit errs on the safe side.
   omega_ = std::sqrt(1.05 * lambda);

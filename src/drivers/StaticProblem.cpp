@@ -4,7 +4,8 @@
 
 namespace efg {
 
-StaticProblem::StaticProblem(const Model& model) : StaticProblem(std::make_shared<const ModelOperators>(model)) {}
+StaticProblem::StaticProblem(const Model& model)
+    : StaticProblem(std::make_shared<const ModelOperators>(model)) {}
 
 StaticProblem::StaticProblem(std::shared_ptr<const ModelOperators> operators)
     : ops_(std::move(operators)),

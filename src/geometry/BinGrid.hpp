@@ -16,7 +16,9 @@ struct BinGrid {
   double lower[3] = {0.0, 0.0, 0.0};
   std::int64_t bins[3] = {1, 1, 1};
 
-  KOKKOS_INLINE_FUNCTION std::size_t total() const { return static_cast<std::size_t>(bins[0] * bins[1] * bins[2]); }
+  KOKKOS_INLINE_FUNCTION std::size_t total() const {
+    return static_cast<std::size_t>(bins[0] * bins[1] * bins[2]);
+  }
 
   /// The bin holding x (clamped to the grid).
   KOKKOS_INLINE_FUNCTION std::size_t bin_of(const double* x) const {
@@ -34,7 +36,8 @@ struct BinGrid {
 
   /// Calls visit(bin) for every bin overlapping the box x +- radius, in a fixed order.
   template <class Visit>
-  KOKKOS_INLINE_FUNCTION void for_each_bin_near(const double* x, double radius, Visit&& visit) const {
+  KOKKOS_INLINE_FUNCTION void for_each_bin_near(const double* x, double radius,
+                                                Visit&& visit) const {
     std::int64_t lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
     for (int d = 0; d < dim; ++d) {
       const auto l = static_cast<std::int64_t>((x[d] - radius - lower[d]) / bin_size);

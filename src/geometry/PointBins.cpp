@@ -7,7 +7,8 @@
 
 namespace efg {
 
-PointBins::PointBins(const double* coords, std::size_t count, int dim, double bin_size) : coords_(coords) {
+PointBins::PointBins(const double* coords, std::size_t count, int dim, double bin_size)
+    : coords_(coords) {
   if (!(bin_size > 0)) throw std::invalid_argument("PointBins: bin size must be positive");
   grid_.dim = dim;
   grid_.bin_size = bin_size;
@@ -16,8 +17,10 @@ PointBins::PointBins(const double* coords, std::size_t count, int dim, double bi
     grid_.lower[d] = std::numeric_limits<double>::max();
     upper[d] = std::numeric_limits<double>::lowest();
     for (std::size_t n = 0; n < count; ++n) {
-      grid_.lower[d] = std::min(grid_.lower[d], coords[n * static_cast<std::size_t>(dim) + static_cast<std::size_t>(d)]);
-      upper[d] = std::max(upper[d], coords[n * static_cast<std::size_t>(dim) + static_cast<std::size_t>(d)]);
+      grid_.lower[d] = std::min(
+          grid_.lower[d], coords[n * static_cast<std::size_t>(dim) + static_cast<std::size_t>(d)]);
+      upper[d] = std::max(upper[d],
+                          coords[n * static_cast<std::size_t>(dim) + static_cast<std::size_t>(d)]);
     }
     if (count == 0) grid_.lower[d] = upper[d] = 0;
     // Cap the bin count per direction so that a tiny bin size cannot exhaust memory.
@@ -27,7 +30,8 @@ PointBins::PointBins(const double* coords, std::size_t count, int dim, double bi
   // Keep the total number of bins near the number of points at most.
   while (static_cast<double>(grid_.total()) > 8.0 * static_cast<double>(count) + 64.0) {
     grid_.bin_size *= 2.0;
-    for (int d = 0; d < dim; ++d) grid_.bins[d] = static_cast<std::int64_t>((upper[d] - grid_.lower[d]) / grid_.bin_size) + 1;
+    for (int d = 0; d < dim; ++d)
+      grid_.bins[d] = static_cast<std::int64_t>((upper[d] - grid_.lower[d]) / grid_.bin_size) + 1;
   }
   const auto total = grid_.total();
   start_.assign(total + 1, 0);

@@ -22,8 +22,8 @@ class PointBins {
 
   int dimension() const { return grid_.dim; }
   const BinGrid& grid() const { return grid_; }
-  const std::vector<std::size_t>& bin_start() const { return start_; }  ///< CSR offsets per bin
-  const std::vector<std::size_t>& bin_points() const { return points_; } ///< point indices by bin
+  const std::vector<std::size_t>& bin_start() const { return start_; }    ///< CSR offsets per bin
+  const std::vector<std::size_t>& bin_points() const { return points_; }  ///< point indices by bin
 
  private:
   const double* coords_;

@@ -22,7 +22,8 @@ class File {
   void close();
 
  private:
-  File(int id, std::string path, bool writing) : id_(id), path_(std::move(path)), writing_(writing) {}
+  File(int id, std::string path, bool writing)
+      : id_(id), path_(std::move(path)), writing_(writing) {}
   int id_ = -1;
   std::string path_;
   bool writing_ = false;

@@ -74,8 +74,7 @@ BackgroundMesh read_exodus_mesh(const std::string& path) {
   }
 
   const auto block_ids = read_ids(f, EX_ELEM_BLOCK, nblocks);
-  const auto block_names =
-      read_names(f, EX_ELEM_BLOCK, block_ids.size(), block_ids, "block_");
+  const auto block_names = read_names(f, EX_ELEM_BLOCK, block_ids.size(), block_ids, "block_");
   for (std::size_t b = 0; b < block_ids.size(); ++b) {
     char type_name[MAX_STR_LENGTH + 1] = {};
     std::int64_t count = 0, per_cell = 0, edges = 0, faces = 0, attributes = 0;
@@ -84,8 +83,8 @@ BackgroundMesh read_exodus_mesh(const std::string& path) {
             "reading an element block");
     const auto type = cell_type_from_exodus_name(type_name);
     if (!type || cell_node_count(*type) != per_cell)
-      throw InputError("mesh file '" + path + "': block '" + block_names[b] + "' has element type '" +
-                       type_name + "' with " + std::to_string(per_cell) +
+      throw InputError("mesh file '" + path + "': block '" + block_names[b] +
+                       "' has element type '" + type_name + "' with " + std::to_string(per_cell) +
                        " nodes; supported: HEX8, TETRA4, WEDGE6 (3D), QUAD4, TRI3 (2D)");
     ElementBlock block;
     block.name = block_names[b];
@@ -182,7 +181,8 @@ ExodusResults read_exodus_results(const std::string& path) {
     if (!globals.empty()) {
       f.check(ex_get_glob_vars(f.id(), step, static_cast<int>(globals.size()), globals.data()),
               "reading global variables");
-      for (std::size_t v = 0; v < globals.size(); ++v) r.global[global_names[v]].push_back(globals[v]);
+      for (std::size_t v = 0; v < globals.size(); ++v)
+        r.global[global_names[v]].push_back(globals[v]);
     }
   }
   return r;

@@ -50,17 +50,18 @@ ExodusWriter::ExodusWriter(const std::string& path, const BackgroundMesh& mesh,
 void ExodusWriter::write_mesh(const BackgroundMesh& mesh, const std::string& title) {
   const int id = file_->id();
   const auto dim = mesh.dimension;
-  file_->check(ex_put_init(id, title.substr(0, MAX_LINE_LENGTH).c_str(), dim,
-                           static_cast<std::int64_t>(nodes_),
-                           static_cast<std::int64_t>(mesh.cell_count()),
-                           static_cast<std::int64_t>(mesh.blocks.size()),
-                           static_cast<std::int64_t>(mesh.node_sets.size()),
-                           static_cast<std::int64_t>(mesh.side_sets.size())),
-               "writing the header");
+  file_->check(
+      ex_put_init(id, title.substr(0, MAX_LINE_LENGTH).c_str(), dim,
+                  static_cast<std::int64_t>(nodes_), static_cast<std::int64_t>(mesh.cell_count()),
+                  static_cast<std::int64_t>(mesh.blocks.size()),
+                  static_cast<std::int64_t>(mesh.node_sets.size()),
+                  static_cast<std::int64_t>(mesh.side_sets.size())),
+      "writing the header");
   std::vector<double> xyz[3];
   for (std::size_t n = 0; n < nodes_; ++n)
     for (int d = 0; d < dim; ++d)
-      xyz[d].push_back(mesh.coordinates[n * static_cast<std::size_t>(dim) + static_cast<std::size_t>(d)]);
+      xyz[d].push_back(
+          mesh.coordinates[n * static_cast<std::size_t>(dim) + static_cast<std::size_t>(d)]);
   file_->check(ex_put_coord(id, xyz[0].data(), xyz[1].data(), dim == 3 ? xyz[2].data() : nullptr),
                "writing coordinates");
   NameArray coord_names(std::vector<std::string>{"x", "y", "z"});
@@ -86,12 +87,14 @@ void ExodusWriter::write_mesh(const BackgroundMesh& mesh, const std::string& tit
 
   names.clear();
   for (const auto& s : mesh.node_sets) {
-    file_->check(ex_put_set_param(id, EX_NODE_SET, s.id, static_cast<std::int64_t>(s.nodes.size()), 0),
-                 "writing a node set");
+    file_->check(
+        ex_put_set_param(id, EX_NODE_SET, s.id, static_cast<std::int64_t>(s.nodes.size()), 0),
+        "writing a node set");
     std::vector<std::int64_t> entries;
     for (auto n : s.nodes) entries.push_back(n + 1);
     if (!entries.empty())
-      file_->check(ex_put_set(id, EX_NODE_SET, s.id, entries.data(), nullptr), "writing a node set");
+      file_->check(ex_put_set(id, EX_NODE_SET, s.id, entries.data(), nullptr),
+                   "writing a node set");
     names.push_back(s.name);
   }
   if (!names.empty())
@@ -100,8 +103,9 @@ void ExodusWriter::write_mesh(const BackgroundMesh& mesh, const std::string& tit
 
   names.clear();
   for (const auto& s : mesh.side_sets) {
-    file_->check(ex_put_set_param(id, EX_SIDE_SET, s.id, static_cast<std::int64_t>(s.cells.size()), 0),
-                 "writing a side set");
+    file_->check(
+        ex_put_set_param(id, EX_SIDE_SET, s.id, static_cast<std::int64_t>(s.cells.size()), 0),
+        "writing a side set");
     std::vector<std::int64_t> cells, sides;
     for (std::size_t i = 0; i < s.cells.size(); ++i) {
       cells.push_back(s.cells[i] + 1);
@@ -126,8 +130,9 @@ void ExodusWriter::write_variable_names(int type, const std::vector<std::string>
                "writing variable names");
   if (t == EX_ELEM_BLOCK) {
     std::vector<int> truth(blocks_.size() * names.size(), 1);
-    file_->check(ex_put_truth_table(file_->id(), t, static_cast<int>(blocks_.size()), n, truth.data()),
-                 "writing the element truth table");
+    file_->check(
+        ex_put_truth_table(file_->id(), t, static_cast<int>(blocks_.size()), n, truth.data()),
+        "writing the element truth table");
   }
 }
 

@@ -7,16 +7,17 @@
 
 namespace efg {
 
-ResultsOutput::ResultsOutput(const CommPtr& comm, const std::string& path, const BackgroundMesh& mesh,
-                             const Teuchos::RCP<const Map>& owned_nodes, const OutputLayout& layout,
-                             const std::string& title)
+ResultsOutput::ResultsOutput(const CommPtr& comm, const std::string& path,
+                             const BackgroundMesh& mesh, const Teuchos::RCP<const Map>& owned_nodes,
+                             const OutputLayout& layout, const std::string& title)
     : comm_(comm), nodes_(mesh.node_count()) {
   std::vector<GlobalOrdinal> gids;
   if (comm->getRank() == 0)
     for (std::size_t n = 0; n < nodes_; ++n) gids.push_back(static_cast<GlobalOrdinal>(n));
-  root_map_ = Teuchos::rcp(new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(),
-                                   Teuchos::ArrayView<const GlobalOrdinal>(gids.data(), static_cast<int>(gids.size())),
-                                   0, comm));
+  root_map_ = Teuchos::rcp(
+      new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(),
+              Teuchos::ArrayView<const GlobalOrdinal>(gids.data(), static_cast<int>(gids.size())),
+              0, comm));
   gather_ = Teuchos::rcp(new Tpetra::Import<>(owned_nodes, root_map_));
   // Rank 0 creates the file; the others learn whether that worked so that all ranks agree.
   int ok = 1;
@@ -30,10 +31,13 @@ ResultsOutput::ResultsOutput(const CommPtr& comm, const std::string& path, const
     }
   }
   Teuchos::broadcast(*comm, 0, &ok);
-  if (!ok) throw std::runtime_error(comm->getRank() == 0 ? error : "results file could not be created on rank 0");
+  if (!ok)
+    throw std::runtime_error(comm->getRank() == 0 ? error
+                                                  : "results file could not be created on rank 0");
 }
 
-void ResultsOutput::write(double time, const MultiVector& nodal, const std::vector<double>& global) {
+void ResultsOutput::write(double time, const MultiVector& nodal,
+                          const std::vector<double>& global) {
   MultiVector gathered(root_map_, nodal.getNumVectors());
   gathered.doImport(nodal, *gather_, Tpetra::INSERT);
   if (comm_->getRank() != 0) return;

@@ -20,7 +20,8 @@ class ResultsOutput {
 
   /// Collective. `layout.nodal` names the columns of the owned-node multivectors passed to write().
   ResultsOutput(const CommPtr& comm, const std::string& path, const BackgroundMesh& mesh,
-                const Teuchos::RCP<const Map>& owned_nodes, const OutputLayout& layout, const std::string& title);
+                const Teuchos::RCP<const Map>& owned_nodes, const OutputLayout& layout,
+                const std::string& title);
 
   /// Collective: gathers `nodal` (owned map, one column per layout.nodal name) and writes a record.
   void write(double time, const MultiVector& nodal, const std::vector<double>& global);

@@ -14,7 +14,7 @@ using LocalIndex = std::int32_t;
 
 struct ElementBlock {
   std::string name;
-  std::int64_t id = 0;            ///< Exodus block id
+  std::int64_t id = 0;  ///< Exodus block id
   CellType type = CellType::hex8;
   std::vector<LocalIndex> connectivity;  ///< 0-based mesh node indices, cell after cell
 

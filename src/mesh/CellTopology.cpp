@@ -22,11 +22,16 @@ const std::vector<std::vector<int>> kWedge6Sides = {
 
 const std::vector<std::vector<int>>& side_table(CellType type) {
   switch (type) {
-    case CellType::quad4: return kQuad4Sides;
-    case CellType::tri3: return kTri3Sides;
-    case CellType::hex8: return kHex8Sides;
-    case CellType::tet4: return kTet4Sides;
-    case CellType::wedge6: return kWedge6Sides;
+    case CellType::quad4:
+      return kQuad4Sides;
+    case CellType::tri3:
+      return kTri3Sides;
+    case CellType::hex8:
+      return kHex8Sides;
+    case CellType::tet4:
+      return kTet4Sides;
+    case CellType::wedge6:
+      return kWedge6Sides;
   }
   throw std::logic_error("unknown cell type");
 }
@@ -39,16 +44,23 @@ int cell_dimension(CellType type) {
 
 int cell_node_count(CellType type) {
   switch (type) {
-    case CellType::quad4: return 4;
-    case CellType::tri3: return 3;
-    case CellType::hex8: return 8;
-    case CellType::tet4: return 4;
-    case CellType::wedge6: return 6;
+    case CellType::quad4:
+      return 4;
+    case CellType::tri3:
+      return 3;
+    case CellType::hex8:
+      return 8;
+    case CellType::tet4:
+      return 4;
+    case CellType::wedge6:
+      return 6;
   }
   throw std::logic_error("unknown cell type");
 }
 
-int cell_side_count(CellType type) { return static_cast<int>(side_table(type).size()); }
+int cell_side_count(CellType type) {
+  return static_cast<int>(side_table(type).size());
+}
 
 std::vector<int> cell_side_nodes(CellType type, int side) {
   const auto& table = side_table(type);
@@ -59,22 +71,32 @@ std::vector<int> cell_side_nodes(CellType type, int side) {
 
 std::string cell_exodus_name(CellType type) {
   switch (type) {
-    case CellType::quad4: return "QUAD4";
-    case CellType::tri3: return "TRI3";
-    case CellType::hex8: return "HEX8";
-    case CellType::tet4: return "TETRA4";
-    case CellType::wedge6: return "WEDGE6";
+    case CellType::quad4:
+      return "QUAD4";
+    case CellType::tri3:
+      return "TRI3";
+    case CellType::hex8:
+      return "HEX8";
+    case CellType::tet4:
+      return "TETRA4";
+    case CellType::wedge6:
+      return "WEDGE6";
   }
   throw std::logic_error("unknown cell type");
 }
 
 std::string cell_scene_name(CellType type) {
   switch (type) {
-    case CellType::quad4: return "quad4";
-    case CellType::tri3: return "tri3";
-    case CellType::hex8: return "hex8";
-    case CellType::tet4: return "tet4";
-    case CellType::wedge6: return "wedge6";
+    case CellType::quad4:
+      return "quad4";
+    case CellType::tri3:
+      return "tri3";
+    case CellType::hex8:
+      return "hex8";
+    case CellType::tet4:
+      return "tet4";
+    case CellType::wedge6:
+      return "wedge6";
   }
   throw std::logic_error("unknown cell type");
 }
@@ -97,7 +119,8 @@ CellGeometry cell_geometry(CellType type, const double* x) {
   const auto rule = reference_rule(type, 2);
   const auto dim = static_cast<std::size_t>(cell_dimension(type));
   double point[3];
-  for (std::size_t q = 0; q < rule.weight.size(); ++q) g.volume += rule.weight[q] * map_to_cell(type, x, &rule.xi[q * dim], point);
+  for (std::size_t q = 0; q < rule.weight.size(); ++q)
+    g.volume += rule.weight[q] * map_to_cell(type, x, &rule.xi[q * dim], point);
   g.min_corner_det = std::numeric_limits<double>::max();
   const auto corners = reference_corners(type);
   for (std::size_t c = 0; c < corners.size() / dim; ++c)

@@ -31,8 +31,8 @@ std::string cell_scene_name(CellType type);
 
 /// Geometry of one cell from its node coordinates (dim components per node, node after node).
 struct CellGeometry {
-  double volume = 0.0;           ///< area in 2D
-  double min_corner_det = 0.0;   ///< smallest Jacobian determinant over the corners
+  double volume = 0.0;          ///< area in 2D
+  double min_corner_det = 0.0;  ///< smallest Jacobian determinant over the corners
 };
 CellGeometry cell_geometry(CellType type, const double* node_coords);
 

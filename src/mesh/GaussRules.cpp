@@ -114,7 +114,8 @@ ReferenceRule reference_rule(CellType type, int n) {
       for (std::size_t i = 0; i < m; ++i)
         for (std::size_t j = 0; j < m; ++j)
           for (std::size_t k = 0; k < m; ++k)
-            add({(1 + g[i]) * (1 - g[j]) / 4, (1 + g[j]) / 2, g[k]}, w[i] * w[j] * w[k] * (1 - g[j]) / 8);
+            add({(1 + g[i]) * (1 - g[j]) / 4, (1 + g[j]) / 2, g[k]},
+                w[i] * w[j] * w[k] * (1 - g[j]) / 8);
       break;
     case CellType::tet4:
       for (std::size_t i = 0; i < m; ++i)
@@ -141,17 +142,23 @@ double map_to_cell(CellType type, const double* x, const double* xi, double* poi
       for (int r = 0; r < dim; ++r) j[d][r] += x[a * dim + d] * dn[a][r];
     }
   if (dim == 2) return j[0][0] * j[1][1] - j[0][1] * j[1][0];
-  return j[0][0] * (j[1][1] * j[2][2] - j[1][2] * j[2][1]) - j[0][1] * (j[1][0] * j[2][2] - j[1][2] * j[2][0]) +
+  return j[0][0] * (j[1][1] * j[2][2] - j[1][2] * j[2][1]) -
+         j[0][1] * (j[1][0] * j[2][2] - j[1][2] * j[2][0]) +
          j[0][2] * (j[1][0] * j[2][1] - j[1][1] * j[2][0]);
 }
 
 std::vector<double> reference_corners(CellType type) {
   switch (type) {
-    case CellType::quad4: return {-1, -1, 1, -1, 1, 1, -1, 1};
-    case CellType::tri3: return {0, 0, 1, 0, 0, 1};
-    case CellType::hex8: return {-1, -1, -1, 1, -1, -1, 1, 1, -1, -1, 1, -1, -1, -1, 1, 1, -1, 1, 1, 1, 1, -1, 1, 1};
-    case CellType::tet4: return {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
-    case CellType::wedge6: return {0, 0, -1, 1, 0, -1, 0, 1, -1, 0, 0, 1, 1, 0, 1, 0, 1, 1};
+    case CellType::quad4:
+      return {-1, -1, 1, -1, 1, 1, -1, 1};
+    case CellType::tri3:
+      return {0, 0, 1, 0, 0, 1};
+    case CellType::hex8:
+      return {-1, -1, -1, 1, -1, -1, 1, 1, -1, -1, 1, -1, -1, -1, 1, 1, -1, 1, 1, 1, 1, -1, 1, 1};
+    case CellType::tet4:
+      return {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
+    case CellType::wedge6:
+      return {0, 0, -1, 1, 0, -1, 0, 1, -1, 0, 0, 1, 1, 0, 1, 0, 1, 1};
   }
   throw std::logic_error("unknown cell type");
 }

@@ -21,8 +21,8 @@ struct Lattice {
   std::size_t index(int i, int j, int k) const {
     return static_cast<std::size_t>(i) +
            static_cast<std::size_t>(n[0]) *
-               (static_cast<std::size_t>(j) + static_cast<std::size_t>(n[1]) *
-                                                  static_cast<std::size_t>(k));
+               (static_cast<std::size_t>(j) +
+                static_cast<std::size_t>(n[1]) * static_cast<std::size_t>(k));
   }
 };
 
@@ -75,8 +75,8 @@ std::string describe(const GeneratorSpec& s) {
 BackgroundMesh generate_mesh(const GeneratorSpec& s) {
   const int dim = s.dimension;
   if (cell_dimension(s.element) != dim)
-    throw InputError("mesh generator: element " + cell_scene_name(s.element) +
-                     " does not fit a " + std::to_string(dim) + "D domain");
+    throw InputError("mesh generator: element " + cell_scene_name(s.element) + " does not fit a " +
+                     std::to_string(dim) + "D domain");
   Lattice lat{dim, {1, 1, 1}};
   for (int d = 0; d < dim; ++d) {
     const auto du = static_cast<std::size_t>(d);
@@ -89,8 +89,8 @@ BackgroundMesh generate_mesh(const GeneratorSpec& s) {
   BackgroundMesh mesh;
   mesh.dimension = dim;
   mesh.source = "generated " + describe(s);
-  const std::size_t nodes = static_cast<std::size_t>(lat.n[0]) * static_cast<std::size_t>(lat.n[1]) *
-                            static_cast<std::size_t>(lat.n[2]);
+  const std::size_t nodes = static_cast<std::size_t>(lat.n[0]) *
+                            static_cast<std::size_t>(lat.n[1]) * static_cast<std::size_t>(lat.n[2]);
   std::vector<double> xyz(3 * nodes, 0.0);  // 3 components while building, trimmed for 2D
   std::mt19937_64 rng(s.seed);
   for (int k = 0; k < lat.n[2]; ++k)
@@ -131,9 +131,8 @@ BackgroundMesh generate_mesh(const GeneratorSpec& s) {
             block.connectivity.insert(block.connectivity.end(), {q[0], q[2], q[3]});
           }
         } else {
-          const std::array<LocalIndex, 8> v = {at(0, 0, 0), at(1, 0, 0), at(1, 1, 0),
-                                                at(0, 1, 0), at(0, 0, 1), at(1, 0, 1),
-                                                at(1, 1, 1), at(0, 1, 1)};
+          const std::array<LocalIndex, 8> v = {at(0, 0, 0), at(1, 0, 0), at(1, 1, 0), at(0, 1, 0),
+                                               at(0, 0, 1), at(1, 0, 1), at(1, 1, 1), at(0, 1, 1)};
           add_cells_of_hex(v, s.element, xyz.data(), block.connectivity);
         }
       }
@@ -151,7 +150,8 @@ BackgroundMesh generate_mesh(const GeneratorSpec& s) {
     std::size_t rest = node;
     std::array<std::size_t, 3> ijk{};
     for (int e = 0; e < 3; ++e) {
-      ijk[static_cast<std::size_t>(e)] = rest % static_cast<std::size_t>(lat.n[static_cast<std::size_t>(e)]);
+      ijk[static_cast<std::size_t>(e)] =
+          rest % static_cast<std::size_t>(lat.n[static_cast<std::size_t>(e)]);
       rest /= static_cast<std::size_t>(lat.n[static_cast<std::size_t>(e)]);
     }
     return static_cast<int>(ijk[static_cast<std::size_t>(d)]);

@@ -17,7 +17,8 @@ double bounding_box_measure(int dim, const std::vector<double>& x) {
   double measure = 1.0;
   for (int d = 0; d < dim; ++d) {
     double lo = x[static_cast<std::size_t>(d)], hi = lo;
-    for (std::size_t i = static_cast<std::size_t>(d); i < x.size(); i += static_cast<std::size_t>(dim)) {
+    for (std::size_t i = static_cast<std::size_t>(d); i < x.size();
+         i += static_cast<std::size_t>(dim)) {
       lo = std::min(lo, x[i]);
       hi = std::max(hi, x[i]);
     }
@@ -31,7 +32,8 @@ double bounding_box_measure(int dim, const std::vector<double>& x) {
 void validate_mesh(const BackgroundMesh& mesh) {
   const auto nodes = mesh.node_count();
   if (mesh.dimension != 2 && mesh.dimension != 3)
-    fail(mesh, "dimension " + std::to_string(mesh.dimension) + " is not supported (expected 2 or 3)");
+    fail(mesh,
+         "dimension " + std::to_string(mesh.dimension) + " is not supported (expected 2 or 3)");
   if (nodes == 0) fail(mesh, "has no nodes");
   if (mesh.blocks.empty()) fail(mesh, "has no element blocks");
   for (double x : mesh.coordinates)
@@ -56,12 +58,14 @@ void validate_mesh(const BackgroundMesh& mesh) {
         }
         for (int d = 0; d < mesh.dimension; ++d)
           x[a * static_cast<std::size_t>(mesh.dimension) + static_cast<std::size_t>(d)] =
-              mesh.coordinates[static_cast<std::size_t>(node) * static_cast<std::size_t>(mesh.dimension) +
+              mesh.coordinates[static_cast<std::size_t>(node) *
+                                   static_cast<std::size_t>(mesh.dimension) +
                                static_cast<std::size_t>(d)];
       }
       const auto g = cell_geometry(block.type, x.data());
       const double scale = std::abs(bounding_box_measure(mesh.dimension, x));
-      if (!(g.min_corner_det > 0) || !(g.volume > degenerate_cell_tolerance * scale) || scale == 0) {
+      if (!(g.min_corner_det > 0) || !(g.volume > degenerate_cell_tolerance * scale) ||
+          scale == 0) {
         std::ostringstream o;
         o << "block '" << block.name << "' cell " << c + 1 << " is "
           << (g.volume < 0 || g.min_corner_det < 0 ? "inverted" : "degenerate") << " (volume "

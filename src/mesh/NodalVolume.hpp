@@ -9,6 +9,7 @@
 namespace efg {
 
 /// Per mesh node; nodes not in `blocks` (all blocks when empty) get 0.
-std::vector<double> lumped_nodal_volumes(const BackgroundMesh& mesh, const std::vector<std::string>& blocks = {});
+std::vector<double> lumped_nodal_volumes(const BackgroundMesh& mesh,
+                                         const std::vector<std::string>& blocks = {});
 
 }  // namespace efg

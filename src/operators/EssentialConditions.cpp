@@ -15,26 +15,33 @@
 namespace efg {
 namespace {
 
-int method_of(const std::string& m) { return m == "transformation" ? 0 : m == "nitsche" ? 1 : 2; }
+int method_of(const std::string& m) {
+  return m == "transformation" ? 0 : m == "nitsche" ? 1 : 2;
+}
 
 // The particle spacing h of an owned particle of a part (support over dilation, largest direction).
 double spacing_of(const PartDiscretization& d, std::size_t particle) {
   double h = 0;
   const auto& dil = d.part->section.dilation;
   for (int k = 0; k < d.cloud.dimension; ++k)
-    h = std::max(h, d.cloud.a(particle)[k] / (dil.size() == 1 ? dil[0] : dil[static_cast<std::size_t>(k)]));
+    h = std::max(
+        h, d.cloud.a(particle)[k] / (dil.size() == 1 ? dil[0] : dil[static_cast<std::size_t>(k)]));
   return h;
 }
 
 }  // namespace
 
-EssentialConditions::EssentialConditions(const Model& model, const SolidOperator& op, const ExactSolution* exact)
-    : dim_(model.mesh.dimension), conditions_(model.scene.boundary_conditions.size()), overlap_dofs_(model.maps.overlap_dofs) {
+EssentialConditions::EssentialConditions(const Model& model, const SolidOperator& op,
+                                         const ExactSolution* exact)
+    : dim_(model.mesh.dimension),
+      conditions_(model.scene.boundary_conditions.size()),
+      overlap_dofs_(model.maps.overlap_dofs) {
   const auto& mesh = model.mesh;
   const auto udim = static_cast<std::size_t>(dim_);
   const int rank = model.partition.rank;
   double largest_modulus = 0;
-  for (const auto& m : model.scene.materials) largest_modulus = std::max(largest_modulus, m.constants.at("youngs_modulus"));
+  for (const auto& m : model.scene.materials)
+    largest_modulus = std::max(largest_modulus, m.constants.at("youngs_modulus"));
   const auto owned_rows = model.maps.owned_dofs;
   for (std::size_t c = 0; c < model.scene.boundary_conditions.size(); ++c) {
     const auto& bc = model.scene.boundary_conditions[c];
@@ -60,12 +67,14 @@ EssentialConditions::EssentialConditions(const Model& model, const SolidOperator
         bool found = false;
         for (std::size_t p = 0; p < model.parts.size() && !found; ++p) {
           const auto& d = model.parts[p];
-          const auto end = d.cloud.mesh_node.begin() + static_cast<std::ptrdiff_t>(d.cloud.owned_count);
+          const auto end =
+              d.cloud.mesh_node.begin() + static_cast<std::ptrdiff_t>(d.cloud.owned_count);
           const auto it = std::find(d.cloud.mesh_node.begin(), end, node);
           if (it == end) continue;
           found = true;
           const auto row = static_cast<std::size_t>(it - d.cloud.mesh_node.begin());
-          const double s = largest_modulus * std::pow(spacing_of(d, row), dim_ - 2) * (dim_ == 2 ? d.part->thickness : 1.0);
+          const double s = largest_modulus * std::pow(spacing_of(d, row), dim_ - 2) *
+                           (dim_ == 2 ? d.part->thickness : 1.0);
           for (int i = 0; i < dim_; ++i) {
             if (!mask[static_cast<std::size_t>(i)]) continue;
             NodeConstraint nc;
@@ -75,38 +84,49 @@ EssentialConditions::EssentialConditions(const Model& model, const SolidOperator
             nc.scale = s;
             nc.base = prescribed(d.cloud.x(row), static_cast<std::size_t>(i));
             nc.curve = bc.curve;
-            for (auto k = d.particle_values.offsets[row]; k < d.particle_values.offsets[row + 1]; ++k) {
-              nc.nodes.push_back(op.overlap_node(p)[static_cast<std::size_t>(d.particle_values.particles[k])]);
+            for (auto k = d.particle_values.offsets[row]; k < d.particle_values.offsets[row + 1];
+                 ++k) {
+              nc.nodes.push_back(
+                  op.overlap_node(p)[static_cast<std::size_t>(d.particle_values.particles[k])]);
               nc.phi.push_back(d.particle_values.values[k]);
             }
             nodes_.push_back(std::move(nc));
           }
         }
         if (!found)
-          throw InputError(model.scene.file + ": boundary condition '" + bc.name + "': node " + std::to_string(node + 1) +
-                           " of node set '" + bc.node_set + "' is not a particle of any meshfree part");
+          throw InputError(model.scene.file + ": boundary condition '" + bc.name + "': node " +
+                           std::to_string(node + 1) + " of node set '" + bc.node_set +
+                           "' is not a particle of any meshfree part");
       }
 
     // Boundary points on the sides the node set covers.
     long long sides_found = 0;
     for (std::size_t p = 0; p < model.parts.size(); ++p) {
       const auto& d = model.parts[p];
-      const auto material = solid_material(*model.scene.find_material(d.part->material), *d.part, dim_);
+      const auto material =
+          solid_material(*model.scene.find_material(d.part->material), *d.part, dim_);
       const double thickness = dim_ == 2 ? d.part->thickness : 1.0;
       std::vector<SidePoint> pts;
       std::vector<double> beta;
       for (const auto& [cell, side] : boundary_sides(mesh, d.part->blocks)) {
         const auto nodes = mesh.side_node_indices(cell, side);
-        if (!std::all_of(nodes.begin(), nodes.end(), [&](LocalIndex n) { return in_set[static_cast<std::size_t>(n)] != 0; })) continue;
+        if (!std::all_of(nodes.begin(), nodes.end(),
+                         [&](LocalIndex n) { return in_set[static_cast<std::size_t>(n)] != 0; }))
+          continue;
         ++sides_found;
-        if (model.partition.owner[static_cast<std::size_t>(*std::min_element(nodes.begin(), nodes.end()))] != rank) continue;
+        if (model.partition
+                .owner[static_cast<std::size_t>(*std::min_element(nodes.begin(), nodes.end()))] !=
+            rank)
+          continue;
         // h of the side: its longest edge to a neighbouring side node.
         double h = 0;
         for (std::size_t a = 0; a < nodes.size(); ++a) {
           double d2 = 0;
           for (std::size_t k = 0; k < udim; ++k) {
-            const double dx = mesh.coordinates[static_cast<std::size_t>(nodes[a]) * udim + k] -
-                              mesh.coordinates[static_cast<std::size_t>(nodes[(a + 1) % nodes.size()]) * udim + k];
+            const double dx =
+                mesh.coordinates[static_cast<std::size_t>(nodes[a]) * udim + k] -
+                mesh.coordinates[static_cast<std::size_t>(nodes[(a + 1) % nodes.size()]) * udim +
+                                 k];
             d2 += dx * dx;
           }
           h = std::max(h, std::sqrt(d2));
@@ -118,14 +138,17 @@ EssentialConditions::EssentialConditions(const Model& model, const SolidOperator
       }
       if (pts.empty()) continue;
       std::vector<double> x;
-      for (const auto& q : pts) x.insert(x.end(), q.x.begin(), q.x.begin() + static_cast<std::ptrdiff_t>(udim));
-      const auto v = evaluate_shape_functions(d.cloud, x.data(), pts.size(), true, [&](std::size_t q) {
-        return "boundary point " + std::to_string(q) + " of condition '" + bc.name + "'";
-      });
+      for (const auto& q : pts)
+        x.insert(x.end(), q.x.begin(), q.x.begin() + static_cast<std::ptrdiff_t>(udim));
+      const auto v =
+          evaluate_shape_functions(d.cloud, x.data(), pts.size(), true, [&](std::size_t q) {
+            return "boundary point " + std::to_string(q) + " of condition '" + bc.name + "'";
+          });
       for (std::size_t q = 0; q < pts.size(); ++q) {
         BoundaryPoint b;
         b.condition = c;
-        for (std::size_t k = 0; k < 3; ++k) b.weighted_normal[k] = pts[q].normal[k] * pts[q].weight * thickness;
+        for (std::size_t k = 0; k < 3; ++k)
+          b.weighted_normal[k] = pts[q].normal[k] * pts[q].weight * thickness;
         b.area = pts[q].weight * thickness;
         b.constrained = mask;
         for (std::size_t k = 0; k < udim; ++k)
@@ -144,15 +167,18 @@ EssentialConditions::EssentialConditions(const Model& model, const SolidOperator
       }
     }
     if (method != 0 && sides_found == 0)
-      throw InputError(model.scene.file + ": boundary condition '" + bc.name + "': node set '" + bc.node_set +
-                       "' covers no side of a meshfree part, which method " + bc.method +
+      throw InputError(model.scene.file + ": boundary condition '" + bc.name + "': node set '" +
+                       bc.node_set + "' covers no side of a meshfree part, which method " +
+                       bc.method +
                        " integrates over; use method transformation for point constraints");
   }
   build_reaction_weights(model);
 }
 
 void EssentialConditions::add_couplings(CouplingGraph& graph) const {
-  for (const auto& c : nodes_) graph.add_row(c.owned_row / dim_, c.nodes.data(), c.nodes.size());  // owned nodes lead the overlap order
+  for (const auto& c : nodes_)
+    graph.add_row(c.owned_row / dim_, c.nodes.data(),
+                  c.nodes.size());  // owned nodes lead the overlap order
   for (const auto& p : points_) graph.add_clique(p.nodes.data(), p.nodes.size());
 }
 
@@ -164,15 +190,18 @@ void EssentialConditions::set_factor(const LoadFactor& factor) {
   }
 }
 
-double EssentialConditions::constrained_value(const NodeConstraint& c, const Vector& d_overlap) const {
+double EssentialConditions::constrained_value(const NodeConstraint& c,
+                                              const Vector& d_overlap) const {
   const auto u = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
   double value = 0;
-  for (std::size_t k = 0; k < c.nodes.size(); ++k) value += c.phi[k] * u(static_cast<std::size_t>(c.nodes[k] * dim_ + c.component), 0);
+  for (std::size_t k = 0; k < c.nodes.size(); ++k)
+    value += c.phi[k] * u(static_cast<std::size_t>(c.nodes[k] * dim_ + c.component), 0);
   return value;
 }
 
 template <int Dim>
-void EssentialConditions::point_terms(const BoundaryPoint& p, const Vector& d_overlap, Vector* r_overlap, FEMatrix* K) const {
+void EssentialConditions::point_terms(const BoundaryPoint& p, const Vector& d_overlap,
+                                      Vector* r_overlap, FEMatrix* K) const {
   const auto d = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
   const std::size_t n = p.nodes.size();
   double H[Dim][Dim] = {}, u[Dim] = {};
@@ -183,10 +212,13 @@ void EssentialConditions::point_terms(const BoundaryPoint& p, const Vector& d_ov
       for (int j = 0; j < Dim; ++j) H[i][j] += di * p.grad[a * Dim + static_cast<std::size_t>(j)];
     }
   double P[Dim][Dim] = {}, A[Dim][Dim][Dim][Dim] = {};
-  if (!physics::stress_and_tangent<Dim>(p.material, H, P, A)) throw NumericalError("det F <= 0 at a boundary point of an essential condition");
+  if (!physics::stress_and_tangent<Dim>(p.material, H, P, A))
+    throw NumericalError("det F <= 0 at a boundary point of an essential condition");
   double gap[Dim] = {}, Pn[Dim] = {};
   for (int i = 0; i < Dim; ++i) {
-    gap[i] = p.constrained[static_cast<std::size_t>(i)] ? u[i] - p.value[static_cast<std::size_t>(i)] : 0.0;
+    gap[i] = p.constrained[static_cast<std::size_t>(i)]
+                 ? u[i] - p.value[static_cast<std::size_t>(i)]
+                 : 0.0;
     for (int j = 0; j < Dim; ++j) Pn[i] += P[i][j] * p.weighted_normal[static_cast<std::size_t>(j)];
   }
   // S_a[k][i] = sum_jl A_kjil dphi_a/dX_l n_j dA: traction component k of the virtual
@@ -197,10 +229,14 @@ void EssentialConditions::point_terms(const BoundaryPoint& p, const Vector& d_ov
       for (int i = 0; i < Dim; ++i) {
         double v = 0;
         for (int j = 0; j < Dim; ++j)
-          for (int l = 0; l < Dim; ++l) v += A[k][j][i][l] * p.grad[a * Dim + static_cast<std::size_t>(l)] * p.weighted_normal[static_cast<std::size_t>(j)];
+          for (int l = 0; l < Dim; ++l)
+            v += A[k][j][i][l] * p.grad[a * Dim + static_cast<std::size_t>(l)] *
+                 p.weighted_normal[static_cast<std::size_t>(j)];
         S_table[(a * Dim + static_cast<std::size_t>(k)) * Dim + static_cast<std::size_t>(i)] = v;
       }
-  auto S = [&](std::size_t a, int k, int i) { return S_table[(a * Dim + static_cast<std::size_t>(k)) * Dim + static_cast<std::size_t>(i)]; };
+  auto S = [&](std::size_t a, int k, int i) {
+    return S_table[(a * Dim + static_cast<std::size_t>(k)) * Dim + static_cast<std::size_t>(i)];
+  };
   const bool consistency = p.method != 2, stabilized = p.method != 0, symmetric = p.method == 1;
   if (r_overlap) {
     auto r = r_overlap->getLocalViewHost(Tpetra::Access::ReadWrite);
@@ -221,7 +257,8 @@ void EssentialConditions::point_terms(const BoundaryPoint& p, const Vector& d_ov
     std::vector<int> cols(n * Dim);
     std::vector<double> vals(n * Dim);
     for (std::size_t b = 0; b < n; ++b)
-      for (int k = 0; k < Dim; ++k) cols[b * Dim + static_cast<std::size_t>(k)] = p.nodes[b] * Dim + k;
+      for (int k = 0; k < Dim; ++k)
+        cols[b * Dim + static_cast<std::size_t>(k)] = p.nodes[b] * Dim + k;
     for (std::size_t a = 0; a < n; ++a)
       for (int i = 0; i < Dim; ++i) {
         for (std::size_t b = 0; b < n; ++b)
@@ -234,27 +271,33 @@ void EssentialConditions::point_terms(const BoundaryPoint& p, const Vector& d_ov
             if (symmetric && p.constrained[static_cast<std::size_t>(k)]) v -= S(a, k, i) * p.phi[b];
             vals[b * Dim + static_cast<std::size_t>(k)] = v;
           }
-        K->sumIntoLocalValues(p.nodes[a] * Dim + i, static_cast<int>(cols.size()), vals.data(), cols.data());
+        K->sumIntoLocalValues(p.nodes[a] * Dim + i, static_cast<int>(cols.size()), vals.data(),
+                              cols.data());
       }
   }
 }
 
 void EssentialConditions::add_boundary_terms(const Vector& d_overlap, Vector& r_overlap) const {
   for (const auto& p : points_) {
-    if (dim_ == 2) point_terms<2>(p, d_overlap, &r_overlap, nullptr);
-    else point_terms<3>(p, d_overlap, &r_overlap, nullptr);
+    if (dim_ == 2)
+      point_terms<2>(p, d_overlap, &r_overlap, nullptr);
+    else
+      point_terms<3>(p, d_overlap, &r_overlap, nullptr);
   }
 }
 
 void EssentialConditions::add_boundary_terms(const Vector& d_overlap, FEMatrix& K) const {
   for (const auto& p : points_) {
-    if (dim_ == 2) point_terms<2>(p, d_overlap, nullptr, &K);
-    else point_terms<3>(p, d_overlap, nullptr, &K);
+    if (dim_ == 2)
+      point_terms<2>(p, d_overlap, nullptr, &K);
+    else
+      point_terms<3>(p, d_overlap, nullptr, &K);
   }
 }
 
 void EssentialConditions::replace_rows(const Vector& d_overlap, Vector& r_owned) const {
-  for (const auto& c : nodes_) r_owned.replaceLocalValue(c.owned_row, c.scale * (constrained_value(c, d_overlap) - c.value));
+  for (const auto& c : nodes_)
+    r_owned.replaceLocalValue(c.owned_row, c.scale * (constrained_value(c, d_overlap) - c.value));
 }
 
 void EssentialConditions::replace_rows(FEMatrix& K) const {
@@ -274,7 +317,8 @@ void EssentialConditions::replace_rows(FEMatrix& K) const {
     cols.clear();
     vals.clear();
     for (std::size_t k = 0; k < c.nodes.size(); ++k) {
-      cols.push_back(cols_map.getLocalElement(overlap_dofs_->getGlobalElement(c.nodes[k] * dim_ + c.component)));
+      cols.push_back(cols_map.getLocalElement(
+          overlap_dofs_->getGlobalElement(c.nodes[k] * dim_ + c.component)));
       vals.push_back(c.scale * c.phi[k]);
     }
     K.replaceLocalValues(c.owned_row, static_cast<int>(cols.size()), vals.data(), cols.data());
@@ -292,12 +336,15 @@ void EssentialConditions::build_reaction_weights(const Model& model) {
   {
     auto s = overlap.getLocalViewHost(Tpetra::Access::ReadWrite);
     for (const auto& p : points_)
-      for (std::size_t a = 0; a < p.nodes.size(); ++a) s(static_cast<std::size_t>(p.nodes[a]), p.condition) += std::abs(p.phi[a]) * p.area;
+      for (std::size_t a = 0; a < p.nodes.size(); ++a)
+        s(static_cast<std::size_t>(p.nodes[a]), p.condition) += std::abs(p.phi[a]) * p.area;
     for (const auto& c : nodes_)
       if (!has_sides[c.condition])
-        for (std::size_t a = 0; a < c.nodes.size(); ++a) s(static_cast<std::size_t>(c.nodes[a]), c.condition) += std::abs(c.phi[a]);
+        for (std::size_t a = 0; a < c.nodes.size(); ++a)
+          s(static_cast<std::size_t>(c.nodes[a]), c.condition) += std::abs(c.phi[a]);
   }
-  owned.doExport(overlap, Tpetra::Export<>(model.maps.overlap_nodes, model.maps.owned_nodes), Tpetra::ADD);
+  owned.doExport(overlap, Tpetra::Export<>(model.maps.overlap_nodes, model.maps.owned_nodes),
+                 Tpetra::ADD);
   const auto s = owned.getLocalViewHost(Tpetra::Access::ReadOnly);
   reaction_weight_.assign(s.extent(0), std::vector<double>(conditions_, 0.0));
   for (std::size_t i = 0; i < s.extent(0); ++i) {
@@ -308,7 +355,8 @@ void EssentialConditions::build_reaction_weights(const Model& model) {
   }
 }
 
-std::vector<std::array<double, 3>> EssentialConditions::reactions(const Vector& residual_owned) const {
+std::vector<std::array<double, 3>> EssentialConditions::reactions(
+    const Vector& residual_owned) const {
   const std::size_t n = conditions_ * 3;
   std::vector<double> local(n, 0.0);
   std::vector<double> global(n, 0.0);
@@ -317,10 +365,14 @@ std::vector<std::array<double, 3>> EssentialConditions::reactions(const Vector& 
   for (std::size_t i = 0; i < reaction_weight_.size(); ++i)
     for (std::size_t c = 0; c < conditions_; ++c)
       if (reaction_weight_[i][c] > 0)
-        for (std::size_t k = 0; k < udim; ++k) local[c * 3 + k] += reaction_weight_[i][c] * r(i * udim + k, 0);
-  if (n > 0) Teuchos::reduceAll(*overlap_dofs_->getComm(), Teuchos::REDUCE_SUM, static_cast<int>(n), local.data(), global.data());
+        for (std::size_t k = 0; k < udim; ++k)
+          local[c * 3 + k] += reaction_weight_[i][c] * r(i * udim + k, 0);
+  if (n > 0)
+    Teuchos::reduceAll(*overlap_dofs_->getComm(), Teuchos::REDUCE_SUM, static_cast<int>(n),
+                       local.data(), global.data());
   std::vector<std::array<double, 3>> out(conditions_);
-  for (std::size_t c = 0; c < conditions_; ++c) out[c] = {global[3 * c], global[3 * c + 1], global[3 * c + 2]};
+  for (std::size_t c = 0; c < conditions_; ++c)
+    out[c] = {global[3 * c], global[3 * c + 1], global[3 * c + 2]};
   return out;
 }
 

@@ -12,18 +12,21 @@ namespace efg {
 namespace {
 
 // Adds phi_I(x_p) * value_p * weight_p for a batch of points of one part.
-void add_point_loads(const PartDiscretization& part, const std::vector<int>& overlap_node, const std::vector<double>& x,
-                     const std::vector<std::array<double, 3>>& value, const std::vector<double>& weight, int dim,
-                     Vector& f_overlap) {
+void add_point_loads(const PartDiscretization& part, const std::vector<int>& overlap_node,
+                     const std::vector<double>& x, const std::vector<std::array<double, 3>>& value,
+                     const std::vector<double>& weight, int dim, Vector& f_overlap) {
   if (weight.empty()) return;
-  const auto v = evaluate_shape_functions(part.cloud, x.data(), weight.size(), false,
-                                          [](std::size_t p) { return "load point " + std::to_string(p); });
+  const auto v =
+      evaluate_shape_functions(part.cloud, x.data(), weight.size(), false,
+                               [](std::size_t p) { return "load point " + std::to_string(p); });
   auto f = f_overlap.getLocalViewHost(Tpetra::Access::ReadWrite);
   for (std::size_t p = 0; p < weight.size(); ++p)
     for (auto k = v.neighbors.offsets[p]; k < v.neighbors.offsets[p + 1]; ++k) {
-      const auto node = static_cast<std::size_t>(overlap_node[static_cast<std::size_t>(v.neighbors.particles[k])]);
+      const auto node = static_cast<std::size_t>(
+          overlap_node[static_cast<std::size_t>(v.neighbors.particles[k])]);
       for (int i = 0; i < dim; ++i)
-        f(node * static_cast<std::size_t>(dim) + static_cast<std::size_t>(i), 0) += v.phi[k] * value[p][static_cast<std::size_t>(i)] * weight[p];
+        f(node * static_cast<std::size_t>(dim) + static_cast<std::size_t>(i), 0) +=
+            v.phi[k] * value[p][static_cast<std::size_t>(i)] * weight[p];
     }
 }
 
@@ -31,12 +34,14 @@ void add_point_loads(const PartDiscretization& part, const std::vector<int>& ove
 
 int part_of_block(const Scene& scene, const std::string& name) {
   for (std::size_t p = 0; p < scene.parts.size(); ++p)
-    if (std::find(scene.parts[p].blocks.begin(), scene.parts[p].blocks.end(), name) != scene.parts[p].blocks.end())
+    if (std::find(scene.parts[p].blocks.begin(), scene.parts[p].blocks.end(), name) !=
+        scene.parts[p].blocks.end())
       return static_cast<int>(p);
   return -1;
 }
 
-ExternalLoads::ExternalLoads(const Model& model, const SolidOperator& op, const ExactSolution* exact) {
+ExternalLoads::ExternalLoads(const Model& model, const SolidOperator& op,
+                             const ExactSolution* exact) {
   const auto& mesh = model.mesh;
   const int dim = mesh.dimension;
   const auto udim = static_cast<std::size_t>(dim);
@@ -47,7 +52,8 @@ ExternalLoads::ExternalLoads(const Model& model, const SolidOperator& op, const 
     const std::size_t parts = model.parts.size();
     std::vector<std::vector<double>> x(parts), w(parts);
     std::vector<std::vector<std::array<double, 3>>> val(parts);
-    auto add = [&](std::size_t part, const double* point, const std::array<double, 3>& value, double weight) {
+    auto add = [&](std::size_t part, const double* point, const std::array<double, 3>& value,
+                   double weight) {
       x[part].insert(x[part].end(), point, point + udim);
       val[part].push_back(value);
       w[part].push_back(weight);
@@ -57,10 +63,14 @@ ExternalLoads::ExternalLoads(const Model& model, const SolidOperator& op, const 
       for (std::size_t i = 0; i < set->cells.size(); ++i) {
         const auto cell = static_cast<std::size_t>(set->cells[i]);
         const auto nodes = mesh.side_node_indices(cell, set->sides[i]);
-        if (model.partition.owner[static_cast<std::size_t>(*std::min_element(nodes.begin(), nodes.end()))] != rank) continue;
+        if (model.partition
+                .owner[static_cast<std::size_t>(*std::min_element(nodes.begin(), nodes.end()))] !=
+            rank)
+          continue;
         const int part = part_of_block(model.scene, mesh.locate_cell(cell).first->name);
         if (part < 0) continue;
-        const double thickness = dim == 2 ? model.scene.parts[static_cast<std::size_t>(part)].thickness : 1.0;
+        const double thickness =
+            dim == 2 ? model.scene.parts[static_cast<std::size_t>(part)].thickness : 1.0;
         for (const auto& q : side_quadrature(mesh, cell, set->sides[i])) {
           std::array<double, 3> t{0, 0, 0};
           if (spec.type == "pressure") {
@@ -76,7 +86,8 @@ ExternalLoads::ExternalLoads(const Model& model, const SolidOperator& op, const 
           add(static_cast<std::size_t>(part), q.x.data(), t, q.weight * thickness);
         }
       }
-      for (std::size_t p = 0; p < parts; ++p) add_point_loads(model.parts[p], op.overlap_node(p), x[p], val[p], w[p], dim, f_overlap);
+      for (std::size_t p = 0; p < parts; ++p)
+        add_point_loads(model.parts[p], op.overlap_node(p), x[p], val[p], w[p], dim, f_overlap);
     } else if (spec.type == "nodal_force") {
       const auto* set = mesh.find_node_set(spec.set);
       const double share = 1.0 / static_cast<double>(set->nodes.size());
@@ -84,19 +95,24 @@ ExternalLoads::ExternalLoads(const Model& model, const SolidOperator& op, const 
         if (model.partition.owner[static_cast<std::size_t>(node)] != rank) continue;
         for (std::size_t p = 0; p < parts; ++p) {
           const auto& c = model.parts[p].cloud;
-          const auto it = std::find(c.mesh_node.begin(), c.mesh_node.begin() + static_cast<std::ptrdiff_t>(c.owned_count), node);
+          const auto it =
+              std::find(c.mesh_node.begin(),
+                        c.mesh_node.begin() + static_cast<std::ptrdiff_t>(c.owned_count), node);
           if (it == c.mesh_node.begin() + static_cast<std::ptrdiff_t>(c.owned_count)) continue;
           std::array<double, 3> force{0, 0, 0};
           for (std::size_t d = 0; d < udim; ++d) force[d] = spec.value[d];
           add(p, c.x(static_cast<std::size_t>(it - c.mesh_node.begin())), force, share);
         }
       }
-      for (std::size_t p = 0; p < parts; ++p) add_point_loads(model.parts[p], op.overlap_node(p), x[p], val[p], w[p], dim, f_overlap);
+      for (std::size_t p = 0; p < parts; ++p)
+        add_point_loads(model.parts[p], op.overlap_node(p), x[p], val[p], w[p], dim, f_overlap);
     } else if (spec.type == "body_force") {
       auto f = f_overlap.getLocalViewHost(Tpetra::Access::ReadWrite);
       for (std::size_t p = 0; p < parts; ++p) {
         const auto& part = *model.parts[p].part;
-        if (!spec.parts.empty() && std::find(spec.parts.begin(), spec.parts.end(), part.name) == spec.parts.end()) continue;
+        if (!spec.parts.empty() &&
+            std::find(spec.parts.begin(), spec.parts.end(), part.name) == spec.parts.end())
+          continue;
         const auto& ip = model.parts[p].points;
         const double thickness = dim == 2 ? part.thickness : 1.0;
         for (std::size_t q = 0; q < ip.size(); ++q) {
@@ -107,8 +123,10 @@ ExternalLoads::ExternalLoads(const Model& model, const SolidOperator& op, const 
             for (std::size_t d = 0; d < udim; ++d) b[d] = spec.value[d];
           }
           for (auto k = ip.values.offsets[q]; k < ip.values.offsets[q + 1]; ++k) {
-            const auto node = static_cast<std::size_t>(op.overlap_node(p)[static_cast<std::size_t>(ip.values.particles[k])]);
-            for (std::size_t i = 0; i < udim; ++i) f(node * udim + i, 0) += ip.values.values[k] * b[i] * ip.weight[q] * thickness;
+            const auto node = static_cast<std::size_t>(
+                op.overlap_node(p)[static_cast<std::size_t>(ip.values.particles[k])]);
+            for (std::size_t i = 0; i < udim; ++i)
+              f(node * udim + i, 0) += ip.values.values[k] * b[i] * ip.weight[q] * thickness;
           }
         }
       }

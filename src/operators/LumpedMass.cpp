@@ -21,7 +21,8 @@ struct MassKernel {
       const auto k = by_node.entry(e);
       mass += weight(static_cast<std::size_t>(by_node.row_of_entry(k))) * phi(k);
     }
-    for (int i = 0; i < dim; ++i) m(n * static_cast<std::size_t>(dim) + static_cast<std::size_t>(i), 0) += mass;
+    for (int i = 0; i < dim; ++i)
+      m(n * static_cast<std::size_t>(dim) + static_cast<std::size_t>(i), 0) += mass;
   }
 };
 
@@ -36,7 +37,8 @@ Vector lumped_mass(const ModelOperators& ops) {
     const auto& part = model.parts[p];
     const auto* material = model.scene.find_material(part.part->material);
     if (!material->density)
-      throw InputError(model.scene.file + ": material '" + material->name + "' needs a density for an explicit stage");
+      throw InputError(model.scene.file + ": material '" + material->name +
+                       "' needs a density for an explicit stage");
     const double rho = *material->density * (udim == 2 ? part.part->thickness : 1.0);
     const auto& ip = part.points;
     std::vector<double> weight(ip.weight);
@@ -46,7 +48,8 @@ Vector lumped_mass(const ModelOperators& ops) {
       node[k] = ops.solid().overlap_node(p)[static_cast<std::size_t>(ip.values.particles[k])];
     MassKernel kernel;
     kernel.dim = model.mesh.dimension;
-    kernel.by_node = gather_index(to_device(ip.values.offsets, "efg::mass offsets"), to_device(node, "efg::mass nodes"), nodes);
+    kernel.by_node = gather_index(to_device(ip.values.offsets, "efg::mass offsets"),
+                                  to_device(node, "efg::mass nodes"), nodes);
     kernel.weight = to_device(weight, "efg::mass weights");
     kernel.phi = to_device(ip.values.values, "efg::mass phi");
     kernel.m = m_overlap.getLocalViewDevice(Tpetra::Access::ReadWrite);
@@ -56,9 +59,14 @@ Vector lumped_mass(const ModelOperators& ops) {
   const auto mv = m.getLocalViewHost(Tpetra::Access::ReadOnly);
   for (std::size_t k = 0; k < mv.extent(0); ++k)
     if (!(mv(k, 0) > 0))
-      throw NumericalError("lumped mass of particle " + std::to_string(model.maps.owned_dofs->getGlobalElement(static_cast<int>(k)) / static_cast<long long>(udim) + 1) +
-                           " is " + std::to_string(mv(k, 0)) + " (expected > 0): its shape function integrates to a negative value; "
-                           "raise the part's dilation");
+      throw NumericalError(
+          "lumped mass of particle " +
+          std::to_string(model.maps.owned_dofs->getGlobalElement(static_cast<int>(k)) /
+                             static_cast<long long>(udim) +
+                         1) +
+          " is " + std::to_string(mv(k, 0)) +
+          " (expected > 0): its shape function integrates to a negative value; "
+          "raise the part's dilation");
   return m;
 }
 

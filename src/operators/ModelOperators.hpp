@@ -23,7 +23,9 @@ class ModelOperators {
   const ExactSolution* exact() const { return exact_.get(); }
 
   /// Owned values to the overlap map (owned then ghost particles).
-  void to_overlap(const Vector& owned, Vector& overlap) const { overlap.doImport(owned, *import_, Tpetra::INSERT); }
+  void to_overlap(const Vector& owned, Vector& overlap) const {
+    overlap.doImport(owned, *import_, Tpetra::INSERT);
+  }
   /// Overlap contributions summed into the owned map (owned = sum, overwritten).
   void to_owned(const Vector& overlap, Vector& owned) const {
     owned.putScalar(0.0);

@@ -11,12 +11,14 @@ std::vector<SidePoint> side_quadrature(const BackgroundMesh& mesh, std::size_t c
   const auto nodes = mesh.side_node_indices(cell, side);
   std::vector<std::array<double, 3>> x(nodes.size(), {0, 0, 0});
   for (std::size_t a = 0; a < nodes.size(); ++a)
-    for (std::size_t d = 0; d < dim; ++d) x[a][d] = mesh.coordinates[static_cast<std::size_t>(nodes[a]) * dim + d];
+    for (std::size_t d = 0; d < dim; ++d)
+      x[a][d] = mesh.coordinates[static_cast<std::size_t>(nodes[a]) * dim + d];
   std::vector<SidePoint> out;
   for (const auto& s : side_smoothing_points(x, nodes, mesh.dimension)) {
     SidePoint p;
     p.x = s.x;
-    p.weight = std::sqrt(s.weighted_normal[0] * s.weighted_normal[0] + s.weighted_normal[1] * s.weighted_normal[1] +
+    p.weight = std::sqrt(s.weighted_normal[0] * s.weighted_normal[0] +
+                         s.weighted_normal[1] * s.weighted_normal[1] +
                          s.weighted_normal[2] * s.weighted_normal[2]);
     for (std::size_t d = 0; d < 3; ++d) p.normal[d] = s.weighted_normal[d] / p.weight;
     out.push_back(p);

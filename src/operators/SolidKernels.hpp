@@ -31,13 +31,14 @@ struct DevicePoints {
   DeviceView<const int*> node;
   DeviceView<const double**> grad;
   GatherIndex by_node;
-  DeviceView<const std::size_t*> slot;  ///< position of entry k in by_node order (by_node.entry inverted)
+  DeviceView<const std::size_t*>
+      slot;  ///< position of entry k in by_node order (by_node.entry inverted)
   physics::SolidMaterial material;
 };
 
 template <int Dim, class DisplacementView>
-KOKKOS_INLINE_FUNCTION void displacement_gradient(const DevicePoints& p, const DisplacementView& u, const int q,
-                                                  double (&H)[Dim][Dim]) {
+KOKKOS_INLINE_FUNCTION void displacement_gradient(const DevicePoints& p, const DisplacementView& u,
+                                                  const int q, double (&H)[Dim][Dim]) {
   for (int i = 0; i < Dim; ++i)
     for (int j = 0; j < Dim; ++j) H[i][j] = 0.0;
   for (std::size_t k = p.offsets(q); k < p.offsets(q + 1); ++k) {
@@ -79,7 +80,8 @@ struct PointStressKernel {
 /// Component i of entry k's force term, w P_ij B_k,j: the one expression both force paths use,
 /// so that they add the same numbers.
 template <int Dim>
-KOKKOS_INLINE_FUNCTION double force_term(const DevicePoints& p, const double (&P)[Dim][Dim], double w, std::size_t k, int i) {
+KOKKOS_INLINE_FUNCTION double force_term(const DevicePoints& p, const double (&P)[Dim][Dim],
+                                         double w, std::size_t k, int i) {
   double fi = 0.0;
   for (int j = 0; j < Dim; ++j) fi += P[i][j] * p.grad(k, j);
   return w * fi;
@@ -172,7 +174,8 @@ struct NodalTangentKernel {
         for (int k = 0; k < Dim; ++k)
           for (int l = 0; l < Dim; ++l) {
             double s = 0.0;
-            for (int j = 0; j < Dim; ++j) s += p.grad(a, j) * tangent(q, ((i * Dim + j) * Dim + k) * Dim + l);
+            for (int j = 0; j < Dim; ++j)
+              s += p.grad(a, j) * tangent(q, ((i * Dim + j) * Dim + k) * Dim + l);
             G[i][k][l] = s;
           }
       // One sumIntoValues per row and chunk of 32 column particles: far fewer sorted-row
@@ -182,7 +185,8 @@ struct NodalTangentKernel {
       double vals[chunk * Dim];
       for (int i = 0; i < Dim; ++i)
         for (std::size_t first = p.offsets(q); first < p.offsets(q + 1); first += chunk) {
-          const std::size_t last = first + chunk < p.offsets(q + 1) ? first + chunk : p.offsets(q + 1);
+          const std::size_t last =
+              first + chunk < p.offsets(q + 1) ? first + chunk : p.offsets(q + 1);
           int m = 0;
           for (std::size_t b = first; b < last; ++b) {
             const int col_node = p.node(b);
@@ -199,8 +203,8 @@ struct NodalTangentKernel {
   }
 };
 
-/// Strain energy w_q W(H_q) of point q (physics::strain_energy: 0 when inverted), summed by the caller
-/// in a thread-count-independent order (parallel/ReproducibleSum.hpp).
+/// Strain energy w_q W(H_q) of point q (physics::strain_energy: 0 when inverted), summed by the
+/// caller in a thread-count-independent order (parallel/ReproducibleSum.hpp).
 template <int Dim, class DisplacementView>
 struct PointEnergy {
   DevicePoints p;

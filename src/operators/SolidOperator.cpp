@@ -12,17 +12,25 @@
 namespace efg {
 namespace {
 
-auto column(const Vector& v) { return Kokkos::subview(v.getLocalViewDevice(Tpetra::Access::ReadOnly), Kokkos::ALL(), 0); }
-auto column(Vector& v) { return Kokkos::subview(v.getLocalViewDevice(Tpetra::Access::ReadWrite), Kokkos::ALL(), 0); }
+auto column(const Vector& v) {
+  return Kokkos::subview(v.getLocalViewDevice(Tpetra::Access::ReadOnly), Kokkos::ALL(), 0);
+}
+auto column(Vector& v) {
+  return Kokkos::subview(v.getLocalViewDevice(Tpetra::Access::ReadWrite), Kokkos::ALL(), 0);
+}
 
 }  // namespace
 
-physics::SolidMaterial solid_material(const MaterialSpec& material, const PartSpec& part, int dimension) {
-  const double e = material.constants.at("youngs_modulus"), nu = material.constants.at("poissons_ratio");
+physics::SolidMaterial solid_material(const MaterialSpec& material, const PartSpec& part,
+                                      int dimension) {
+  const double e = material.constants.at("youngs_modulus"),
+               nu = material.constants.at("poissons_ratio");
   const bool plane_stress = dimension == 2 && part.plane_stress;
-  const auto c = plane_stress ? physics::plane_stress_constants(e, nu) : physics::elastic_constants(e, nu);
+  const auto c =
+      plane_stress ? physics::plane_stress_constants(e, nu) : physics::elastic_constants(e, nu);
   physics::SolidMaterial m;
-  m.kind = material.model == "neo_hookean" ? physics::MaterialKind::neo_hookean : physics::MaterialKind::linear_elastic;
+  m.kind = material.model == "neo_hookean" ? physics::MaterialKind::neo_hookean
+                                           : physics::MaterialKind::linear_elastic;
   m.lambda = c.lambda;
   m.mu = c.mu;
   m.plane_stress = plane_stress;
@@ -37,7 +45,8 @@ SolidOperator::SolidOperator(const Model& model) : dim_(model.mesh.dimension) {
     p.name = d.part->name;
     for (auto node : d.cloud.mesh_node) {
       const auto lid = overlap.getLocalElement(static_cast<GlobalOrdinal>(node));
-      if (lid == Teuchos::OrdinalTraits<int>::invalid()) throw std::logic_error("particle missing from the overlap map");
+      if (lid == Teuchos::OrdinalTraits<int>::invalid())
+        throw std::logic_error("particle missing from the overlap map");
       p.overlap_node.push_back(lid);
     }
     const auto& ip = d.points;
@@ -45,11 +54,15 @@ SolidOperator::SolidOperator(const Model& model) : dim_(model.mesh.dimension) {
     std::vector<double> weight(ip.weight);
     for (auto& w : weight) w *= thickness;
     std::vector<int> node;
-    for (auto particle : ip.gradients.particles) node.push_back(p.overlap_node[static_cast<std::size_t>(particle)]);
-    DeviceView<double**> grad("efg::solid grad", ip.gradients.particles.size(), static_cast<std::size_t>(dim_));
+    for (auto particle : ip.gradients.particles)
+      node.push_back(p.overlap_node[static_cast<std::size_t>(particle)]);
+    DeviceView<double**> grad("efg::solid grad", ip.gradients.particles.size(),
+                              static_cast<std::size_t>(dim_));
     auto grad_host = Kokkos::create_mirror_view(grad);
     for (std::size_t k = 0; k < ip.gradients.particles.size(); ++k)
-      for (int j = 0; j < dim_; ++j) grad_host(k, static_cast<std::size_t>(j)) = ip.gradients.values[k * static_cast<std::size_t>(dim_) + static_cast<std::size_t>(j)];
+      for (int j = 0; j < dim_; ++j)
+        grad_host(k, static_cast<std::size_t>(j)) =
+            ip.gradients.values[k * static_cast<std::size_t>(dim_) + static_cast<std::size_t>(j)];
     Kokkos::deep_copy(grad, grad_host);
     p.device.weight = to_device(weight, "efg::solid weight");
     p.device.offsets = to_device(ip.gradients.offsets, "efg::solid offsets");
@@ -57,10 +70,12 @@ SolidOperator::SolidOperator(const Model& model) : dim_(model.mesh.dimension) {
     p.device.grad = grad;
     p.device.by_node = gather_index(p.device.offsets, p.device.node, overlap_nodes_);
     p.slot_count = ip.gradients.particles.size();
-    DeviceView<std::size_t*> slot(Kokkos::view_alloc(Kokkos::WithoutInitializing, "efg::solid slots"), p.slot_count);
+    DeviceView<std::size_t*> slot(
+        Kokkos::view_alloc(Kokkos::WithoutInitializing, "efg::solid slots"), p.slot_count);
     const auto entry = p.device.by_node.entry;
-    Kokkos::parallel_for("efg::solid_slots", Kokkos::RangePolicy<ExecSpace>(0, p.slot_count),
-                         KOKKOS_LAMBDA(const std::size_t e) { slot(entry(e)) = e; });
+    Kokkos::parallel_for(
+        "efg::solid_slots", Kokkos::RangePolicy<ExecSpace>(0, p.slot_count),
+        KOKKOS_LAMBDA(const std::size_t e) { slot(entry(e)) = e; });
     p.device.slot = slot;
     p.device.material = solid_material(*model.scene.find_material(d.part->material), *d.part, dim_);
     p.points = ip.size();
@@ -82,10 +97,13 @@ void SolidOperator::add_point_couplings(CouplingGraph& graph) const {
 void SolidOperator::report_inversion(const PartData& part, int point) const {
   std::ostringstream o;
   o << "part '" << part.name << "': det F <= 0 (inverted material) at ";
-  if (part.node[static_cast<std::size_t>(point)] >= 0) o << "the integration point of particle " << part.node[static_cast<std::size_t>(point)] + 1;
-  else o << "a Gauss point";
+  if (part.node[static_cast<std::size_t>(point)] >= 0)
+    o << "the integration point of particle " << part.node[static_cast<std::size_t>(point)] + 1;
+  else
+    o << "a Gauss point";
   o << " at (";
-  for (int d = 0; d < dim_; ++d) o << (d ? ", " : "") << part.x[static_cast<std::size_t>(point * dim_ + d)];
+  for (int d = 0; d < dim_; ++d)
+    o << (d ? ", " : "") << part.x[static_cast<std::size_t>(point * dim_ + d)];
   o << ")";
   throw NumericalError(o.str());
 }
@@ -96,14 +114,18 @@ void SolidOperator::for_each_part(const Pass1& pass1, const Gather& gather) cons
     Kokkos::View<int, MemSpace> inverted("efg::inverted");
     Kokkos::deep_copy(inverted, INT_MAX);
     const auto points = Kokkos::RangePolicy<ExecSpace>(0, static_cast<int>(p.points));
-    if (dim_ == 2) pass1(std::integral_constant<int, 2>(), points, p, inverted);
-    else pass1(std::integral_constant<int, 3>(), points, p, inverted);
+    if (dim_ == 2)
+      pass1(std::integral_constant<int, 2>(), points, p, inverted);
+    else
+      pass1(std::integral_constant<int, 3>(), points, p, inverted);
     int bad = INT_MAX;
     Kokkos::deep_copy(bad, inverted);
     if (bad != INT_MAX) report_inversion(p, bad);
     const auto nodes = Kokkos::RangePolicy<ExecSpace>(0, static_cast<int>(overlap_nodes_));
-    if (dim_ == 2) gather(std::integral_constant<int, 2>(), nodes, p);
-    else gather(std::integral_constant<int, 3>(), nodes, p);
+    if (dim_ == 2)
+      gather(std::integral_constant<int, 2>(), nodes, p);
+    else
+      gather(std::integral_constant<int, 3>(), nodes, p);
   }
 }
 
@@ -124,8 +146,10 @@ void SolidOperator::add_internal_force(const Vector& d_overlap, Vector& f_overla
   for_each_part(
       [&](auto dim, const auto& points, const PartData& p, const auto& inverted) {
         constexpr int Dim = decltype(dim)::value;
-        if (p.term.extent(0) != p.slot_count) p.term = DeviceView<double**>("efg::force terms", p.slot_count, Dim);
-        Kokkos::parallel_for("efg::point_force", points, PointForceKernel<Dim, decltype(u)>{p.device, u, p.term, inverted});
+        if (p.term.extent(0) != p.slot_count)
+          p.term = DeviceView<double**>("efg::force terms", p.slot_count, Dim);
+        Kokkos::parallel_for("efg::point_force", points,
+                             PointForceKernel<Dim, decltype(u)>{p.device, u, p.term, inverted});
       },
       [&](auto dim, const auto& nodes, const PartData& p) {
         using Kernel = NodalForceKernel<decltype(dim)::value, decltype(f)>;
@@ -140,9 +164,13 @@ void SolidOperator::add_tangent(const Vector& d_overlap, FEMatrix& K) const {
   for_each_part(
       [&](auto dim, const auto& points, const PartData& p, const auto& inverted) {
         constexpr int Dim = decltype(dim)::value;
-        if (p.stress.extent(0) != p.points) p.stress = DeviceView<double**>("efg::point stress", p.points, Dim * Dim);
-        if (p.tangent.extent(0) != p.points) p.tangent = DeviceView<double**>("efg::point tangent", p.points, Dim * Dim * Dim * Dim);
-        Kokkos::parallel_for("efg::point_stress", points, PointStressKernel<Dim, decltype(u)>{p.device, u, p.stress, p.tangent, inverted});
+        if (p.stress.extent(0) != p.points)
+          p.stress = DeviceView<double**>("efg::point stress", p.points, Dim * Dim);
+        if (p.tangent.extent(0) != p.points)
+          p.tangent = DeviceView<double**>("efg::point tangent", p.points, Dim * Dim * Dim * Dim);
+        Kokkos::parallel_for(
+            "efg::point_stress", points,
+            PointStressKernel<Dim, decltype(u)>{p.device, u, p.stress, p.tangent, inverted});
       },
       [&](auto dim, const auto& nodes, const PartData& p) {
         using Kernel = NodalTangentKernel<decltype(dim)::value, decltype(local)>;
@@ -154,8 +182,10 @@ double SolidOperator::strain_energy(const Vector& d_overlap) const {
   const auto u = column(d_overlap);
   double total = 0;
   for (const auto& p : parts_) {
-    if (dim_ == 2) total += block_sum(p.points, PointEnergy<2, decltype(u)>{p.device, u});
-    else total += block_sum(p.points, PointEnergy<3, decltype(u)>{p.device, u});
+    if (dim_ == 2)
+      total += block_sum(p.points, PointEnergy<2, decltype(u)>{p.device, u});
+    else
+      total += block_sum(p.points, PointEnergy<3, decltype(u)>{p.device, u});
   }
   return total;
 }

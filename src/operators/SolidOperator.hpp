@@ -19,7 +19,8 @@ using Vector = Tpetra::Vector<>;
 using FEMatrix = Tpetra::FECrsMatrix<>;
 
 /// Material constants of a part for the physics kernels (plane stress reduces lambda).
-physics::SolidMaterial solid_material(const MaterialSpec& material, const PartSpec& part, int dimension);
+physics::SolidMaterial solid_material(const MaterialSpec& material, const PartSpec& part,
+                                      int dimension);
 
 class SolidOperator {
  public:
@@ -50,10 +51,10 @@ class SolidOperator {
     mutable DeviceView<double**> tangent;
     std::vector<int> overlap_node;
     std::size_t points = 0;
-    std::size_t slot_count = 0;     // entries of the point table
+    std::size_t slot_count = 0;  // entries of the point table
     std::string name;
-    std::vector<double> x;          // point coordinates, for messages
-    std::vector<LocalIndex> node;   // the particle of each point (SCNI, nodal), -1 for Gauss
+    std::vector<double> x;         // point coordinates, for messages
+    std::vector<LocalIndex> node;  // the particle of each point (SCNI, nodal), -1 for Gauss
   };
   void report_inversion(const PartData& part, int point) const;
   /// For every part: pass1(dimension tag, point policy, part, inverted), inverted points

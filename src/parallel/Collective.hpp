@@ -13,7 +13,8 @@ namespace efg {
 
 class PeerFailure : public std::runtime_error {
  public:
-  explicit PeerFailure(int exit_code) : std::runtime_error("failure on another rank"), exit_code_(exit_code) {}
+  explicit PeerFailure(int exit_code)
+      : std::runtime_error("failure on another rank"), exit_code_(exit_code) {}
   int exit_code() const { return exit_code_; }
 
  private:

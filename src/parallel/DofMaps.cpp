@@ -11,10 +11,12 @@ Teuchos::RCP<const Map> map_of(const CommPtr& comm, const std::vector<LocalIndex
   gids.reserve((first.size() + second.size()) * static_cast<std::size_t>(per_node));
   for (const auto* list : {&first, &second})
     for (auto node : *list)
-      for (int c = 0; c < per_node; ++c) gids.push_back(static_cast<GlobalOrdinal>(node) * per_node + c);
+      for (int c = 0; c < per_node; ++c)
+        gids.push_back(static_cast<GlobalOrdinal>(node) * per_node + c);
   const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
-  return Teuchos::rcp(new Map(invalid, Teuchos::ArrayView<const GlobalOrdinal>(gids.data(), static_cast<int>(gids.size())),
-                              0, comm));
+  return Teuchos::rcp(new Map(
+      invalid, Teuchos::ArrayView<const GlobalOrdinal>(gids.data(), static_cast<int>(gids.size())),
+      0, comm));
 }
 
 }  // namespace

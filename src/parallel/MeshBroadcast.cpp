@@ -114,7 +114,8 @@ BackgroundMesh deserialize(const std::vector<char>& bytes) {
   return mesh;
 }
 
-BackgroundMesh load_on_root_and_broadcast(const CommPtr& comm, const std::function<BackgroundMesh()>& load) {
+BackgroundMesh load_on_root_and_broadcast(const CommPtr& comm,
+                                          const std::function<BackgroundMesh()>& load) {
   if (comm->getSize() == 1) return load();
   return deserialize(produce_on_root(comm, [&] { return serialize(load()); }));
 }

@@ -10,7 +10,8 @@
 namespace efg {
 
 /// Runs `load` on rank 0 and returns its mesh on every rank.
-BackgroundMesh load_on_root_and_broadcast(const CommPtr& comm, const std::function<BackgroundMesh()>& load);
+BackgroundMesh load_on_root_and_broadcast(const CommPtr& comm,
+                                          const std::function<BackgroundMesh()>& load);
 
 /// Byte (de)serialization used by the broadcast (exposed for tests).
 std::vector<char> serialize(const BackgroundMesh& mesh);

@@ -36,7 +36,8 @@ NodePartition partition_nodes(const CommPtr& comm, const BackgroundMesh& mesh) {
     const auto dim = static_cast<std::size_t>(mesh.dimension);
     for (std::size_t i = 0; i < local; ++i) {
       ids[i] = static_cast<long long>(begin + i);
-      for (std::size_t d = 0; d < dim; ++d) xyz[d].push_back(mesh.coordinates[(begin + i) * dim + d]);
+      for (std::size_t d = 0; d < dim; ++d)
+        xyz[d].push_back(mesh.coordinates[(begin + i) * dim + d]);
     }
     CoordinateAdapter adapter(static_cast<int>(local), ids.data(), xyz[0].data(), xyz[1].data(),
                               dim == 3 ? xyz[2].data() : nullptr);
@@ -51,15 +52,16 @@ NodePartition partition_nodes(const CommPtr& comm, const BackgroundMesh& mesh) {
     std::vector<int> mine(n, 0);
     for (std::size_t i = 0; i < local; ++i) mine[begin + i] = parts[i];
     // Every node appears in exactly one slice, so a sum over ranks assembles the owner map.
-    Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, static_cast<int>(n), mine.data(), p.owner.data());
+    Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, static_cast<int>(n), mine.data(),
+                       p.owner.data());
   }
   for (std::size_t i = 0; i < n; ++i)
     if (p.owner[i] == p.rank) p.owned.push_back(static_cast<LocalIndex>(i));
   return p;
 }
 
-std::vector<LocalIndex> ghost_layer(const BackgroundMesh& mesh, const std::vector<int>& owner, int rank,
-                                    double radius) {
+std::vector<LocalIndex> ghost_layer(const BackgroundMesh& mesh, const std::vector<int>& owner,
+                                    int rank, double radius) {
   const auto n = mesh.node_count();
   const auto dim = static_cast<std::size_t>(mesh.dimension);
   std::vector<char> needed(n, 0);

@@ -23,7 +23,7 @@ NodePartition partition_nodes(const CommPtr& comm, const BackgroundMesh& mesh);
 
 /// Nodes owned by other ranks lying within Euclidean distance `radius` of a node owned by `rank`
 /// (the ghost layer for supports of that radius), ascending.
-std::vector<LocalIndex> ghost_layer(const BackgroundMesh& mesh, const std::vector<int>& owner, int rank,
-                                    double radius);
+std::vector<LocalIndex> ghost_layer(const BackgroundMesh& mesh, const std::vector<int>& owner,
+                                    int rank, double radius);
 
 }  // namespace efg

@@ -15,10 +15,13 @@ double sum_over_ranks(const Teuchos::Comm<int>& comm, double local) {
 double reproducible_dot(const Tpetra::Vector<>& a, const Tpetra::Vector<>& b) {
   const auto x = a.getLocalViewDevice(Tpetra::Access::ReadOnly);
   const auto y = b.getLocalViewDevice(Tpetra::Access::ReadOnly);
-  const double mine = block_sum(x.extent(0), KOKKOS_LAMBDA(const std::size_t k) { return x(k, 0) * y(k, 0); });
+  const double mine = block_sum(
+      x.extent(0), KOKKOS_LAMBDA(const std::size_t k) { return x(k, 0) * y(k, 0); });
   return sum_over_ranks(*a.getMap()->getComm(), mine);
 }
 
-double reproducible_norm2(const Tpetra::Vector<>& v) { return std::sqrt(reproducible_dot(v, v)); }
+double reproducible_norm2(const Tpetra::Vector<>& v) {
+  return std::sqrt(reproducible_dot(v, v));
+}
 
 }  // namespace efg

@@ -23,13 +23,16 @@ inline constexpr std::size_t block_size = 1024;
 template <class Term>
 double block_sum(std::size_t n, const Term& term) {
   const std::size_t blocks = (n + block_size - 1) / block_size;
-  DeviceView<double*> partial(Kokkos::view_alloc(Kokkos::WithoutInitializing, "efg::block sums"), blocks);
-  Kokkos::parallel_for("efg::block_sum", Kokkos::RangePolicy<ExecSpace>(0, blocks), KOKKOS_LAMBDA(const std::size_t b) {
-    double s = 0.0;
-    const std::size_t end = (b + 1) * block_size < n ? (b + 1) * block_size : n;
-    for (std::size_t k = b * block_size; k < end; ++k) s += term(k);
-    partial(b) = s;
-  });
+  DeviceView<double*> partial(Kokkos::view_alloc(Kokkos::WithoutInitializing, "efg::block sums"),
+                              blocks);
+  Kokkos::parallel_for(
+      "efg::block_sum", Kokkos::RangePolicy<ExecSpace>(0, blocks),
+      KOKKOS_LAMBDA(const std::size_t b) {
+        double s = 0.0;
+        const std::size_t end = (b + 1) * block_size < n ? (b + 1) * block_size : n;
+        for (std::size_t k = b * block_size; k < end; ++k) s += term(k);
+        partial(b) = s;
+      });
   double total = 0.0;
   for (const double s : to_host(partial)) total += s;
   return total;

@@ -10,7 +10,8 @@
 
 namespace efg {
 
-std::vector<char> produce_on_root(const CommPtr& comm, const std::function<std::vector<char>()>& produce) {
+std::vector<char> produce_on_root(const CommPtr& comm,
+                                  const std::function<std::vector<char>()>& produce) {
   // Message: one status byte (0 ok, 2 input error, 1 other error), then the bytes or the text.
   std::vector<char> message(1, 0);
   if (comm->getRank() == 0) {

@@ -12,6 +12,7 @@ namespace efg {
 
 /// Runs `produce` on rank 0 and returns its bytes on every rank. InputError thrown by `produce`
 /// is rethrown as InputError on every rank; any other exception as std::runtime_error.
-std::vector<char> produce_on_root(const CommPtr& comm, const std::function<std::vector<char>()>& produce);
+std::vector<char> produce_on_root(const CommPtr& comm,
+                                  const std::function<std::vector<char>()>& produce);
 
 }  // namespace efg

@@ -10,7 +10,8 @@ void apply_initial_conditions(const Model& model, RunState& state) {
     for (auto node : model.mesh.find_node_set(ic.node_set)->nodes) {
       if (model.partition.owner[static_cast<std::size_t>(node)] != model.partition.rank) continue;
       for (int i = 0; i < dim; ++i) {
-        const auto row = model.maps.owned_dofs->getLocalElement(static_cast<GlobalOrdinal>(node) * dim + i);
+        const auto row =
+            model.maps.owned_dofs->getLocalElement(static_cast<GlobalOrdinal>(node) * dim + i);
         view(static_cast<std::size_t>(row), 0) = ic.value[static_cast<std::size_t>(i)];
       }
     }

@@ -4,16 +4,16 @@
 
 #include <Teuchos_TimeMonitor.hpp>
 
+#include "core/Errors.hpp"
 #include "io/ExodusReader.hpp"
 #include "mesh/MeshGenerator.hpp"
 #include "mesh/MeshValidation.hpp"
 #include "parallel/Collective.hpp"
 #include "parallel/MeshBroadcast.hpp"
 #include "parallel/RootBroadcast.hpp"
-#include "core/Errors.hpp"
 #include "scene/SceneMeshChecks.hpp"
-#include "scene/SchemaValidator.hpp"
 #include "scene/SceneReader.hpp"
+#include "scene/SchemaValidator.hpp"
 
 namespace efg {
 
@@ -28,14 +28,15 @@ Scene load_scene(const CommPtr& comm, const std::string& scene_file) {
 BackgroundMesh load_mesh(const CommPtr& comm, const Scene& scene) {
   auto mesh = load_on_root_and_broadcast(comm, [&] {
     try {
-      auto m = scene.generator ? generate_mesh(*scene.generator) : read_exodus_mesh(scene.mesh_file);
+      auto m =
+          scene.generator ? generate_mesh(*scene.generator) : read_exodus_mesh(scene.mesh_file);
       validate_mesh(m);
       return m;
     } catch (const InputError& e) {
       // Point at the scene key that named the mesh, then say what is wrong with it.
       const auto key = scene.generator ? "generate" : "file";
-      throw InputError(schema::located_message(scene.file, scene.document["mesh"][key], std::string("mesh.") + key,
-                                               e.what()));
+      throw InputError(schema::located_message(scene.file, scene.document["mesh"][key],
+                                               std::string("mesh.") + key, e.what()));
     }
   });
   check_scene_against_mesh(scene, mesh);
@@ -59,16 +60,19 @@ Model build_model(const CommPtr& comm, Scene scene) {
     model.mesh = load_mesh(comm, model.scene);
   }
   {
-    Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewCounter("efg: partition (Zoltan2 RCB)"));
+    Teuchos::TimeMonitor timer(
+        *Teuchos::TimeMonitor::getNewCounter("efg: partition (Zoltan2 RCB)"));
     model.partition = partition_nodes(comm, model.mesh);
   }
   run_collectively(comm, [&] {
     check_parts_do_not_share_nodes(model.mesh, model.scene.parts);
-    for (const auto& part : model.scene.parts) model.parts.push_back(discretize_part(model.mesh, part, model.partition));
+    for (const auto& part : model.scene.parts)
+      model.parts.push_back(discretize_part(model.mesh, part, model.partition));
   });
   std::set<LocalIndex> ghosts;
   for (const auto& d : model.parts)
-    for (std::size_t i = d.cloud.owned_count; i < d.cloud.size(); ++i) ghosts.insert(d.cloud.mesh_node[i]);
+    for (std::size_t i = d.cloud.owned_count; i < d.cloud.size(); ++i)
+      ghosts.insert(d.cloud.mesh_node[i]);
   model.partition.ghosts.assign(ghosts.begin(), ghosts.end());
   model.maps = make_dof_maps(comm, model.partition, model.mesh.dimension);
   return model;

@@ -14,7 +14,7 @@ namespace efg {
 struct Model {
   Scene scene;
   BackgroundMesh mesh;
-  NodePartition partition;               ///< ghosts: the union over parts
+  NodePartition partition;                ///< ghosts: the union over parts
   std::vector<PartDiscretization> parts;  ///< one per scene part, in scene order
   DofMaps maps;
 };

@@ -12,7 +12,8 @@ namespace efg {
 namespace {
 
 template <int Dim>
-void particle_state(const physics::SolidMaterial& m, bool finite, const double* h, double (&strain)[3][3], double (&sigma)[3][3]) {
+void particle_state(const physics::SolidMaterial& m, bool finite, const double* h,
+                    double (&strain)[3][3], double (&sigma)[3][3]) {
   double H[Dim][Dim];
   for (int i = 0; i < Dim; ++i)
     for (int j = 0; j < Dim; ++j) H[i][j] = h[i * 3 + j];
@@ -25,11 +26,13 @@ void particle_state(const physics::SolidMaterial& m, bool finite, const double* 
       if (finite)  // Green-Lagrange: E = (H + H^T + H^T H) / 2
         for (int k = 0; k < Dim; ++k) strain[i][j] += 0.5 * H[k][i] * H[k][j];
     }
-  if (Dim == 2 && m.plane_stress && !finite)  // eps_zz = -lambda*/(lambda* + 2 mu) (eps_xx + eps_yy)
+  if (Dim == 2 && m.plane_stress &&
+      !finite)  // eps_zz = -lambda*/(lambda* + 2 mu) (eps_xx + eps_yy)
     strain[2][2] = -m.lambda / (m.lambda + 2 * m.mu) * (strain[0][0] + strain[1][1]);
 }
 
-void push_tensor(std::vector<double>& out, const double (&t)[3][3], int dim, std::size_t component) {
+void push_tensor(std::vector<double>& out, const double (&t)[3][3], int dim,
+                 std::size_t component) {
   static const int map3[6][2] = {{0, 0}, {1, 1}, {2, 2}, {0, 1}, {1, 2}, {2, 0}};
   static const int map2[4][2] = {{0, 0}, {1, 1}, {2, 2}, {0, 1}};
   const auto& ij = dim == 2 ? map2[component] : map3[component];
@@ -44,7 +47,8 @@ std::vector<std::string> field_columns(const std::string& field, int dimension) 
   if (field == "stress" || field == "strain") {
     // Symmetric tensors; zz is kept in 2D (plane strain stress, plane stress strain).
     if (dimension == 2) return {field + "_xx", field + "_yy", field + "_zz", field + "_xy"};
-    return {field + "_xx", field + "_yy", field + "_zz", field + "_xy", field + "_yz", field + "_zx"};
+    return {field + "_xx", field + "_yy", field + "_zz",
+            field + "_xy", field + "_yz", field + "_zx"};
   }
   if (field == "von_mises" || field == "nodal_volume" || field == "owner_rank") return {field};
   throw std::logic_error("no output columns for field '" + field + "'");
@@ -59,14 +63,16 @@ std::vector<std::string> output_columns(const std::vector<std::string>& fields, 
   return columns;
 }
 
-std::vector<std::vector<double>> state_columns(const Model& model, const SolidOperator& op, const Vector& d_overlap,
-                                               const Vector* v_overlap, const Vector* a_overlap) {
+std::vector<std::vector<double>> state_columns(const Model& model, const SolidOperator& op,
+                                               const Vector& d_overlap, const Vector* v_overlap,
+                                               const Vector* a_overlap) {
   const int dim = model.mesh.dimension;
   const auto udim = static_cast<std::size_t>(dim);
   const auto& owned = model.partition.owned;
   const auto volume = lumped_nodal_volumes(model.mesh);
   // Per owned particle (in partition order): u, H, material.
-  std::vector<std::array<double, 3>> u(owned.size(), {0, 0, 0}), vel(owned.size(), {0, 0, 0}), acc(owned.size(), {0, 0, 0});
+  std::vector<std::array<double, 3>> u(owned.size(), {0, 0, 0}), vel(owned.size(), {0, 0, 0}),
+      acc(owned.size(), {0, 0, 0});
   std::vector<std::array<double, 9>> h(owned.size(), std::array<double, 9>{});
   std::vector<int> part_of(owned.size(), -1);
   std::vector<std::size_t> slot(model.mesh.node_count(), 0);
@@ -75,7 +81,8 @@ std::vector<std::vector<double>> state_columns(const Model& model, const SolidOp
   using HostView = decltype(d);
   const HostView no_values;
   const auto v = v_overlap ? v_overlap->getLocalViewHost(Tpetra::Access::ReadOnly) : no_values;
-  const auto acc_view = a_overlap ? a_overlap->getLocalViewHost(Tpetra::Access::ReadOnly) : no_values;
+  const auto acc_view =
+      a_overlap ? a_overlap->getLocalViewHost(Tpetra::Access::ReadOnly) : no_values;
   for (std::size_t p = 0; p < model.parts.size(); ++p) {
     const auto& part = model.parts[p];
     const auto& node = op.overlap_node(p);
@@ -83,7 +90,8 @@ std::vector<std::vector<double>> state_columns(const Model& model, const SolidOp
       const auto s = slot[static_cast<std::size_t>(part.cloud.mesh_node[j])];
       part_of[s] = static_cast<int>(p);
       for (auto k = part.particle_values.offsets[j]; k < part.particle_values.offsets[j + 1]; ++k) {
-        const auto n = static_cast<std::size_t>(node[static_cast<std::size_t>(part.particle_values.particles[k])]);
+        const auto n = static_cast<std::size_t>(
+            node[static_cast<std::size_t>(part.particle_values.particles[k])]);
         for (std::size_t i = 0; i < udim; ++i) {
           const double phi = part.particle_values.values[k];
           u[s][i] += phi * d(n * udim + i, 0);
@@ -91,10 +99,13 @@ std::vector<std::vector<double>> state_columns(const Model& model, const SolidOp
           if (a_overlap) acc[s][i] += phi * acc_view(n * udim + i, 0);
         }
       }
-      for (auto k = part.particle_gradients.offsets[j]; k < part.particle_gradients.offsets[j + 1]; ++k) {
-        const auto n = static_cast<std::size_t>(node[static_cast<std::size_t>(part.particle_gradients.particles[k])]);
+      for (auto k = part.particle_gradients.offsets[j]; k < part.particle_gradients.offsets[j + 1];
+           ++k) {
+        const auto n = static_cast<std::size_t>(
+            node[static_cast<std::size_t>(part.particle_gradients.particles[k])]);
         for (std::size_t i = 0; i < udim; ++i)
-          for (std::size_t c = 0; c < udim; ++c) h[s][i * 3 + c] += d(n * udim + i, 0) * part.particle_gradients.values[k * udim + c];
+          for (std::size_t c = 0; c < udim; ++c)
+            h[s][i * 3 + c] += d(n * udim + i, 0) * part.particle_gradients.values[k * udim + c];
       }
     }
   }
@@ -102,18 +113,23 @@ std::vector<std::vector<double>> state_columns(const Model& model, const SolidOp
   using Tensor = std::array<std::array<double, 3>, 3>;
   std::vector<Tensor> strains(owned.size(), Tensor{}), stresses(owned.size(), Tensor{});
   const auto& fields = model.scene.output.fields;
-  const bool tensors = std::any_of(fields.begin(), fields.end(),
-                                   [](const std::string& f) { return f == "stress" || f == "strain" || f == "von_mises"; });
+  const bool tensors = std::any_of(fields.begin(), fields.end(), [](const std::string& f) {
+    return f == "stress" || f == "strain" || f == "von_mises";
+  });
   if (tensors) {
     std::vector<physics::SolidMaterial> materials;
-    for (const auto& pd : model.parts) materials.push_back(solid_material(*model.scene.find_material(pd.part->material), *pd.part, dim));
+    for (const auto& pd : model.parts)
+      materials.push_back(
+          solid_material(*model.scene.find_material(pd.part->material), *pd.part, dim));
     for (std::size_t s = 0; s < owned.size(); ++s) {
       if (part_of[s] < 0) continue;
       const auto p = static_cast<std::size_t>(part_of[s]);
       const bool finite = model.parts[p].part->section.formulation == Formulation::total_lagrangian;
       double strain[3][3] = {}, sigma[3][3] = {};
-      if (dim == 2) particle_state<2>(materials[p], finite, h[s].data(), strain, sigma);
-      else particle_state<3>(materials[p], finite, h[s].data(), strain, sigma);
+      if (dim == 2)
+        particle_state<2>(materials[p], finite, h[s].data(), strain, sigma);
+      else
+        particle_state<3>(materials[p], finite, h[s].data(), strain, sigma);
       for (std::size_t i = 0; i < 3; ++i)
         for (std::size_t j = 0; j < 3; ++j) {
           strains[s][i][j] = strain[i][j];
@@ -134,14 +150,22 @@ std::vector<std::vector<double>> state_columns(const Model& model, const SolidOp
             strain[i][j] = strains[s][i][j];
             sigma[i][j] = stresses[s][i][j];
           }
-        if (field == "displacement") values.push_back(u[s][c]);
-        else if (field == "velocity") values.push_back(vel[s][c]);
-        else if (field == "acceleration") values.push_back(acc[s][c]);
-        else if (field == "stress") push_tensor(values, sigma, dim, c);
-        else if (field == "strain") push_tensor(values, strain, dim, c);
-        else if (field == "von_mises") values.push_back(physics::von_mises(sigma));
-        else if (field == "nodal_volume") values.push_back(volume[static_cast<std::size_t>(owned[s])]);
-        else if (field == "owner_rank") values.push_back(model.partition.rank);
+        if (field == "displacement")
+          values.push_back(u[s][c]);
+        else if (field == "velocity")
+          values.push_back(vel[s][c]);
+        else if (field == "acceleration")
+          values.push_back(acc[s][c]);
+        else if (field == "stress")
+          push_tensor(values, sigma, dim, c);
+        else if (field == "strain")
+          push_tensor(values, strain, dim, c);
+        else if (field == "von_mises")
+          values.push_back(physics::von_mises(sigma));
+        else if (field == "nodal_volume")
+          values.push_back(volume[static_cast<std::size_t>(owned[s])]);
+        else if (field == "owner_rank")
+          values.push_back(model.partition.rank);
       }
       columns.push_back(std::move(values));
     }

@@ -20,7 +20,9 @@ std::vector<std::string> output_columns(const std::vector<std::string>& fields, 
 /// Values of every output column at the owned particles (column after column), for generalized
 /// displacements d, velocities v and accelerations a (overlap dofs; v and a may be null: zero).
 /// Reactions are global variables per boundary condition (R_<name>_x, ...), not a nodal field.
-std::vector<std::vector<double>> state_columns(const Model& model, const SolidOperator& op, const Vector& d_overlap,
-                                               const Vector* v_overlap = nullptr, const Vector* a_overlap = nullptr);
+std::vector<std::vector<double>> state_columns(const Model& model, const SolidOperator& op,
+                                               const Vector& d_overlap,
+                                               const Vector* v_overlap = nullptr,
+                                               const Vector* a_overlap = nullptr);
 
 }  // namespace efg

@@ -6,22 +6,27 @@
 
 namespace efg {
 namespace {
-std::string short_name(const std::string& prefix, const std::string& name, const std::string& suffix) {
+std::string short_name(const std::string& prefix, const std::string& name,
+                       const std::string& suffix) {
   return (prefix + name).substr(0, 32 - suffix.size()) + suffix;
 }
 }  // namespace
 
 RunHistory::RunHistory(const Model& model) : model_(model) {
-  names_ = {"time_step", "kinetic_energy", "internal_energy", "external_work", "wall_work", "total_energy",
-            "energy_balance_error", "strain_energy"};
+  names_ = {"time_step", "kinetic_energy", "internal_energy",      "external_work",
+            "wall_work", "total_energy",   "energy_balance_error", "strain_energy"};
   const std::string axes = "xyz";
   const auto dim = static_cast<std::size_t>(model.mesh.dimension);
-  for (const auto& w : model.scene.rigid_walls) names_.push_back(short_name("wall_", w.name, "_force"));
+  for (const auto& w : model.scene.rigid_walls)
+    names_.push_back(short_name("wall_", w.name, "_force"));
   for (const auto& bc : model.scene.boundary_conditions)
-    for (std::size_t d = 0; d < dim; ++d) names_.push_back(short_name("R_", bc.name, std::string("_") + axes[d]));
+    for (std::size_t d = 0; d < dim; ++d)
+      names_.push_back(short_name("R_", bc.name, std::string("_") + axes[d]));
   for (const auto& set : model.scene.output.history_node_sets) {
-    for (std::size_t d = 0; d < dim; ++d) names_.push_back(short_name("u_", set, std::string("_") + axes[d]));
-    for (std::size_t d = 0; d < dim; ++d) names_.push_back(short_name("v_", set, std::string("_") + axes[d]));
+    for (std::size_t d = 0; d < dim; ++d)
+      names_.push_back(short_name("u_", set, std::string("_") + axes[d]));
+    for (std::size_t d = 0; d < dim; ++d)
+      names_.push_back(short_name("v_", set, std::string("_") + axes[d]));
   }
 }
 
@@ -31,8 +36,9 @@ std::string RunHistory::csv_header() const {
   return header;
 }
 
-std::vector<double> RunHistory::values(const ModelOperators& ops, const RunState& state, const Vector& d_overlap,
-                                       const Vector& v_overlap, const std::vector<std::array<double, 3>>& reactions) const {
+std::vector<double> RunHistory::values(const ModelOperators& ops, const RunState& state,
+                                       const Vector& d_overlap, const Vector& v_overlap,
+                                       const std::vector<std::array<double, 3>>& reactions) const {
   const auto& comm = *model_.maps.owned_dofs->getComm();
   const auto dim = static_cast<std::size_t>(model_.mesh.dimension);
   const double mine = ops.solid().strain_energy(d_overlap);
@@ -49,7 +55,8 @@ std::vector<double> RunHistory::values(const ModelOperators& ops, const RunState
   for (std::size_t w = 0; w < model_.scene.rigid_walls.size(); ++w)
     out.push_back(w < state.wall_forces.size() ? state.wall_forces[w] : 0.0);
   for (std::size_t c = 0; c < model_.scene.boundary_conditions.size(); ++c)
-    for (std::size_t d = 0; d < dim; ++d) out.push_back(c < reactions.size() ? reactions[c][d] : 0.0);
+    for (std::size_t d = 0; d < dim; ++d)
+      out.push_back(c < reactions.size() ? reactions[c][d] : 0.0);
   // Mean physical displacement and velocity of each history set over its owned particles.
   const auto du = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
   const auto dv = v_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
@@ -62,8 +69,10 @@ std::vector<double> RunHistory::values(const ModelOperators& ops, const RunState
       for (std::size_t j = 0; j < part.cloud.owned_count; ++j) {
         if (!in[static_cast<std::size_t>(part.cloud.mesh_node[j])]) continue;
         local[2 * dim] += 1;
-        for (auto k = part.particle_values.offsets[j]; k < part.particle_values.offsets[j + 1]; ++k) {
-          const auto n = static_cast<std::size_t>(ops.solid().overlap_node(p)[static_cast<std::size_t>(part.particle_values.particles[k])]);
+        for (auto k = part.particle_values.offsets[j]; k < part.particle_values.offsets[j + 1];
+             ++k) {
+          const auto n = static_cast<std::size_t>(ops.solid().overlap_node(
+              p)[static_cast<std::size_t>(part.particle_values.particles[k])]);
           for (std::size_t i = 0; i < dim; ++i) {
             local[i] += part.particle_values.values[k] * du(n * dim + i, 0);
             local[dim + i] += part.particle_values.values[k] * dv(n * dim + i, 0);
@@ -71,7 +80,8 @@ std::vector<double> RunHistory::values(const ModelOperators& ops, const RunState
         }
       }
     }
-    Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, static_cast<int>(local.size()), local.data(), total.data());
+    Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, static_cast<int>(local.size()), local.data(),
+                       total.data());
     const double count = std::max(1.0, total[2 * dim]);
     for (std::size_t i = 0; i < 2 * dim; ++i) out.push_back(total[i] / count);
   }

@@ -21,8 +21,9 @@ class RunHistory {
   std::string csv_header() const;
 
   /// Collective. `reactions`: one per boundary condition (empty without an implicit stage).
-  std::vector<double> values(const ModelOperators& ops, const RunState& state, const Vector& d_overlap,
-                             const Vector& v_overlap, const std::vector<std::array<double, 3>>& reactions) const;
+  std::vector<double> values(const ModelOperators& ops, const RunState& state,
+                             const Vector& d_overlap, const Vector& v_overlap,
+                             const std::vector<std::array<double, 3>>& reactions) const;
 
  private:
   const Model& model_;

@@ -8,10 +8,10 @@
 #include <iomanip>
 #include <sstream>
 
+#include "core/DeviceArrays.hpp"
 #include "core/Errors.hpp"
 #include "core/RunSummary.hpp"
 #include "core/Threads.hpp"
-#include "core/DeviceArrays.hpp"
 #include "core/Version.hpp"
 
 namespace efg {
@@ -36,10 +36,17 @@ std::string number(double v) {
 }  // namespace
 
 const std::vector<std::string>& report_phases() {
-  static const std::vector<std::string> phases = {
-      "scene and mesh", "partition (Zoltan2 RCB)", "neighbour search (ghosts, particles)", "shape functions and integration",
-      "internal force", "tangent assembly", "essential conditions", "Newton iterations", "stable time step",
-      "explicit time steps", "output"};
+  static const std::vector<std::string> phases = {"scene and mesh",
+                                                  "partition (Zoltan2 RCB)",
+                                                  "neighbour search (ghosts, particles)",
+                                                  "shape functions and integration",
+                                                  "internal force",
+                                                  "tangent assembly",
+                                                  "essential conditions",
+                                                  "Newton iterations",
+                                                  "stable time step",
+                                                  "explicit time steps",
+                                                  "output"};
   return phases;
 }
 
@@ -63,16 +70,21 @@ std::vector<ReferenceCheck> reference_checks(const ModelOperators& ops, const Ru
     if (at == std::string::npos) {
       const auto it = std::find(global_names.begin(), global_names.end(), c.quantity);
       if (it == global_names.end())
-        throw InputError(model.scene.file + ": verification.reference_values '" + c.name + "': unknown quantity '" + c.quantity +
-                         "'; expected a global variable of the results or <displacement|velocity>_<x|y|z>@<node set>");
+        throw InputError(model.scene.file + ": verification.reference_values '" + c.name +
+                         "': unknown quantity '" + c.quantity +
+                         "'; expected a global variable of the results or "
+                         "<displacement|velocity>_<x|y|z>@<node set>");
       c.value = global_values[static_cast<std::size_t>(it - global_names.begin())];
     } else {
       const auto field = c.quantity.substr(0, at), set_name = c.quantity.substr(at + 1);
       const auto* set = model.mesh.find_node_set(set_name);
-      const bool known = (field.rfind("displacement_", 0) == 0 || field.rfind("velocity_", 0) == 0) && field.size() > 2 &&
-                         field.back() >= 'x' && static_cast<std::size_t>(field.back() - 'x') < dim;
+      const bool known =
+          (field.rfind("displacement_", 0) == 0 || field.rfind("velocity_", 0) == 0) &&
+          field.size() > 2 && field.back() >= 'x' &&
+          static_cast<std::size_t>(field.back() - 'x') < dim;
       if (!set || !known)
-        throw InputError(model.scene.file + ": verification.reference_values '" + c.name + "': cannot evaluate '" + c.quantity +
+        throw InputError(model.scene.file + ": verification.reference_values '" + c.name +
+                         "': cannot evaluate '" + c.quantity +
                          "'; expected <displacement|velocity>_<x|y|z>@<node set of the mesh>");
       const auto k = static_cast<std::size_t>(field.back() - 'x');
       const auto values = (field[0] == 'd' ? d : v).getLocalViewHost(Tpetra::Access::ReadOnly);
@@ -84,8 +96,10 @@ std::vector<ReferenceCheck> reference_checks(const ModelOperators& ops, const Ru
         for (std::size_t j = 0; j < part.cloud.owned_count; ++j) {
           if (!in[static_cast<std::size_t>(part.cloud.mesh_node[j])]) continue;
           local[1] += 1;
-          for (auto e = part.particle_values.offsets[j]; e < part.particle_values.offsets[j + 1]; ++e) {
-            const auto node = static_cast<std::size_t>(ops.solid().overlap_node(p)[static_cast<std::size_t>(part.particle_values.particles[e])]);
+          for (auto e = part.particle_values.offsets[j]; e < part.particle_values.offsets[j + 1];
+               ++e) {
+            const auto node = static_cast<std::size_t>(ops.solid().overlap_node(
+                p)[static_cast<std::size_t>(part.particle_values.particles[e])]);
             local[0] += part.particle_values.values[e] * values(node * dim + k, 0);
           }
         }
@@ -98,40 +112,50 @@ std::vector<ReferenceCheck> reference_checks(const ModelOperators& ops, const Ru
   return checks;
 }
 
-void write_run_report(const CommPtr& comm, const Model& model, const std::string& json_path, const std::string& results_path,
-                      const RunState& state, const std::optional<ErrorNorms>& errors, const std::vector<ReferenceCheck>& checks,
-                      double total_seconds) {
+void write_run_report(const CommPtr& comm, const Model& model, const std::string& json_path,
+                      const std::string& results_path, const RunState& state,
+                      const std::optional<ErrorNorms>& errors,
+                      const std::vector<ReferenceCheck>& checks, double total_seconds) {
   std::vector<double> local, global;
   for (const auto& phase : report_phases()) {
     const auto timer = Teuchos::TimeMonitor::lookupCounter("efg: " + phase);
     local.push_back(timer.is_null() ? 0.0 : timer->totalElapsedTime());
   }
   global.resize(local.size());
-  Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, static_cast<int>(local.size()), local.data(), global.data());
+  Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, static_cast<int>(local.size()), local.data(),
+                     global.data());
   const long long memory = peak_memory_bytes();
   long long memory_max = 0;
   Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, memory, Teuchos::outArg(memory_max));
   if (comm->getRank() != 0) return;
   std::ofstream o(json_path);
-  o << "{\n  \"scene\": " << quoted(model.scene.file) << ",\n  \"title\": " << quoted(model.scene.title)
+  o << "{\n  \"scene\": " << quoted(model.scene.file)
+    << ",\n  \"title\": " << quoted(model.scene.title)
     << ",\n  \"efg_version\": " << quoted(std::string(version_string) + " (" + git_describe + ")")
-    << ",\n  \"results\": " << quoted(results_path) << ",\n  \"ranks\": " << comm->getSize() << ",\n  \"threads_per_rank\": " << threads_per_rank()
+    << ",\n  \"results\": " << quoted(results_path) << ",\n  \"ranks\": " << comm->getSize()
+    << ",\n  \"threads_per_rank\": " << threads_per_rank()
     << ",\n  \"execution_space\": " << quoted(ExecSpace::name())
-    << ",\n  \"particles\": " << model.mesh.node_count() << ",\n  \"dofs\": " << model.maps.owned_dofs->getGlobalNumElements()
+    << ",\n  \"particles\": " << model.mesh.node_count()
+    << ",\n  \"dofs\": " << model.maps.owned_dofs->getGlobalNumElements()
     << ",\n  \"end_time\": " << number(state.time) << ",\n  \"phase_seconds\": {";
   for (std::size_t i = 0; i < global.size(); ++i)
     o << (i ? ", " : "") << quoted(report_phases()[i]) << ": " << number(global[i]);
-  o << "},\n  \"total_seconds\": " << number(total_seconds) << ",\n  \"memory_high_water_bytes\": " << memory_max;
+  o << "},\n  \"total_seconds\": " << number(total_seconds)
+    << ",\n  \"memory_high_water_bytes\": " << memory_max;
   if (state.energy_started) o << ",\n  \"energy_balance_error\": " << number(state.balance_error());
   if (errors)
-    o << ",\n  \"errors\": {\"exact_solution\": " << quoted(model.scene.exact_solution) << ", \"l2_rel_error\": "
-      << number(errors->l2_relative) << ", \"energy_rel_error\": " << number(errors->energy_relative)
+    o << ",\n  \"errors\": {\"exact_solution\": " << quoted(model.scene.exact_solution)
+      << ", \"l2_rel_error\": " << number(errors->l2_relative)
+      << ", \"energy_rel_error\": " << number(errors->energy_relative)
       << ", \"max_nodal_error\": " << number(errors->max_nodal) << "}";
   o << ",\n  \"reference_values\": [";
   for (std::size_t i = 0; i < checks.size(); ++i)
-    o << (i ? ", " : "") << "{\"name\": " << quoted(checks[i].name) << ", \"quantity\": " << quoted(checks[i].quantity)
-      << ", \"value\": " << number(checks[i].value) << ", \"reference\": " << number(checks[i].reference)
-      << ", \"tolerance\": " << number(checks[i].tolerance) << ", \"passed\": " << (checks[i].passed() ? "true" : "false") << "}";
+    o << (i ? ", " : "") << "{\"name\": " << quoted(checks[i].name)
+      << ", \"quantity\": " << quoted(checks[i].quantity)
+      << ", \"value\": " << number(checks[i].value)
+      << ", \"reference\": " << number(checks[i].reference)
+      << ", \"tolerance\": " << number(checks[i].tolerance)
+      << ", \"passed\": " << (checks[i].passed() ? "true" : "false") << "}";
   o << "]\n}\n";
 }
 

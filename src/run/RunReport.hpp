@@ -27,9 +27,10 @@ std::vector<ReferenceCheck> reference_checks(const ModelOperators& ops, const Ru
                                              const std::vector<double>& global_values);
 
 /// Writes the report on rank 0 (collective: timers and memory are reduced over ranks).
-void write_run_report(const CommPtr& comm, const Model& model, const std::string& json_path, const std::string& results_path,
-                      const RunState& state, const std::optional<ErrorNorms>& errors, const std::vector<ReferenceCheck>& checks,
-                      double total_seconds);
+void write_run_report(const CommPtr& comm, const Model& model, const std::string& json_path,
+                      const std::string& results_path, const RunState& state,
+                      const std::optional<ErrorNorms>& errors,
+                      const std::vector<ReferenceCheck>& checks, double total_seconds);
 
 /// The wall-time phases the report lists (Teuchos timer names without the "efg: " prefix).
 const std::vector<std::string>& report_phases();

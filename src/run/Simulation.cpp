@@ -5,10 +5,10 @@
 
 #include <chrono>
 #include <filesystem>
-#include <optional>
 #include <fstream>
 #include <iomanip>
 #include <memory>
+#include <optional>
 #include <sstream>
 
 #include "core/Errors.hpp"
@@ -25,7 +25,8 @@
 
 namespace efg {
 
-RunOutcome run_stages(const CommPtr& comm, const Model& model, const std::string& path, double setup_seconds) {
+RunOutcome run_stages(const CommPtr& comm, const Model& model, const std::string& path,
+                      double setup_seconds) {
   const auto started = std::chrono::steady_clock::now();
   const auto columns = output_columns(model.scene.output.fields, model.mesh.dimension);
   // A scene builds only what it needs: the stiffness graph and solvers only for implicit stages.
@@ -37,17 +38,20 @@ RunOutcome run_stages(const CommPtr& comm, const Model& model, const std::string
       if (s.driver == "implicit" && !problem) problem = std::make_unique<StaticProblem>(ops);
   });
   RunHistory history(model);
-  ResultsOutput output(comm, path, model.mesh, model.maps.owned_nodes, OutputLayout{columns, {}, history.names()},
+  ResultsOutput output(comm, path, model.mesh, model.maps.owned_nodes,
+                       OutputLayout{columns, {}, history.names()},
                        model.scene.title.empty() ? model.scene.name : model.scene.title);
   std::unique_ptr<std::ofstream> csv;
   if (!model.scene.output.history.empty() && comm->getRank() == 0) {
-    const auto csv_path = (std::filesystem::path(path).parent_path() / model.scene.output.history).string();
+    const auto csv_path =
+        (std::filesystem::path(path).parent_path() / model.scene.output.history).string();
     csv = std::make_unique<std::ofstream>(csv_path);
     *csv << history.csv_header() << "\n";
   }
   RunState state(model.maps.owned_dofs);
   apply_initial_conditions(model, state);
-  Vector d_overlap(model.maps.overlap_dofs), v_overlap(model.maps.overlap_dofs), a_overlap(model.maps.overlap_dofs);
+  Vector d_overlap(model.maps.overlap_dofs), v_overlap(model.maps.overlap_dofs),
+      a_overlap(model.maps.overlap_dofs);
   int records = 0;
   std::vector<double> last_globals;
 
@@ -78,8 +82,8 @@ RunOutcome run_stages(const CommPtr& comm, const Model& model, const std::string
   write(state);
   const double first_end = model.scene.stages.empty() ? 1.0 : model.scene.stages.front().end_time;
   for (const auto& stage : model.scene.stages) {
-    Log::info("stage '" + stage.name + "' (" + stage.driver + "), t = " + std::to_string(state.time) + " to " +
-              std::to_string(stage.end_time));
+    Log::info("stage '" + stage.name + "' (" + stage.driver +
+              "), t = " + std::to_string(state.time) + " to " + std::to_string(stage.end_time));
     try {
       if (stage.driver == "implicit") {
         state.v.putScalar(0.0);
@@ -89,16 +93,18 @@ RunOutcome run_stages(const CommPtr& comm, const Model& model, const std::string
           state.time = t;
           write(state);
         });
-        Log::info("stage '" + stage.name + "' done: " + std::to_string(s.steps) + " steps, " + std::to_string(s.cutbacks) +
-                  " cutbacks, " + std::to_string(s.newton_iterations) + " Newton iterations, " +
-                  std::to_string(s.linear_iterations) + " linear iterations");
+        Log::info("stage '" + stage.name + "' done: " + std::to_string(s.steps) + " steps, " +
+                  std::to_string(s.cutbacks) + " cutbacks, " + std::to_string(s.newton_iterations) +
+                  " Newton iterations, " + std::to_string(s.linear_iterations) +
+                  " linear iterations");
       } else {
         std::unique_ptr<ExplicitDriver> driver;
         run_collectively(comm, [&] { driver = std::make_unique<ExplicitDriver>(*ops, stage); });
         const auto s = driver->run(state, write);
         std::ostringstream o;
-        o << "stage '" << stage.name << "' done: " << s.steps << " steps, dt " << s.smallest_dt << " to " << s.largest_dt
-          << ", worst energy balance error " << 100 * s.worst_balance_error << " %";
+        o << "stage '" << stage.name << "' done: " << s.steps << " steps, dt " << s.smallest_dt
+          << " to " << s.largest_dt << ", worst energy balance error "
+          << 100 * s.worst_balance_error << " %";
         Log::info(o.str());
       }
     } catch (const NumericalError&) {
@@ -113,8 +119,10 @@ RunOutcome run_stages(const CommPtr& comm, const Model& model, const std::string
     ops->to_overlap(state.d, d_overlap);
     errors = error_norms(model, ops->solid(), d_overlap, *ops->exact());
     std::ostringstream o;
-    o << "verification against " << model.scene.exact_solution << ": relative L2 displacement error " << errors->l2_relative
-      << ", relative energy-norm error " << errors->energy_relative << ", largest nodal displacement error " << errors->max_nodal;
+    o << "verification against " << model.scene.exact_solution
+      << ": relative L2 displacement error " << errors->l2_relative
+      << ", relative energy-norm error " << errors->energy_relative
+      << ", largest nodal displacement error " << errors->max_nodal;
     Log::info(o.str());
   }
   output.close();
@@ -124,12 +132,15 @@ RunOutcome run_stages(const CommPtr& comm, const Model& model, const std::string
   const auto checks = reference_checks(*ops, state, history.names(), last_globals);
   for (const auto& c : checks) {
     std::ostringstream o;
-    o << "reference value '" << c.name << "' (" << c.quantity << "): " << c.value << " vs " << c.reference << " within "
-      << 100 * c.tolerance << " %: " << (c.passed() ? "passed" : "FAILED");
+    o << "reference value '" << c.name << "' (" << c.quantity << "): " << c.value << " vs "
+      << c.reference << " within " << 100 * c.tolerance
+      << " %: " << (c.passed() ? "passed" : "FAILED");
     Log::info(o.str());
     if (!c.passed()) outcome.failed_checks.push_back(o.str());
   }
-  const double seconds = setup_seconds + std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  const double seconds =
+      setup_seconds +
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   write_run_report(comm, model, path + ".report.json", path, state, errors, checks, seconds);
   Log::info("run report: " + path + ".report.json");
   return outcome;

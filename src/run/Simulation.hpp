@@ -14,12 +14,13 @@ namespace efg {
 
 struct RunOutcome {
   int records = 0;
-  std::optional<ErrorNorms> errors;         ///< when the scene names an exact solution
+  std::optional<ErrorNorms> errors;        ///< when the scene names an exact solution
   std::vector<std::string> failed_checks;  ///< reference values missed (descriptions)
 };
 
 /// Runs every stage of the model, writes the results to `path` and the run report to
 /// `path`.report.json; `setup_seconds` is the time spent before (scene, mesh, discretization).
-RunOutcome run_stages(const CommPtr& comm, const Model& model, const std::string& path, double setup_seconds = 0);
+RunOutcome run_stages(const CommPtr& comm, const Model& model, const std::string& path,
+                      double setup_seconds = 0);
 
 }  // namespace efg

@@ -16,7 +16,8 @@ void set_scalar(Teuchos::ParameterList& list, const std::string& key, const YAML
   double d = 0;
   if (!quoted && (text == "true" || text == "false") && YAML::convert<bool>::decode(value, b)) {
     list.set(key, b);
-  } else if (!quoted && YAML::convert<long long>::decode(value, i) && i >= INT32_MIN && i <= INT32_MAX) {
+  } else if (!quoted && YAML::convert<long long>::decode(value, i) && i >= INT32_MIN &&
+             i <= INT32_MAX) {
     list.set(key, static_cast<int>(i));
   } else if (!quoted && YAML::convert<double>::decode(value, d)) {
     list.set(key, d);
@@ -25,7 +26,8 @@ void set_scalar(Teuchos::ParameterList& list, const std::string& key, const YAML
   }
 }
 
-void fill(Teuchos::ParameterList& list, const YAML::Node& map, const std::string& file, const std::string& path) {
+void fill(Teuchos::ParameterList& list, const YAML::Node& map, const std::string& file,
+          const std::string& path) {
   for (const auto& kv : map) {
     const auto key = kv.first.as<std::string>();
     const auto& value = kv.second;
@@ -39,15 +41,19 @@ void fill(Teuchos::ParameterList& list, const YAML::Node& map, const std::string
       Teuchos::Array<std::string> words;
       for (const auto& item : value) {
         if (!item.IsScalar())
-          throw InputError(schema::located_message(file, item, key_path, "expected a list of numbers or words"));
+          throw InputError(
+              schema::located_message(file, item, key_path, "expected a list of numbers or words"));
         double d = 0;
         if (YAML::convert<double>::decode(item, d)) numbers.push_back(d);
         words.push_back(item.Scalar());
       }
-      if (numbers.size() == words.size()) list.set(key, numbers);
-      else list.set(key, words);
+      if (numbers.size() == words.size())
+        list.set(key, numbers);
+      else
+        list.set(key, words);
     } else {
-      throw InputError(schema::located_message(file, value, key_path, "expected a value, found nothing"));
+      throw InputError(
+          schema::located_message(file, value, key_path, "expected a value, found nothing"));
     }
   }
 }

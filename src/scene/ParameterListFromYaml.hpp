@@ -2,8 +2,8 @@
 // Ifpack2 and MueLu, which validate them against their own valid parameters when used.
 #pragma once
 
-#include <Teuchos_ParameterList.hpp>
 #include <yaml-cpp/yaml.h>
+#include <Teuchos_ParameterList.hpp>
 
 #include <string>
 

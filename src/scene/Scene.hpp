@@ -55,8 +55,9 @@ struct BoundaryConditionSpec {
   std::string method;
   std::optional<double> penalty;  ///< alpha of beta = alpha E / h; method default when empty
   std::array<std::optional<double>, 3> components;
-  std::array<bool, 3> from_exact{false, false, false};  ///< components taken from the exact solution
-  std::string curve;  ///< empty: constant
+  std::array<bool, 3> from_exact{false, false,
+                                 false};  ///< components taken from the exact solution
+  std::string curve;                      ///< empty: constant
 };
 
 struct LoadSpec {
@@ -118,7 +119,7 @@ struct Scene {
   std::vector<RigidWallSpec> rigid_walls;
   std::vector<StageSpec> stages;
   OutputSpec output;
-  YAML::Node verification;  ///< null when absent
+  YAML::Node verification;     ///< null when absent
   std::string exact_solution;  ///< verification.exact_solution, empty when none
 
   YAML::Node document;  ///< as written, with line marks (for cross-reference messages)

@@ -20,12 +20,13 @@ class Checker {
  public:
   Checker(const Scene& s, const BackgroundMesh& m) : s_(s), m_(m) {}
 
-  [[noreturn]] void fail(const YAML::Node& at, const std::string& path, const std::string& message) const {
+  [[noreturn]] void fail(const YAML::Node& at, const std::string& path,
+                         const std::string& message) const {
     throw InputError(schema::located_message(s_.file, at, path, message));
   }
 
-  void require_name(const YAML::Node& at, const std::string& path, const std::string& name, const char* what,
-                    const std::vector<std::string>& available) const {
+  void require_name(const YAML::Node& at, const std::string& path, const std::string& name,
+                    const char* what, const std::vector<std::string>& available) const {
     for (const auto& a : available)
       if (a == name) return;
     std::string list;
@@ -38,38 +39,49 @@ class Checker {
 
   void require_dimension(const YAML::Node& at, const std::string& path, std::size_t size) const {
     if (size != static_cast<std::size_t>(m_.dimension))
-      fail(at, path, "expected " + std::to_string(m_.dimension) + " entries for this " + std::to_string(m_.dimension) +
-                         "D mesh, found " + std::to_string(size));
+      fail(at, path,
+           "expected " + std::to_string(m_.dimension) + " entries for this " +
+               std::to_string(m_.dimension) + "D mesh, found " + std::to_string(size));
   }
 
   void run() const {
     const auto& d = s_.document;
-    const auto blocks = names_of(m_.blocks), node_sets = names_of(m_.node_sets), side_sets = names_of(m_.side_sets);
+    const auto blocks = names_of(m_.blocks), node_sets = names_of(m_.node_sets),
+               side_sets = names_of(m_.side_sets);
     std::map<std::string, std::string> block_owner;
     for (std::size_t p = 0; p < s_.parts.size(); ++p) {
       const std::string path = "parts[" + std::to_string(p) + "]";
       for (std::size_t b = 0; b < s_.parts[p].blocks.size(); ++b) {
         const auto& name = s_.parts[p].blocks[b];
-        const auto at = d["parts"][p]["blocks"].IsSequence() ? d["parts"][p]["blocks"][b] : d["parts"][p]["blocks"];
+        const auto at = d["parts"][p]["blocks"].IsSequence() ? d["parts"][p]["blocks"][b]
+                                                             : d["parts"][p]["blocks"];
         const auto bpath = path + ".blocks[" + std::to_string(b) + "]";
         require_name(at, bpath, name, "element block", blocks);
         auto [it, inserted] = block_owner.emplace(name, s_.parts[p].name);
         if (!inserted)
-          fail(at, bpath, "block '" + name + "' already belongs to part '" + it->second + "'; a block belongs to one part");
+          fail(at, bpath,
+               "block '" + name + "' already belongs to part '" + it->second +
+                   "'; a block belongs to one part");
       }
-      if (m_.dimension == 2 && s_.parts[p].plane_stress && s_.find_material(s_.parts[p].material)->model == "neo_hookean")
+      if (m_.dimension == 2 && s_.parts[p].plane_stress &&
+          s_.find_material(s_.parts[p].material)->model == "neo_hookean")
         fail(d["parts"][p]["plane"], path + ".plane",
-             "plane stress is available for small-strain materials only; expected plane: strain with model neo_hookean");
+             "plane stress is available for small-strain materials only; expected plane: strain "
+             "with model neo_hookean");
       const auto& dil = s_.parts[p].section.dilation;
-      if (dil.size() > 1) require_dimension(d["parts"][p]["section"]["dilation"], path + ".section.dilation", dil.size());
+      if (dil.size() > 1)
+        require_dimension(d["parts"][p]["section"]["dilation"], path + ".section.dilation",
+                          dil.size());
     }
     for (std::size_t i = 0; i < s_.boundary_conditions.size(); ++i) {
       const auto& bc = s_.boundary_conditions[i];
       const auto path = "boundary_conditions[" + std::to_string(i) + "]";
-      require_name(d["boundary_conditions"][i]["node_set"], path + ".node_set", bc.node_set, "node set", node_sets);
+      require_name(d["boundary_conditions"][i]["node_set"], path + ".node_set", bc.node_set,
+                   "node set", node_sets);
       if (m_.dimension == 2 && (bc.components[2] || bc.from_exact[2]))
-        fail(bc.components[2] ? d["boundary_conditions"][i]["z"] : d["boundary_conditions"][i]["from_exact_solution"], path,
-             "a z component in a 2D mesh; expected x and y only");
+        fail(bc.components[2] ? d["boundary_conditions"][i]["z"]
+                              : d["boundary_conditions"][i]["from_exact_solution"],
+             path, "a z component in a 2D mesh; expected x and y only");
     }
     for (std::size_t i = 0; i < s_.loads.size(); ++i) {
       const auto& load = s_.loads[i];
@@ -77,8 +89,10 @@ class Checker {
       const auto& ld = d["loads"][i];
       if (load.type == "traction" || load.type == "pressure")
         require_name(ld["side_set"], path + ".side_set", load.set, "side set", side_sets);
-      if (load.type == "nodal_force") require_name(ld["node_set"], path + ".node_set", load.set, "node set", node_sets);
-      if (load.type != "pressure" && !load.from_exact) require_dimension(ld["value"], path + ".value", load.value.size());
+      if (load.type == "nodal_force")
+        require_name(ld["node_set"], path + ".node_set", load.set, "node set", node_sets);
+      if (load.type != "pressure" && !load.from_exact)
+        require_dimension(ld["value"], path + ".value", load.value.size());
     }
     for (std::size_t i = 0; i < s_.rigid_walls.size(); ++i) {
       const auto& w = s_.rigid_walls[i];
@@ -89,15 +103,18 @@ class Checker {
       double n2 = 0;
       for (double v : w.normal) n2 += v * v;
       if (!(n2 > 0)) fail(wd["normal"], path + ".normal", "expected a nonzero normal");
-      if (!w.node_set.empty()) require_name(wd["node_set"], path + ".node_set", w.node_set, "node set", node_sets);
+      if (!w.node_set.empty())
+        require_name(wd["node_set"], path + ".node_set", w.node_set, "node set", node_sets);
     }
     for (std::size_t i = 0; i < s_.output.history_node_sets.size(); ++i)
-      require_name(d["output"]["history_node_sets"][i], "output.history_node_sets[" + std::to_string(i) + "]",
+      require_name(d["output"]["history_node_sets"][i],
+                   "output.history_node_sets[" + std::to_string(i) + "]",
                    s_.output.history_node_sets[i], "node set", node_sets);
     for (std::size_t i = 0; i < s_.initial_conditions.size(); ++i) {
       const auto path = "initial_conditions[" + std::to_string(i) + "]";
       const auto& ic = d["initial_conditions"][i];
-      require_name(ic["node_set"], path + ".node_set", s_.initial_conditions[i].node_set, "node set", node_sets);
+      require_name(ic["node_set"], path + ".node_set", s_.initial_conditions[i].node_set,
+                   "node set", node_sets);
       require_dimension(ic["value"], path + ".value", s_.initial_conditions[i].value.size());
     }
   }
@@ -109,6 +126,8 @@ class Checker {
 
 }  // namespace
 
-void check_scene_against_mesh(const Scene& scene, const BackgroundMesh& mesh) { Checker(scene, mesh).run(); }
+void check_scene_against_mesh(const Scene& scene, const BackgroundMesh& mesh) {
+  Checker(scene, mesh).run();
+}
 
 }  // namespace efg

@@ -36,7 +36,8 @@ class SceneBuilder {
  public:
   SceneBuilder(Scene& scene) : s_(scene) {}
 
-  [[noreturn]] void fail(const YAML::Node& at, const std::string& path, const std::string& message) const {
+  [[noreturn]] void fail(const YAML::Node& at, const std::string& path,
+                         const std::string& message) const {
     throw InputError(schema::located_message(s_.file, at, path, message));
   }
 
@@ -47,34 +48,41 @@ class SceneBuilder {
     build_mesh(r["mesh"], d["mesh"]);
     for (std::size_t i = 0; i < r["materials"].size(); ++i) build_material(r["materials"][i]);
     for (std::size_t i = 0; i < r["parts"].size(); ++i) build_part(r["parts"][i], d["parts"][i], i);
-    for (std::size_t i = 0; i < r["curves"].size(); ++i) build_curve(r["curves"][i], d["curves"][i], i);
+    for (std::size_t i = 0; i < r["curves"].size(); ++i)
+      build_curve(r["curves"][i], d["curves"][i], i);
     for (std::size_t i = 0; i < r["boundary_conditions"].size(); ++i)
       build_bc(r["boundary_conditions"][i], d["boundary_conditions"][i], i);
     for (std::size_t i = 0; i < r["loads"].size(); ++i) build_load(r["loads"][i], d["loads"][i], i);
     for (const auto& ic : r["initial_conditions"])
-      s_.initial_conditions.push_back({ic["type"].as<std::string>(), ic["node_set"].as<std::string>(),
+      s_.initial_conditions.push_back({ic["type"].as<std::string>(),
+                                       ic["node_set"].as<std::string>(),
                                        as_vector<double>(ic["value"])});
-    for (std::size_t i = 0; i < r["stages"].size(); ++i) build_stage(r["stages"][i], d["stages"][i], i);
+    for (std::size_t i = 0; i < r["stages"].size(); ++i)
+      build_stage(r["stages"][i], d["stages"][i], i);
     s_.output.file = r["output"]["file"] ? r["output"]["file"].as<std::string>() : s_.name + ".e";
     s_.output.fields = as_vector<std::string>(r["output"]["fields"]);
     s_.output.history = opt_string(r["output"], "history");
     s_.output.history_node_sets = as_vector<std::string>(r["output"]["history_node_sets"]);
     for (const auto& w : r["rigid_walls"])
-      s_.rigid_walls.push_back({w["name"].as<std::string>(), as_vector<double>(w["point"]), as_vector<double>(w["normal"]),
-                                opt_string(w, "node_set"), w["penalty"].as<double>()});
+      s_.rigid_walls.push_back({w["name"].as<std::string>(), as_vector<double>(w["point"]),
+                                as_vector<double>(w["normal"]), opt_string(w, "node_set"),
+                                w["penalty"].as<double>()});
     if (r["verification"]) {
       s_.verification = r["verification"];
-      if (r["verification"]["exact_solution"]) s_.exact_solution = r["verification"]["exact_solution"].as<std::string>();
+      if (r["verification"]["exact_solution"])
+        s_.exact_solution = r["verification"]["exact_solution"].as<std::string>();
     }
     for (std::size_t i = 0; i < s_.boundary_conditions.size(); ++i) {
       const auto& bc = s_.boundary_conditions[i];
       if ((bc.from_exact[0] || bc.from_exact[1] || bc.from_exact[2]) && s_.exact_solution.empty())
-        fail(d["boundary_conditions"][i]["from_exact_solution"], "boundary_conditions[" + std::to_string(i) + "].from_exact_solution",
+        fail(d["boundary_conditions"][i]["from_exact_solution"],
+             "boundary_conditions[" + std::to_string(i) + "].from_exact_solution",
              "needs verification.exact_solution, which the scene does not name");
     }
     for (std::size_t i = 0; i < s_.loads.size(); ++i)
       if (s_.loads[i].from_exact && s_.exact_solution.empty())
-        fail(d["loads"][i]["from_exact_solution"], "loads[" + std::to_string(i) + "].from_exact_solution",
+        fail(d["loads"][i]["from_exact_solution"],
+             "loads[" + std::to_string(i) + "].from_exact_solution",
              "needs verification.exact_solution, which the scene does not name");
   }
 
@@ -86,14 +94,19 @@ class SceneBuilder {
       s_.mesh_file = path.lexically_normal().string();
       std::ifstream probe(s_.mesh_file, std::ios::binary);
       if (!probe)
-        fail(doc["file"], "mesh.file", "cannot read mesh file '" + s_.mesh_file + "' (expected an existing, readable Exodus II file)");
+        fail(doc["file"], "mesh.file",
+             "cannot read mesh file '" + s_.mesh_file +
+                 "' (expected an existing, readable Exodus II file)");
       return;
     }
     const auto& g = m["generate"];
     GeneratorSpec spec;
-    spec.element = enum_of<CellType>(g["element"].as<std::string>(),
-                                     {{"quad4", CellType::quad4}, {"tri3", CellType::tri3}, {"hex8", CellType::hex8},
-                                      {"tet4", CellType::tet4}, {"wedge6", CellType::wedge6}});
+    spec.element =
+        enum_of<CellType>(g["element"].as<std::string>(), {{"quad4", CellType::quad4},
+                                                           {"tri3", CellType::tri3},
+                                                           {"hex8", CellType::hex8},
+                                                           {"tet4", CellType::tet4},
+                                                           {"wedge6", CellType::wedge6}});
     spec.dimension = cell_dimension(spec.element);
     const auto dim = static_cast<std::size_t>(spec.dimension);
     for (const char* key : {"lower", "upper", "cells"})
@@ -107,7 +120,8 @@ class SceneBuilder {
       spec.cells[i] = g["cells"][i].as<int>();
       if (!(spec.upper[i] > spec.lower[i]))
         fail(doc["generate"]["upper"][i], "mesh.generate.upper[" + std::to_string(i) + "]",
-             "expected a value greater than lower[" + std::to_string(i) + "] = " + g["lower"][i].Scalar());
+             "expected a value greater than lower[" + std::to_string(i) +
+                 "] = " + g["lower"][i].Scalar());
     }
     spec.perturbation = g["perturbation"].as<double>();
     spec.seed = g["seed"].as<std::uint64_t>();
@@ -122,7 +136,8 @@ class SceneBuilder {
     if (m["density"]) mat.density = m["density"].as<double>();
     for (const auto& kv : m) {
       const auto key = kv.first.as<std::string>();
-      if (key != "name" && key != "model" && key != "density") mat.constants[key] = kv.second.as<double>();
+      if (key != "name" && key != "model" && key != "density")
+        mat.constants[key] = kv.second.as<double>();
     }
     s_.materials.push_back(mat);
   }
@@ -139,39 +154,55 @@ class SceneBuilder {
     if (!material) {
       std::string names;
       for (const auto& m : s_.materials) names += (names.empty() ? "" : ", ") + m.name;
-      fail(doc["material"], path + ".material", "no material named '" + part.material + "'; materials: " + names);
+      fail(doc["material"], path + ".material",
+           "no material named '" + part.material + "'; materials: " + names);
     }
     const auto& sec = p["section"];
     auto& out = part.section;
-    out.basis = enum_of<Basis>(sec["basis"].as<std::string>(), {{"linear", Basis::linear}, {"quadratic", Basis::quadratic}});
+    out.basis = enum_of<Basis>(sec["basis"].as<std::string>(),
+                               {{"linear", Basis::linear}, {"quadratic", Basis::quadratic}});
     out.kernel = enum_of<KernelType>(sec["kernel"].as<std::string>(),
                                      {{"cubic_spline", KernelType::cubic_spline},
                                       {"quadratic_spline", KernelType::quadratic_spline},
                                       {"quartic_spline", KernelType::quartic_spline}});
-    out.support = enum_of<SupportShape>(sec["support"].as<std::string>(), {{"box", SupportShape::box}, {"sphere", SupportShape::sphere}});
+    out.support =
+        enum_of<SupportShape>(sec["support"].as<std::string>(),
+                              {{"box", SupportShape::box}, {"sphere", SupportShape::sphere}});
     out.dilation = as_vector<double>(sec["dilation"]);
-    out.spacing = enum_of<SpacingMeasure>(sec["spacing"].as<std::string>(),
-                                          {{"cells", SpacingMeasure::cells}, {"neighbors", SpacingMeasure::neighbors}});
+    out.spacing = enum_of<SpacingMeasure>(
+        sec["spacing"].as<std::string>(),
+        {{"cells", SpacingMeasure::cells}, {"neighbors", SpacingMeasure::neighbors}});
     out.per_part_support = sec["support_size"].as<std::string>() == "per_part";
-    out.integration = enum_of<Integration>(sec["integration"].as<std::string>(),
-                                           {{"scni", Integration::scni}, {"nodal", Integration::nodal}, {"gauss", Integration::gauss}});
+    out.integration =
+        enum_of<Integration>(sec["integration"].as<std::string>(), {{"scni", Integration::scni},
+                                                                    {"nodal", Integration::nodal},
+                                                                    {"gauss", Integration::gauss}});
     out.gauss_order = sec["gauss_order"].as<int>();
     out.formulation = enum_of<Formulation>(sec["formulation"].as<std::string>(),
                                            {{"small_strain", Formulation::small_strain},
                                             {"total_lagrangian", Formulation::total_lagrangian}});
     if (out.support == SupportShape::sphere && out.dilation.size() > 1)
       fail(doc["section"]["dilation"], path + ".section.dilation",
-           "a sphere support takes one dilation value, found " + std::to_string(out.dilation.size()));
+           "a sphere support takes one dilation value, found " +
+               std::to_string(out.dilation.size()));
     if (material->model == "linear_elastic" && out.formulation != Formulation::small_strain) {
-      const YAML::Node at = doc["section"] && doc["section"]["formulation"] ? doc["section"]["formulation"] : doc["material"];
+      const YAML::Node at = doc["section"] && doc["section"]["formulation"]
+                                ? doc["section"]["formulation"]
+                                : doc["material"];
       fail(at, path + ".section.formulation",
-           "material '" + material->name + "' (model linear_elastic) is a small-strain model: expected formulation small_strain, found " +
+           "material '" + material->name +
+               "' (model linear_elastic) is a small-strain model: expected formulation "
+               "small_strain, found " +
                sec["formulation"].as<std::string>());
     }
     if (material->model == "neo_hookean" && out.formulation != Formulation::total_lagrangian) {
-      const YAML::Node at = doc["section"] && doc["section"]["formulation"] ? doc["section"]["formulation"] : doc["material"];
+      const YAML::Node at = doc["section"] && doc["section"]["formulation"]
+                                ? doc["section"]["formulation"]
+                                : doc["material"];
       fail(at, path + ".section.formulation",
-           "material '" + material->name + "' (model neo_hookean) is a finite-strain model: expected formulation total_lagrangian, found " +
+           "material '" + material->name +
+               "' (model neo_hookean) is a finite-strain model: expected formulation "
+               "total_lagrangian, found " +
                sec["formulation"].as<std::string>());
     }
     s_.parts.push_back(part);
@@ -179,18 +210,22 @@ class SceneBuilder {
 
   void build_curve(const YAML::Node& c, const YAML::Node& doc, std::size_t i) {
     const std::string path = "curves[" + std::to_string(i) + "]";
-    CurveSpec curve{c["name"].as<std::string>(), as_vector<double>(c["time"]), as_vector<double>(c["value"])};
+    CurveSpec curve{c["name"].as<std::string>(), as_vector<double>(c["time"]),
+                    as_vector<double>(c["value"])};
     if (curve.time.size() != curve.value.size())
       fail(doc["value"], path + ".value",
-           "expected as many values as times (" + std::to_string(curve.time.size()) + "), found " + std::to_string(curve.value.size()));
+           "expected as many values as times (" + std::to_string(curve.time.size()) + "), found " +
+               std::to_string(curve.value.size()));
     for (std::size_t k = 1; k < curve.time.size(); ++k)
       if (!(curve.time[k] > curve.time[k - 1]))
-        fail(doc["time"][k], path + ".time[" + std::to_string(k) + "]", "expected strictly increasing times, found " +
-                                                                       doc["time"][k].Scalar() + " after " + doc["time"][k - 1].Scalar());
+        fail(doc["time"][k], path + ".time[" + std::to_string(k) + "]",
+             "expected strictly increasing times, found " + doc["time"][k].Scalar() + " after " +
+                 doc["time"][k - 1].Scalar());
     s_.curves.push_back(curve);
   }
 
-  void require_curve(const YAML::Node& doc, const std::string& path, const std::string& name) const {
+  void require_curve(const YAML::Node& doc, const std::string& path,
+                     const std::string& name) const {
     if (name.empty()) return;
     for (const auto& c : s_.curves)
       if (c.name == name) return;
@@ -213,7 +248,8 @@ class SceneBuilder {
         const auto axis = static_cast<std::size_t>(c.as<std::string>()[0] - 'x');
         if (bc.components[axis])
           fail(doc["from_exact_solution"], path + ".from_exact_solution",
-               "component " + c.as<std::string>() + " is also given a value; give it one or the other");
+               "component " + c.as<std::string>() +
+                   " is also given a value; give it one or the other");
         bc.from_exact[axis] = true;
       }
     bc.curve = opt_string(b, "curve");
@@ -228,16 +264,21 @@ class SceneBuilder {
     load.type = l["type"].as<std::string>();
     load.set = l["side_set"] ? l["side_set"].as<std::string>() : opt_string(l, "node_set");
     if (l["parts"]) load.parts = as_vector<std::string>(l["parts"]);
-    if (l["value"]) load.value = l["value"].IsSequence() ? as_vector<double>(l["value"]) : std::vector<double>{l["value"].as<double>()};
+    if (l["value"])
+      load.value = l["value"].IsSequence() ? as_vector<double>(l["value"])
+                                           : std::vector<double>{l["value"].as<double>()};
     load.from_exact = l["from_exact_solution"] && l["from_exact_solution"].as<bool>();
-    if ((load.type == "traction" || load.type == "body_force") && load.from_exact == !load.value.empty())
+    if ((load.type == "traction" || load.type == "body_force") &&
+        load.from_exact == !load.value.empty())
       fail(doc, path, "expected exactly one of value, from_exact_solution: true");
     load.curve = opt_string(l, "curve");
     require_curve(doc, path, load.curve);
     for (std::size_t k = 0; k < load.parts.size(); ++k) {
       bool found = false;
       for (const auto& p : s_.parts) found = found || p.name == load.parts[k];
-      if (!found) fail(doc["parts"][k], path + ".parts[" + std::to_string(k) + "]", "no part named '" + load.parts[k] + "'");
+      if (!found)
+        fail(doc["parts"][k], path + ".parts[" + std::to_string(k) + "]",
+             "no part named '" + load.parts[k] + "'");
     }
     s_.loads.push_back(load);
   }
@@ -253,7 +294,8 @@ class SceneBuilder {
       for (std::size_t p = 0; p < s_.parts.size(); ++p)
         if (!s_.find_material(s_.parts[p].material)->density)
           fail(doc["driver"], "stages[" + std::to_string(i) + "].driver",
-               "an explicit stage needs a density for every material; material '" + s_.parts[p].material + "' has none");
+               "an explicit stage needs a density for every material; material '" +
+                   s_.parts[p].material + "' has none");
     s_.stages.push_back(stage);
   }
 
@@ -270,7 +312,9 @@ const MaterialSpec* Scene::find_material(const std::string& material_name) const
 
 std::string read_scene_text(const std::string& file) {
   std::ifstream in(file);
-  if (!in) throw InputError(file + ": cannot read the scene file (expected an existing, readable YAML file)");
+  if (!in)
+    throw InputError(file +
+                     ": cannot read the scene file (expected an existing, readable YAML file)");
   std::ostringstream text;
   text << in.rdbuf();
   return text.str();
@@ -285,12 +329,14 @@ Scene parse_scene(const std::string& text, const std::string& file) {
   try {
     scene.document = YAML::Load(text);
   } catch (const YAML::ParserException& e) {
-    throw InputError(file + ":" + std::to_string(e.mark.line + 1) + ":" + std::to_string(e.mark.column + 1) +
-                     ": YAML syntax error: " + e.msg);
+    throw InputError(file + ":" + std::to_string(e.mark.line + 1) + ":" +
+                     std::to_string(e.mark.column + 1) + ": YAML syntax error: " + e.msg);
   }
   if (!scene.document.IsMap())
-    throw InputError(file + ": expected a YAML map of scene sections (mesh, parts, materials, ...), found " +
-                     (scene.document.IsNull() ? std::string("an empty document") : std::string("something else")));
+    throw InputError(
+        file + ": expected a YAML map of scene sections (mesh, parts, materials, ...), found " +
+        (scene.document.IsNull() ? std::string("an empty document")
+                                 : std::string("something else")));
   scene.resolved = schema::validate(scene.document, scene_schema(), file);
   SceneBuilder(scene).build();
   return scene;

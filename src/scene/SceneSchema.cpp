@@ -11,14 +11,21 @@ SpecPtr mesh_spec() {
           .required("element", choice("Cell type; quad4 and tri3 make a 2D rectangle, hex8, tet4 "
                                       "(6 per cube, Kuhn split) and wedge6 (2 per cube) a 3D box.",
                                       {"quad4", "tri3", "hex8", "tet4", "wedge6"}))
-          .required("lower", real_list("Lower corner of the domain, one entry per dimension.", "length").items(2, 3))
-          .required("upper", real_list("Upper corner of the domain, one entry per dimension.", "length").items(2, 3))
+          .required("lower",
+                    real_list("Lower corner of the domain, one entry per dimension.", "length")
+                        .items(2, 3))
+          .required("upper",
+                    real_list("Upper corner of the domain, one entry per dimension.", "length")
+                        .items(2, 3))
           .required("cells", integer_list("Number of cells per direction, one entry per dimension.")
-                                 .items(2, 3).at_least(1))
+                                 .items(2, 3)
+                                 .at_least(1))
           .optional("perturbation",
                     real("Largest random node shift as a fraction of the cell size per direction; "
-                         "boundary nodes move only within their boundary plane.", "-")
-                        .at_least(0).at_most(0.3),
+                         "boundary nodes move only within their boundary plane.",
+                         "-")
+                        .at_least(0)
+                        .at_most(0.3),
                     "0")
           .optional("seed", integer("Seed of the perturbation's random numbers.").at_least(0), "1")
           .optional("block_name", string("Name of the generated element block."), "block_1");
@@ -33,45 +40,62 @@ SpecPtr mesh_spec() {
 SpecPtr section_spec() {
   return map("Meshfree discretization of the part (LS-DYNA *SECTION_SOLID_EFG).")
       .optional("basis", choice("MLS polynomial basis.", {"linear", "quadratic"}), "linear")
-      .optional("kernel", choice("Kernel (weight) function.",
-                                 {"cubic_spline", "quadratic_spline", "quartic_spline"}),
+      .optional("kernel",
+                choice("Kernel (weight) function.",
+                       {"cubic_spline", "quadratic_spline", "quartic_spline"}),
                 "cubic_spline")
-      .optional("support", choice("Support shape: box is a tensor product with a dilation per "
-                                  "direction, sphere uses the largest.", {"box", "sphere"}),
+      .optional("support",
+                choice("Support shape: box is a tensor product with a dilation per "
+                       "direction, sphere uses the largest.",
+                       {"box", "sphere"}),
                 "box")
-      .optional("dilation",
-                real_list("Normalized dilation (support size / nodal spacing); one value, or one per "
-                          "direction for box supports.", "-")
-                    .items(1, 3).at_least(1.0).scalar_allowed(),
-                "1.5")
-      .optional("spacing",
-                choice("How the nodal spacing is measured: from the background cells around the node "
-                       "(LS-DYNA IDILA=0) or from the nearest surrounding nodes (IDILA=1).",
-                       {"cells", "neighbors"}),
-                "cells")
+      .optional(
+          "dilation",
+          real_list("Normalized dilation (support size / nodal spacing); one value, or one per "
+                    "direction for box supports.",
+                    "-")
+              .items(1, 3)
+              .at_least(1.0)
+              .scalar_allowed(),
+          "1.5")
+      .optional(
+          "spacing",
+          choice("How the nodal spacing is measured: from the background cells around the node "
+                 "(LS-DYNA IDILA=0) or from the nearest surrounding nodes (IDILA=1).",
+                 {"cells", "neighbors"}),
+          "cells")
       .optional("support_size",
                 choice("Each particle its own support size, or the part's largest for all.",
                        {"per_particle", "per_part"}),
                 "per_particle")
-      .optional("integration",
-                choice("Domain integration: stabilized conforming nodal integration (Chen et al. "
-                       "2001), direct nodal (unstable, for comparison) or Gauss on background cells.",
-                       {"scni", "nodal", "gauss"}),
-                "scni")
-      .optional("gauss_order", integer("Gauss points per direction (integration: gauss).").at_least(1).at_most(6), "2")
+      .optional(
+          "integration",
+          choice("Domain integration: stabilized conforming nodal integration (Chen et al. "
+                 "2001), direct nodal (unstable, for comparison) or Gauss on background cells.",
+                 {"scni", "nodal", "gauss"}),
+          "scni")
+      .optional("gauss_order",
+                integer("Gauss points per direction (integration: gauss).").at_least(1).at_most(6),
+                "2")
       .optional("formulation",
                 choice("Kinematics: small strain, or finite strain total Lagrangian with the "
-                       "Lagrangian kernel.", {"small_strain", "total_lagrangian"}),
+                       "Lagrangian kernel.",
+                       {"small_strain", "total_lagrangian"}),
                 "small_strain");
 }
 
 SpecPtr part_spec() {
   return map("A meshfree part: element blocks discretized with one section and one material.")
       .required("name", string("Part name, unique."))
-      .required("blocks", string_list("Element block names of the mesh that make up the part.").items(1, 1000000))
+      .required(
+          "blocks",
+          string_list("Element block names of the mesh that make up the part.").items(1, 1000000))
       .required("material", string("Name of an entry of materials."))
       .optional("section", section_spec(), "{}")
-      .optional("thickness", real("Out-of-plane thickness (2D plane stress and plane strain).", "length").above(0), "1")
+      .optional(
+          "thickness",
+          real("Out-of-plane thickness (2D plane stress and plane strain).", "length").above(0),
+          "1")
       .optional("plane", choice("2D assumption.", {"strain", "stress"}), "strain");
 }
 
@@ -81,38 +105,56 @@ SpecPtr material_spec() {
   return map("A material model. Keys after model depend on the model.")
       .required("name", string("Material name, unique."))
       .required("model", choice("Constitutive model.", {"linear_elastic", "neo_hookean"}))
-      .optional("density", real("Mass density (needed by explicit stages).", "mass/length^3").above(0))
+      .optional("density",
+                real("Mass density (needed by explicit stages).", "mass/length^3").above(0))
       .discriminated_by("model")
-      .variant("linear_elastic", {required_key("youngs_modulus", youngs), required_key("poissons_ratio", poisson)})
-      .variant("neo_hookean",
-               {required_key("youngs_modulus", real("Small-strain Young's modulus; mu = E/(2(1+nu)).", "stress").above(0)),
-                required_key("poissons_ratio", real("Small-strain Poisson's ratio; kappa = E/(3(1-2nu)).", "-").above(-1.0).below(0.5))});
+      .variant("linear_elastic",
+               {required_key("youngs_modulus", youngs), required_key("poissons_ratio", poisson)})
+      .variant(
+          "neo_hookean",
+          {required_key("youngs_modulus",
+                        real("Small-strain Young's modulus; mu = E/(2(1+nu)).", "stress").above(0)),
+           required_key("poissons_ratio",
+                        real("Small-strain Poisson's ratio; kappa = E/(3(1-2nu)).", "-")
+                            .above(-1.0)
+                            .below(0.5))});
 }
 
 std::vector<Key> component_keys(const std::string& what, const std::string& unit) {
-  return {optional_key("x", real(what + " in x.", unit)), optional_key("y", real(what + " in y.", unit)),
+  return {optional_key("x", real(what + " in x.", unit)),
+          optional_key("y", real(what + " in y.", unit)),
           optional_key("z", real(what + " in z (3D only).", unit))};
 }
 
 SpecPtr boundary_condition_spec() {
   auto keys = [](const std::string& what, const std::string& unit) {
     auto k = component_keys(what, unit);
-    k.push_back(optional_key("curve", string("Name of a curve scaling the values over time; see the stage drivers for what happens without one.")));
-    k.push_back(optional_key("from_exact_solution",
-                             string_list("Components prescribed from the verification block's exact solution at each node.")
-                                 .choices({"x", "y", "z"}).items(1, 3)));
+    k.push_back(optional_key("curve", string("Name of a curve scaling the values over time; see "
+                                             "the stage drivers for what happens without one.")));
+    k.push_back(optional_key(
+        "from_exact_solution",
+        string_list(
+            "Components prescribed from the verification block's exact solution at each node.")
+            .choices({"x", "y", "z"})
+            .items(1, 3)));
     return k;
   };
-  return map("An essential boundary condition on a node set. Only the components given are constrained.")
+  return map("An essential boundary condition on a node set. Only the components given are "
+             "constrained.")
       .required("name", string("Condition name, unique."))
       .required("type", choice("Prescribed quantity.", {"displacement", "velocity"}))
       .required("node_set", string("Node set of the mesh the condition applies to."))
-      .optional("method",
-                choice("Enforcement with non-interpolating shape functions (docs/boundary_conditions.md).",
-                       {"transformation", "nitsche", "penalty"}),
-                "transformation")
-      .optional("penalty", real("Factor alpha of the boundary stiffness beta = alpha E / h (nitsche: default 100; penalty: "
-                                "default 1e4).", "-").above(0))
+      .optional(
+          "method",
+          choice(
+              "Enforcement with non-interpolating shape functions (docs/boundary_conditions.md).",
+              {"transformation", "nitsche", "penalty"}),
+          "transformation")
+      .optional("penalty", real("Factor alpha of the boundary stiffness beta = alpha E / h "
+                                "(nitsche: default 100; penalty: "
+                                "default 1e4).",
+                                "-")
+                               .above(0))
       .discriminated_by("type")
       .variant("displacement", keys("Prescribed displacement", "length"))
       .variant("velocity", keys("Prescribed velocity", "length/time"))
@@ -120,36 +162,56 @@ SpecPtr boundary_condition_spec() {
 }
 
 SpecPtr load_spec() {
-  auto curve = optional_key("curve", string("Name of a curve scaling the load over time; see the stage drivers for what happens without one."));
+  auto curve = optional_key("curve", string("Name of a curve scaling the load over time; see the "
+                                            "stage drivers for what happens without one."));
   auto exact = optional_key("from_exact_solution",
-                            boolean("Take the load from the verification block's exact solution (traction P N, or body force) instead of value."),
+                            boolean("Take the load from the verification block's exact solution "
+                                    "(traction P N, or body force) instead of value."),
                             "false");
   return map("An external load. Keys after type depend on the type.")
       .required("name", string("Load name, unique."))
-      .required("type", choice("Kind of load.", {"traction", "pressure", "nodal_force", "body_force"}))
+      .required("type",
+                choice("Kind of load.", {"traction", "pressure", "nodal_force", "body_force"}))
       .discriminated_by("type")
-      .variant("traction", {required_key("side_set", string("Side set the traction acts on.")),
-                            optional_key("value", real_list("Traction vector (force per reference area), one entry per dimension.", "stress").items(2, 3)),
-                            exact, curve})
-      .variant("pressure", {required_key("side_set", string("Side set the pressure acts on.")),
-                            required_key("value", real("Pressure, positive into the body.", "stress")), curve})
-      .variant("nodal_force", {required_key("node_set", string("Node set sharing the force equally.")),
-                               required_key("value", real_list("Total force vector, one entry per dimension.", "force").items(2, 3)),
-                               curve})
-      .variant("body_force", {optional_key("parts", string_list("Parts loaded; all when omitted.")),
-                              optional_key("value", real_list("Force per unit reference volume, one entry per dimension.", "force/length^3").items(2, 3)),
-                              exact, curve});
+      .variant(
+          "traction",
+          {required_key("side_set", string("Side set the traction acts on.")),
+           optional_key(
+               "value",
+               real_list("Traction vector (force per reference area), one entry per dimension.",
+                         "stress")
+                   .items(2, 3)),
+           exact, curve})
+      .variant("pressure",
+               {required_key("side_set", string("Side set the pressure acts on.")),
+                required_key("value", real("Pressure, positive into the body.", "stress")), curve})
+      .variant("nodal_force",
+               {required_key("node_set", string("Node set sharing the force equally.")),
+                required_key(
+                    "value",
+                    real_list("Total force vector, one entry per dimension.", "force").items(2, 3)),
+                curve})
+      .variant("body_force",
+               {optional_key("parts", string_list("Parts loaded; all when omitted.")),
+                optional_key("value",
+                             real_list("Force per unit reference volume, one entry per dimension.",
+                                       "force/length^3")
+                                 .items(2, 3)),
+                exact, curve});
 }
 
 SpecPtr initial_condition_spec() {
   return map("An initial condition on a node set.")
       .required("type", choice("Initial quantity.", {"velocity", "displacement"}))
       .required("node_set", string("Node set of the mesh."))
-      .required("value", real_list("Vector value, one entry per dimension.", "length/time or length").items(2, 3));
+      .required(
+          "value",
+          real_list("Vector value, one entry per dimension.", "length/time or length").items(2, 3));
 }
 
 SpecPtr curve_spec() {
-  return map("A piecewise-linear function of time (LS-DYNA *DEFINE_CURVE); constant beyond its ends.")
+  return map("A piecewise-linear function of time (LS-DYNA *DEFINE_CURVE); constant beyond its "
+             "ends.")
       .required("name", string("Curve name, unique."))
       .required("time", real_list("Abscissae, strictly increasing.", "time").items(2, 100000))
       .required("value", real_list("Ordinates, as many as times.", "-").items(2, 100000));
@@ -160,56 +222,101 @@ SpecPtr stage_spec() {
              "one left. Keys after driver depend on the driver.")
       .required("name", string("Stage name, unique."))
       .required("driver", choice("Time integration.", {"implicit", "explicit"}))
-      .required("end_time", real("Stage end time (pseudo-time for static implicit stages).", "time").above(0))
-      .optional("output_interval", real("Time between output records; when omitted, implicit stages write the stage end and explicit stages 20 records.", "time").above(0))
+      .required("end_time",
+                real("Stage end time (pseudo-time for static implicit stages).", "time").above(0))
+      .optional("output_interval",
+                real("Time between output records; when omitted, implicit stages write the stage "
+                     "end and explicit stages 20 records.",
+                     "time")
+                    .above(0))
       .discriminated_by("driver")
-      .variant("implicit",
-               {optional_key("load_steps", integer("Initial number of load steps.").at_least(1), "1"),
-                optional_key("min_step_fraction", real("Smallest load step after cutbacks, as a fraction of end_time.", "-").above(0).at_most(1), "1e-4"),
-                optional_key("nonlinear_solver", passthrough("NOX parameter list (e.g. Nonlinear Solver, Line Search)."), "{}"),
-                optional_key("linear_solver", passthrough("Belos parameter list; 'Solver Type' picks the method."), "{}"),
-                optional_key("preconditioner", passthrough("Ifpack2 or MueLu parameter list; 'Type' picks the package."), "{}")})
-      .variant("explicit",
-               {optional_key("dt_scale", real("Factor on the stable time step.", "-").above(0).at_most(1), "0.9"),
-                optional_key("dt", real("Fixed time step instead of the stable estimate.", "time").above(0)),
-                optional_key("allow_unstable_dt", boolean("Run a fixed dt above the stable limit (detected and stopped if it blows up)."), "false"),
-                optional_key("dt_update_interval", integer("Steps between re-estimates of the stable time step.").at_least(1), "100")});
+      .variant(
+          "implicit",
+          {optional_key("load_steps", integer("Initial number of load steps.").at_least(1), "1"),
+           optional_key("min_step_fraction",
+                        real("Smallest load step after cutbacks, as a fraction of end_time.", "-")
+                            .above(0)
+                            .at_most(1),
+                        "1e-4"),
+           optional_key("nonlinear_solver",
+                        passthrough("NOX parameter list (e.g. Nonlinear Solver, Line Search)."),
+                        "{}"),
+           optional_key("linear_solver",
+                        passthrough("Belos parameter list; 'Solver Type' picks the method."), "{}"),
+           optional_key("preconditioner",
+                        passthrough("Ifpack2 or MueLu parameter list; 'Type' picks the package."),
+                        "{}")})
+      .variant(
+          "explicit",
+          {optional_key("dt_scale",
+                        real("Factor on the stable time step.", "-").above(0).at_most(1), "0.9"),
+           optional_key("dt",
+                        real("Fixed time step instead of the stable estimate.", "time").above(0)),
+           optional_key(
+               "allow_unstable_dt",
+               boolean(
+                   "Run a fixed dt above the stable limit (detected and stopped if it blows up)."),
+               "false"),
+           optional_key("dt_update_interval",
+                        integer("Steps between re-estimates of the stable time step.").at_least(1),
+                        "100")});
 }
 
 SpecPtr rigid_wall_spec() {
-  return map("A fixed planar rigid wall (LS-DYNA *RIGIDWALL_PLANAR): particles may not cross the plane through point "
+  return map("A fixed planar rigid wall (LS-DYNA *RIGIDWALL_PLANAR): particles may not cross the "
+             "plane through point "
              "against normal; enforced by a penalty force in explicit stages.")
       .required("name", string("Wall name, unique."))
       .required("point", real_list("A point of the plane.", "length").items(2, 3))
-      .required("normal", real_list("Normal pointing to the side the particles stay on (need not be unit).", "-").items(2, 3))
-      .optional("node_set", string("Node set of the particles the wall acts on; all particles when omitted."))
-      .optional("penalty", real("Wall stiffness per particle as a fraction of its mass / dt^2 (stable up to about 1).", "-").above(0).at_most(1), "0.5");
+      .required(
+          "normal",
+          real_list("Normal pointing to the side the particles stay on (need not be unit).", "-")
+              .items(2, 3))
+      .optional("node_set",
+                string("Node set of the particles the wall acts on; all particles when omitted."))
+      .optional("penalty",
+                real("Wall stiffness per particle as a fraction of its mass / dt^2 (stable up to "
+                     "about 1).",
+                     "-")
+                    .above(0)
+                    .at_most(1),
+                "0.5");
 }
 
 SpecPtr output_spec() {
   return map("Results output.")
-      .optional("file", string("Exodus II results file, relative to the output folder; default: the scene's name with .e."))
+      .optional("file", string("Exodus II results file, relative to the output folder; default: "
+                               "the scene's name with .e."))
       .optional("fields",
                 string_list("Nodal (particle) fields written at each record.")
                     .choices({"displacement", "velocity", "acceleration", "stress", "strain",
                               "von_mises", "nodal_volume", "owner_rank"}),
                 "[displacement, nodal_volume, owner_rank]")
-      .optional("history", string("CSV file, relative to the output folder, of the global quantities (energies, wall forces, "
-                                  "reactions) and the node sets' mean displacement and velocity at every record; none when omitted."))
-      .optional("history_node_sets", string_list("Node sets whose mean displacement and velocity go to the history file."), "[]");
+      .optional("history", string("CSV file, relative to the output folder, of the global "
+                                  "quantities (energies, wall forces, "
+                                  "reactions) and the node sets' mean displacement and velocity at "
+                                  "every record; none when omitted."))
+      .optional(
+          "history_node_sets",
+          string_list("Node sets whose mean displacement and velocity go to the history file."),
+          "[]");
 }
 
 SpecPtr verification_spec() {
-  auto reference = map("A scalar result checked against a reference value.")
-                       .required("name", string("Quantity label, unique."))
-                       .required("quantity", string("What is measured, e.g. displacement_y@node_set:tip."))
-                       .required("value", real("Reference value.", "as the quantity"))
-                       .optional("tolerance", real("Relative tolerance.", "-").above(0), "0.01");
+  auto reference =
+      map("A scalar result checked against a reference value.")
+          .required("name", string("Quantity label, unique."))
+          .required("quantity", string("What is measured, e.g. displacement_y@node_set:tip."))
+          .required("value", real("Reference value.", "as the quantity"))
+          .optional("tolerance", real("Relative tolerance.", "-").above(0), "0.01");
   return map("Optional: how the run checks itself (exact solution or reference values).")
       .optional("exact_solution",
                 choice("Named exact solution the error norms are measured against.",
-                       {"timoshenko_beam", "bar_1d", "homogeneous_stretch", "linear_patch", "wave_front"}))
-      .optional("parameters", passthrough("Parameters of the exact solution; see docs/verification.md (e.g. length, depth, load of the beam)."))
+                       {"timoshenko_beam", "bar_1d", "homogeneous_stretch", "linear_patch",
+                        "wave_front"}))
+      .optional("parameters",
+                passthrough("Parameters of the exact solution; see docs/verification.md (e.g. "
+                            "length, depth, load of the beam)."))
       .optional("reference_values", list("Scalar reference values.", reference).unique_names());
 }
 
@@ -219,14 +326,25 @@ Spec build_scene_schema() {
           .optional("title", string("Free text written to the log and the Exodus title."), "\"\"")
           .required("mesh", mesh_spec())
           .required("parts", list("Meshfree parts.", part_spec()).items(1, 1000000).unique_names())
-          .required("materials", list("Materials.", material_spec()).items(1, 1000000).unique_names())
-          .optional("boundary_conditions", list("Essential boundary conditions.", boundary_condition_spec()).unique_names(), "[]")
+          .required("materials",
+                    list("Materials.", material_spec()).items(1, 1000000).unique_names())
+          .optional(
+              "boundary_conditions",
+              list("Essential boundary conditions.", boundary_condition_spec()).unique_names(),
+              "[]")
           .optional("loads", list("External loads.", load_spec()).unique_names(), "[]")
-          .optional("initial_conditions", list("Initial conditions.", initial_condition_spec()), "[]")
+          .optional("initial_conditions", list("Initial conditions.", initial_condition_spec()),
+                    "[]")
           .optional("curves", list("Load curves.", curve_spec()).unique_names(), "[]")
-          .optional("rigid_walls", list("Planar rigid walls (explicit stages).", rigid_wall_spec()).unique_names(), "[]")
-          .optional("stages", list("Analysis stages, run in order. With none, the run writes the "
-                                   "initial state only (a model check).", stage_spec()).unique_names(), "[]")
+          .optional("rigid_walls",
+                    list("Planar rigid walls (explicit stages).", rigid_wall_spec()).unique_names(),
+                    "[]")
+          .optional("stages",
+                    list("Analysis stages, run in order. With none, the run writes the "
+                         "initial state only (a model check).",
+                         stage_spec())
+                        .unique_names(),
+                    "[]")
           .optional("output", output_spec(), "{}")
           .optional("verification", verification_spec());
   return *root;

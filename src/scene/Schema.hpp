@@ -15,17 +15,17 @@
 namespace efg::schema {
 
 enum class Type {
-  map,          ///< fixed keys, optionally with a discriminator choosing extra keys
-  list,         ///< a sequence of items that all follow `item`
-  real,         ///< a finite floating-point number
-  integer,      ///< a whole number
-  boolean,      ///< true or false
-  string,       ///< any scalar text
-  choice,       ///< one of `choices`
-  real_list,    ///< a sequence of reals (or one real when `scalar_allowed`)
-  integer_list, ///< a sequence of integers
-  string_list,  ///< a sequence of strings (restricted to `choices` when given)
-  passthrough   ///< a free map handed unchecked to a Trilinos package as a ParameterList
+  map,           ///< fixed keys, optionally with a discriminator choosing extra keys
+  list,          ///< a sequence of items that all follow `item`
+  real,          ///< a finite floating-point number
+  integer,       ///< a whole number
+  boolean,       ///< true or false
+  string,        ///< any scalar text
+  choice,        ///< one of `choices`
+  real_list,     ///< a sequence of reals (or one real when `scalar_allowed`)
+  integer_list,  ///< a sequence of integers
+  string_list,   ///< a sequence of strings (restricted to `choices` when given)
+  passthrough    ///< a free map handed unchecked to a Trilinos package as a ParameterList
 };
 
 struct Spec;
@@ -52,7 +52,7 @@ struct Spec {
   bool scalar_allowed = false;
   // map
   std::vector<Key> keys;
-  std::string discriminator;                     ///< name of a choice key in `keys`
+  std::string discriminator;                         ///< name of a choice key in `keys`
   std::map<std::string, std::vector<Key>> variants;  ///< extra keys per discriminator value
   std::vector<std::vector<std::string>> exactly_one_of;
   std::vector<std::vector<std::string>> at_least_one_of;
@@ -75,7 +75,8 @@ class Builder {
   Builder& choices(std::vector<std::string> c);
   Builder& items(std::size_t min, std::size_t max);
   Builder& scalar_allowed();
-  Builder& key(const std::string& name, SpecPtr spec, bool required, std::string default_value = "");
+  Builder& key(const std::string& name, SpecPtr spec, bool required,
+               std::string default_value = "");
   Builder& required(const std::string& name, SpecPtr spec) { return key(name, spec, true); }
   Builder& optional(const std::string& name, SpecPtr spec, std::string default_value = "") {
     return key(name, spec, false, std::move(default_value));

@@ -11,8 +11,8 @@
 
 namespace efg::schema {
 
-std::string located_message(const std::string& file, const YAML::Node& node, const std::string& path,
-                            const std::string& message) {
+std::string located_message(const std::string& file, const YAML::Node& node,
+                            const std::string& path, const std::string& message) {
   std::ostringstream o;
   o << file;
   const auto mark = node.Mark();
@@ -40,7 +40,9 @@ std::string describe_found(const YAML::Node& node) {
   return "'" + node.Scalar() + "'";
 }
 
-bool is_quoted(const YAML::Node& node) { return node.Tag() == "!"; }
+bool is_quoted(const YAML::Node& node) {
+  return node.Tag() == "!";
+}
 
 std::string first_sentence(const std::string& doc) {
   const auto end = doc.find(". ");
@@ -53,20 +55,26 @@ class Validator {
 
   YAML::Node check(const YAML::Node& node, const Spec& spec, const std::string& path) {
     switch (spec.type) {
-      case Type::map: return check_map(node, spec, path);
-      case Type::list: return check_list(node, spec, path);
+      case Type::map:
+        return check_map(node, spec, path);
+      case Type::list:
+        return check_list(node, spec, path);
       case Type::passthrough:
-        if (!node.IsNull() && !node.IsMap()) fail(node, path, "expected a map of solver parameters, found " + describe_found(node));
+        if (!node.IsNull() && !node.IsMap())
+          fail(node, path, "expected a map of solver parameters, found " + describe_found(node));
         return node.IsNull() ? YAML::Node(YAML::NodeType::Map) : YAML::Clone(node);
       case Type::real_list:
       case Type::integer_list:
-      case Type::string_list: return check_scalar_list(node, spec, path);
-      default: return check_scalar(node, spec, path);
+      case Type::string_list:
+        return check_scalar_list(node, spec, path);
+      default:
+        return check_scalar(node, spec, path);
     }
   }
 
  private:
-  [[noreturn]] void fail(const YAML::Node& node, const std::string& path, const std::string& message) const {
+  [[noreturn]] void fail(const YAML::Node& node, const std::string& path,
+                         const std::string& message) const {
     throw InputError(located_message(file_, node, path, message));
   }
 
@@ -74,16 +82,23 @@ class Validator {
     const std::string expected = "expected " + article(spec) + describe_expected(spec);
     if (!node.IsScalar()) fail(node, path, expected + ", found " + describe_found(node));
     switch (spec.type) {
-      case Type::real: check_number(node, spec, path, false); break;
-      case Type::integer: check_number(node, spec, path, true); break;
+      case Type::real:
+        check_number(node, spec, path, false);
+        break;
+      case Type::integer:
+        check_number(node, spec, path, true);
+        break;
       case Type::boolean: {
         bool b = false;
         if (is_quoted(node) || !YAML::convert<bool>::decode(node, b))
           fail(node, path, expected + ", found " + describe_found(node));
         break;
       }
-      case Type::choice: check_choice(node, spec, path); break;
-      default: break;
+      case Type::choice:
+        check_choice(node, spec, path);
+        break;
+      default:
+        break;
     }
     return YAML::Clone(node);
   }
@@ -99,7 +114,8 @@ class Validator {
     return text;
   }
 
-  double check_number(const YAML::Node& node, const Spec& spec, const std::string& path, bool integral) {
+  double check_number(const YAML::Node& node, const Spec& spec, const std::string& path,
+                      bool integral) {
     double value = 0;
     bool ok = !is_quoted(node);
     if (ok && integral) {
@@ -109,7 +125,8 @@ class Validator {
     } else if (ok) {
       ok = YAML::convert<double>::decode(node, value) && std::isfinite(value);
     }
-    const std::string expected = std::string("expected ") + (integral ? "an integer" : "a finite real") +
+    const std::string expected = std::string("expected ") +
+                                 (integral ? "an integer" : "a finite real") +
                                  (spec.range_text().empty() ? "" : " " + spec.range_text());
     if (!ok) fail(node, path, expected + ", found " + describe_found(node));
     const bool below = spec.min && (spec.min_exclusive ? value <= *spec.min : value < *spec.min);
@@ -138,17 +155,19 @@ class Validator {
       fail(node, path, "expected a " + spec.type_name() + ", found " + describe_found(node));
     }
     if (given.size() < spec.min_items || given.size() > spec.max_items) {
-      std::string count = spec.min_items == spec.max_items
-                              ? std::to_string(spec.min_items)
-                              : (spec.max_items == std::numeric_limits<std::size_t>::max()
-                                     ? "at least " + std::to_string(spec.min_items)
-                                     : std::to_string(spec.min_items) + " to " + std::to_string(spec.max_items));
+      std::string count =
+          spec.min_items == spec.max_items
+              ? std::to_string(spec.min_items)
+              : (spec.max_items == std::numeric_limits<std::size_t>::max()
+                     ? "at least " + std::to_string(spec.min_items)
+                     : std::to_string(spec.min_items) + " to " + std::to_string(spec.max_items));
       fail(node, path, "expected " + count + " entries, found " + std::to_string(given.size()));
     }
     Spec item = spec;
-    item.type = spec.type == Type::real_list ? Type::real
+    item.type = spec.type == Type::real_list      ? Type::real
                 : spec.type == Type::integer_list ? Type::integer
-                : spec.choices.empty() ? Type::string : Type::choice;
+                : spec.choices.empty()            ? Type::string
+                                                  : Type::choice;
     for (std::size_t i = 0; i < given.size(); ++i)
       items.push_back(check_scalar(given[i], item, path + "[" + std::to_string(i) + "]"));
     return items;
@@ -157,9 +176,13 @@ class Validator {
   YAML::Node check_list(const YAML::Node& node, const Spec& spec, const std::string& path) {
     YAML::Node out(YAML::NodeType::Sequence);
     if (node.IsNull()) return out;
-    if (!node.IsSequence()) fail(node, path, "expected a list (entries starting with '- '), found " + describe_found(node));
+    if (!node.IsSequence())
+      fail(node, path,
+           "expected a list (entries starting with '- '), found " + describe_found(node));
     if (node.size() < spec.min_items)
-      fail(node, path, "expected at least " + std::to_string(spec.min_items) + " entries, found " + std::to_string(node.size()));
+      fail(node, path,
+           "expected at least " + std::to_string(spec.min_items) + " entries, found " +
+               std::to_string(node.size()));
     std::map<std::string, int> names;
     for (std::size_t i = 0; i < node.size(); ++i) {
       const std::string item_path = path + "[" + std::to_string(i) + "]";
@@ -169,7 +192,8 @@ class Validator {
         auto [it, inserted] = names.emplace(name, node[i]["name"].Mark().line + 1);
         if (!inserted)
           fail(node[i]["name"], item_path + ".name",
-               "name '" + name + "' is used twice (first at line " + std::to_string(it->second) + "); names must be unique");
+               "name '" + name + "' is used twice (first at line " + std::to_string(it->second) +
+                   "); names must be unique");
       }
     }
     return out;
@@ -177,7 +201,8 @@ class Validator {
 
   YAML::Node check_map(const YAML::Node& node, const Spec& spec, const std::string& path) {
     if (!node.IsNull() && !node.IsMap())
-      fail(node, path, "expected a map (indented 'key: value' lines), found " + describe_found(node));
+      fail(node, path,
+           "expected a map (indented 'key: value' lines), found " + describe_found(node));
 
     // Keys as written, with duplicate detection (yaml-cpp silently keeps one of them).
     std::map<std::string, YAML::Node> given_values;
@@ -189,7 +214,8 @@ class Validator {
         const auto& k = kv.first.Scalar();
         if (given_keys.count(k))
           fail(kv.first, child_path(path, k),
-               "duplicate key (first given at line " + std::to_string(given_keys[k].Mark().line + 1) + ")");
+               "duplicate key (first given at line " +
+                   std::to_string(given_keys[k].Mark().line + 1) + ")");
         given_keys[k] = kv.first;
         given_values[k] = kv.second;
         order.push_back(k);
@@ -210,7 +236,8 @@ class Validator {
         variant = disc->default_value;
       }
       if (spec.variants.count(variant))
-        allowed.insert(allowed.end(), spec.variants.at(variant).begin(), spec.variants.at(variant).end());
+        allowed.insert(allowed.end(), spec.variants.at(variant).begin(),
+                       spec.variants.at(variant).end());
     }
 
     std::vector<std::string> allowed_names;
@@ -221,8 +248,8 @@ class Validator {
         for (const auto& vk : keys)
           if (vk.name == k)
             fail(given_keys[k], child_path(path, k),
-                 "key not allowed with " + spec.discriminator + " '" + variant + "' (it belongs to " +
-                     spec.discriminator + " '" + other + "')");
+                 "key not allowed with " + spec.discriminator + " '" + variant +
+                     "' (it belongs to " + spec.discriminator + " '" + other + "')");
       std::string message = "unknown key '" + k + "'";
       if (auto s = closest_match(k, allowed_names)) message += " (did you mean '" + *s + "'?)";
       message += "; allowed keys here: " + join(allowed_names);
@@ -234,8 +261,9 @@ class Validator {
       for (const auto& g : group)
         if (given_values.count(g)) present.push_back(g);
       if (present.size() != 1)
-        fail(node, path, "expected exactly one of " + join(group, ", ") + ", found " +
-                             (present.empty() ? "none" : join(present, " and ")));
+        fail(node, path,
+             "expected exactly one of " + join(group, ", ") + ", found " +
+                 (present.empty() ? "none" : join(present, " and ")));
     }
     for (const auto& group : spec.at_least_one_of) {
       bool any = false;
@@ -249,8 +277,9 @@ class Validator {
       if (given_values.count(k.name)) {
         out[k.name] = check(given_values[k.name], *k.spec, kp);
       } else if (k.required) {
-        fail(node, path, "missing required key '" + k.name + "' (" + article(*k.spec) +
-                             describe_expected(*k.spec) + ": " + first_sentence(k.spec->doc) + ")");
+        fail(node, path,
+             "missing required key '" + k.name + "' (" + article(*k.spec) +
+                 describe_expected(*k.spec) + ": " + first_sentence(k.spec->doc) + ")");
       } else if (!k.default_value.empty()) {
         out[k.name] = check(YAML::Load(k.default_value), *k.spec, kp);
       }

@@ -14,7 +14,7 @@ namespace efg::schema {
 YAML::Node validate(const YAML::Node& document, const Spec& spec, const std::string& file);
 
 /// "FILE:LINE:COL: PATH: MESSAGE" for a node of a parsed document (line and column 1-based).
-std::string located_message(const std::string& file, const YAML::Node& node, const std::string& path,
-                            const std::string& message);
+std::string located_message(const std::string& file, const YAML::Node& node,
+                            const std::string& path, const std::string& message);
 
 }  // namespace efg::schema

@@ -11,7 +11,8 @@
 
 namespace efg {
 
-ErrorNorms error_norms(const Model& model, const SolidOperator& op, const Vector& d_overlap, const ExactSolution& exact) {
+ErrorNorms error_norms(const Model& model, const SolidOperator& op, const Vector& d_overlap,
+                       const ExactSolution& exact) {
   const auto& mesh = model.mesh;
   const int dim = mesh.dimension;
   const auto udim = static_cast<std::size_t>(dim);
@@ -24,15 +25,20 @@ ErrorNorms error_norms(const Model& model, const SolidOperator& op, const Vector
     const double thickness = dim == 2 ? part.part->thickness : 1.0;
     std::vector<double> x, w;
     for (const auto& b : mesh.blocks) {
-      if (std::find(part.part->blocks.begin(), part.part->blocks.end(), b.name) == part.part->blocks.end()) continue;
+      if (std::find(part.part->blocks.begin(), part.part->blocks.end(), b.name) ==
+          part.part->blocks.end())
+        continue;
       const auto npc = static_cast<std::size_t>(cell_node_count(b.type));
       const auto rule = reference_rule(b.type, 5);
       std::vector<double> cx(npc * udim);
       for (std::size_t c = 0; c < b.cell_count(); ++c) {
         const auto* node = &b.connectivity[c * npc];
-        if (model.partition.owner[static_cast<std::size_t>(*std::min_element(node, node + npc))] != model.partition.rank) continue;
+        if (model.partition.owner[static_cast<std::size_t>(*std::min_element(node, node + npc))] !=
+            model.partition.rank)
+          continue;
         for (std::size_t a = 0; a < npc; ++a)
-          for (std::size_t k = 0; k < udim; ++k) cx[a * udim + k] = mesh.coordinates[static_cast<std::size_t>(node[a]) * udim + k];
+          for (std::size_t k = 0; k < udim; ++k)
+            cx[a * udim + k] = mesh.coordinates[static_cast<std::size_t>(node[a]) * udim + k];
         for (std::size_t q = 0; q < rule.weight.size(); ++q) {
           double point[3];
           const double det = map_to_cell(b.type, cx.data(), &rule.xi[q * udim], point);
@@ -44,20 +50,23 @@ ErrorNorms error_norms(const Model& model, const SolidOperator& op, const Vector
     const auto v = evaluate_shape_functions(part.cloud, x.data(), w.size(), true);
     const auto& nodes = op.overlap_node(p);
     // a(e, e) with the elasticity tensor: eps : C : eps = lambda tr(eps)^2 + 2 mu eps : eps.
-    auto energy = [&](const double (&g)[3][3]) {
+    auto energy = [&](const double(&g)[3][3]) {
       double tr = 0, ee = 0;
       for (std::size_t i = 0; i < udim; ++i) tr += g[i][i];
       for (std::size_t i = 0; i < udim; ++i)
-        for (std::size_t j = 0; j < udim; ++j) ee += 0.25 * (g[i][j] + g[j][i]) * (g[i][j] + g[j][i]);
+        for (std::size_t j = 0; j < udim; ++j)
+          ee += 0.25 * (g[i][j] + g[j][i]) * (g[i][j] + g[j][i]);
       return m.lambda * tr * tr + 2 * m.mu * ee;
     };
     for (std::size_t q = 0; q < w.size(); ++q) {
       double uh[3] = {0, 0, 0}, gh[3][3] = {};
       for (auto k = v.neighbors.offsets[q]; k < v.neighbors.offsets[q + 1]; ++k) {
-        const auto n = static_cast<std::size_t>(nodes[static_cast<std::size_t>(v.neighbors.particles[k])]);
+        const auto n =
+            static_cast<std::size_t>(nodes[static_cast<std::size_t>(v.neighbors.particles[k])]);
         for (std::size_t i = 0; i < udim; ++i) {
           uh[i] += v.phi[k] * d(n * udim + i, 0);
-          for (std::size_t j = 0; j < udim; ++j) gh[i][j] += d(n * udim + i, 0) * v.grad[k * udim + j];
+          for (std::size_t j = 0; j < udim; ++j)
+            gh[i][j] += d(n * udim + i, 0) * v.grad[k * udim + j];
         }
       }
       double u[3] = {0, 0, 0}, g[3][3] = {};
@@ -86,11 +95,14 @@ ErrorNorms error_norms(const Model& model, const SolidOperator& op, const Vector
     for (std::size_t j = 0; j < part.cloud.owned_count; ++j) {
       double uh[3] = {0, 0, 0}, u[3] = {0, 0, 0};
       for (auto k = part.particle_values.offsets[j]; k < part.particle_values.offsets[j + 1]; ++k) {
-        const auto n = static_cast<std::size_t>(nodes[static_cast<std::size_t>(part.particle_values.particles[k])]);
-        for (std::size_t i = 0; i < udim; ++i) uh[i] += part.particle_values.values[k] * d(n * udim + i, 0);
+        const auto n = static_cast<std::size_t>(
+            nodes[static_cast<std::size_t>(part.particle_values.particles[k])]);
+        for (std::size_t i = 0; i < udim; ++i)
+          uh[i] += part.particle_values.values[k] * d(n * udim + i, 0);
       }
       exact.displacement(part.cloud.x(j), u);
-      for (std::size_t i = 0; i < udim; ++i) max_nodal = std::max(max_nodal, std::abs(uh[i] - u[i]));
+      for (std::size_t i = 0; i < udim; ++i)
+        max_nodal = std::max(max_nodal, std::abs(uh[i] - u[i]));
     }
   }
   const auto& comm = *model.maps.owned_dofs->getComm();
@@ -104,7 +116,8 @@ ErrorNorms error_norms(const Model& model, const SolidOperator& op, const Vector
   return out;
 }
 
-std::array<double, 3> displacement_at(const Model& model, const SolidOperator& op, const Vector& d_overlap, const double* point) {
+std::array<double, 3> displacement_at(const Model& model, const SolidOperator& op,
+                                      const Vector& d_overlap, const double* point) {
   const int dim = model.mesh.dimension;
   const auto udim = static_cast<std::size_t>(dim);
   // The rank owning the particle nearest to the point evaluates (it has the whole support).
@@ -113,7 +126,8 @@ std::array<double, 3> displacement_at(const Model& model, const SolidOperator& o
   for (std::size_t p = 0; p < model.parts.size(); ++p)
     for (std::size_t j = 0; j < model.parts[p].cloud.owned_count; ++j) {
       double d2 = 0;
-      for (std::size_t k = 0; k < udim; ++k) d2 += std::pow(model.parts[p].cloud.x(j)[k] - point[k], 2);
+      for (std::size_t k = 0; k < udim; ++k)
+        d2 += std::pow(model.parts[p].cloud.x(j)[k] - point[k], 2);
       if (d2 < best) {
         best = d2;
         best_part = static_cast<int>(p);
@@ -131,7 +145,8 @@ std::array<double, 3> displacement_at(const Model& model, const SolidOperator& o
     const auto v = evaluate_shape_functions(part.cloud, point, 1, false);
     const auto d = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
     for (auto k = v.neighbors.offsets[0]; k < v.neighbors.offsets[1]; ++k) {
-      const auto n = static_cast<std::size_t>(op.overlap_node(static_cast<std::size_t>(best_part))[static_cast<std::size_t>(v.neighbors.particles[k])]);
+      const auto n = static_cast<std::size_t>(op.overlap_node(
+          static_cast<std::size_t>(best_part))[static_cast<std::size_t>(v.neighbors.particles[k])]);
       for (std::size_t i = 0; i < udim; ++i) local[i] += v.phi[k] * d(n * udim + i, 0);
     }
   }

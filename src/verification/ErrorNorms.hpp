@@ -1,7 +1,8 @@
 // Errors of a discrete solution against an exact one, integrated with a Gauss rule of order 5 on
 // every background cell (independent of the scheme that integrated the weak form):
 //   relative L2 displacement error  ||u^h - u|| / ||u||
-//   relative energy-norm error      sqrt(a(u^h - u, u^h - u) / a(u, u)), a(v, v) = integral eps(v) : C : eps(v)
+//   relative energy-norm error      sqrt(a(u^h - u, u^h - u) / a(u, u)), a(v, v) = integral eps(v)
+//   : C : eps(v)
 // with u^h = sum_I phi_I d_I and its direct gradient. Small-strain materials only (the energy
 // norm of the linear elasticity tensor).
 #pragma once
@@ -17,11 +18,12 @@ struct ErrorNorms {
 };
 
 /// Collective. `d_overlap`: generalized displacements on the overlap dofs.
-ErrorNorms error_norms(const Model& model, const SolidOperator& op, const Vector& d_overlap, const ExactSolution& exact);
+ErrorNorms error_norms(const Model& model, const SolidOperator& op, const Vector& d_overlap,
+                       const ExactSolution& exact);
 
 /// u^h at a point inside part `part` (collective: every rank passes the same point; the owner of
 /// the nearest particle answers).
-std::array<double, 3> displacement_at(const Model& model, const SolidOperator& op, const Vector& d_overlap,
-                                      const double* point);
+std::array<double, 3> displacement_at(const Model& model, const SolidOperator& op,
+                                      const Vector& d_overlap, const double* point);
 
 }  // namespace efg

@@ -21,9 +21,10 @@ class Parameters {
       if (!allowed_.count(key)) {
         std::string list;
         for (const auto& a : allowed_) list += (list.empty() ? "" : ", ") + a;
-        throw InputError(schema::located_message(scene_.file, kv.first, "verification.parameters." + key,
-                                                 "unknown parameter of exact solution '" + scene_.exact_solution +
-                                                     "'; allowed: " + list));
+        throw InputError(
+            schema::located_message(scene_.file, kv.first, "verification.parameters." + key,
+                                    "unknown parameter of exact solution '" +
+                                        scene_.exact_solution + "'; allowed: " + list));
       }
     }
   }
@@ -31,7 +32,8 @@ class Parameters {
     if (!node_ || !node_[key]) return fallback;
     double v = 0;
     if (!YAML::convert<double>::decode(node_[key], v))
-      throw InputError(schema::located_message(scene_.file, node_[key], "verification.parameters." + key, "expected a number"));
+      throw InputError(schema::located_message(
+          scene_.file, node_[key], "verification.parameters." + key, "expected a number"));
     return v;
   }
   std::vector<double> numbers(const std::string& key, std::vector<double> fallback) const {
@@ -39,8 +41,9 @@ class Parameters {
     std::vector<double> v;
     for (const auto& item : node_[key]) v.push_back(item.as<double>());
     if (v.size() != fallback.size())
-      throw InputError(schema::located_message(scene_.file, node_[key], "verification.parameters." + key,
-                                               "expected " + std::to_string(fallback.size()) + " numbers"));
+      throw InputError(
+          schema::located_message(scene_.file, node_[key], "verification.parameters." + key,
+                                  "expected " + std::to_string(fallback.size()) + " numbers"));
     return v;
   }
 
@@ -50,13 +53,17 @@ class Parameters {
   std::set<std::string> allowed_;
 };
 
-const MaterialSpec& first_material(const Scene& s) { return *s.find_material(s.parts.front().material); }
+const MaterialSpec& first_material(const Scene& s) {
+  return *s.find_material(s.parts.front().material);
+}
 
 // Timoshenko & Goodier cantilever, plane stress; plane strain by E -> E/(1-nu^2), nu -> nu/(1-nu).
-// Domain x in [0, L], y in [-D/2, D/2]; shear traction P at x = L (../shared/reference/benchmarks.md).
+// Domain x in [0, L], y in [-D/2, D/2]; shear traction P at x = L
+// (../shared/reference/benchmarks.md).
 ExactSolution timoshenko(const Scene& scene) {
   const Parameters p(scene, {"length", "depth", "load"});
-  const double L = p.number("length", 48.0), D = p.number("depth", 12.0), P = p.number("load", 1000.0);
+  const double L = p.number("length", 48.0), D = p.number("depth", 12.0),
+               P = p.number("load", 1000.0);
   const auto& m = first_material(scene);
   double E = m.constants.at("youngs_modulus"), nu = m.constants.at("poissons_ratio");
   if (!scene.parts.front().plane_stress) {
@@ -69,9 +76,10 @@ ExactSolution timoshenko(const Scene& scene) {
   s.displacement = [=](const double* X, double* u) {
     const double x = X[0], y = X[1];
     u[0] = -P * y / (6 * E * I) * ((6 * L - 3 * x) * x + (2 + nu) * (y * y - D * D / 4));
-    u[1] = P / (6 * E * I) * (3 * nu * y * y * (L - x) + (4 + 5 * nu) * D * D * x / 4 + (3 * L - x) * x * x);
+    u[1] = P / (6 * E * I) *
+           (3 * nu * y * y * (L - x) + (4 + 5 * nu) * D * D * x / 4 + (3 * L - x) * x * x);
   };
-  s.nominal_stress = [=](const double* X, double (&S)[3][3]) {
+  s.nominal_stress = [=](const double* X, double(&S)[3][3]) {
     const double x = X[0], y = X[1];
     for (auto& row : S)
       for (auto& v : row) v = 0.0;
@@ -86,13 +94,15 @@ ExactSolution linear_patch(const Scene& scene, int dim) {
   const Parameters p(scene, {"gradient", "offset"});
   const auto n = static_cast<std::size_t>(dim);
   std::vector<double> g0(n * n, 0.0), a0(n, 0.0);
-  for (std::size_t i = 0; i < n * n; ++i) g0[i] = 1e-3 * (1.0 + static_cast<double>(i)) * (i % 2 ? -1.0 : 1.0);
+  for (std::size_t i = 0; i < n * n; ++i)
+    g0[i] = 1e-3 * (1.0 + static_cast<double>(i)) * (i % 2 ? -1.0 : 1.0);
   const auto g = p.numbers("gradient", g0);
   const auto a = p.numbers("offset", a0);
   const auto& m = first_material(scene);
   const bool plane_stress = dim == 2 && scene.parts.front().plane_stress;
   const double e = m.constants.at("youngs_modulus"), nu = m.constants.at("poissons_ratio");
-  const auto c = plane_stress ? physics::plane_stress_constants(e, nu) : physics::elastic_constants(e, nu);
+  const auto c =
+      plane_stress ? physics::plane_stress_constants(e, nu) : physics::elastic_constants(e, nu);
   ExactSolution s;
   s.name = "linear_patch";
   s.displacement = [=](const double* X, double* u) {
@@ -101,12 +111,14 @@ ExactSolution linear_patch(const Scene& scene, int dim) {
       for (std::size_t j = 0; j < n; ++j) u[i] += g[i * n + j] * X[j];
     }
   };
-  s.nominal_stress = [=](const double*, double (&S)[3][3]) {
+  s.nominal_stress = [=](const double*, double(&S)[3][3]) {
     double tr = 0;
     for (std::size_t i = 0; i < n; ++i) tr += g[i * n + i];
     for (std::size_t i = 0; i < 3; ++i)
       for (std::size_t j = 0; j < 3; ++j)
-        S[i][j] = i < n && j < n ? c.mu * (g[i * n + j] + g[j * n + i]) + (i == j ? c.lambda * tr : 0.0) : 0.0;
+        S[i][j] = i < n && j < n
+                      ? c.mu * (g[i * n + j] + g[j * n + i]) + (i == j ? c.lambda * tr : 0.0)
+                      : 0.0;
   };
   return s;
 }
@@ -118,17 +130,21 @@ ExactSolution homogeneous_stretch(const Scene& scene, int dim) {
   const auto n = static_cast<std::size_t>(dim);
   const auto stretch = p.numbers("stretch", std::vector<double>(n, 1.0));
   for (double l : stretch)
-    if (!(l > 0)) throw InputError(scene.file + ": verification.parameters.stretch: expected positive stretches");
+    if (!(l > 0))
+      throw InputError(scene.file +
+                       ": verification.parameters.stretch: expected positive stretches");
   const auto& m = first_material(scene);
-  const auto c = physics::elastic_constants(m.constants.at("youngs_modulus"), m.constants.at("poissons_ratio"));
-  const physics::SolidMaterial law{m.model == "neo_hookean" ? physics::MaterialKind::neo_hookean : physics::MaterialKind::linear_elastic,
+  const auto c = physics::elastic_constants(m.constants.at("youngs_modulus"),
+                                            m.constants.at("poissons_ratio"));
+  const physics::SolidMaterial law{m.model == "neo_hookean" ? physics::MaterialKind::neo_hookean
+                                                            : physics::MaterialKind::linear_elastic,
                                    c.lambda, c.mu, false};
   ExactSolution s;
   s.name = "homogeneous_stretch";
   s.displacement = [=](const double* X, double* u) {
     for (std::size_t i = 0; i < n; ++i) u[i] = (stretch[i] - 1.0) * X[i];
   };
-  s.nominal_stress = [=](const double*, double (&S)[3][3]) {
+  s.nominal_stress = [=](const double*, double(&S)[3][3]) {
     for (auto& row : S)
       for (auto& v : row) v = 0.0;
     if (n == 2) {
@@ -137,7 +153,8 @@ ExactSolution homogeneous_stretch(const Scene& scene, int dim) {
       for (int i = 0; i < 2; ++i)
         for (int j = 0; j < 2; ++j) S[i][j] = P[i][j];
     } else {
-      double H[3][3] = {{stretch[0] - 1, 0, 0}, {0, stretch[1] - 1, 0}, {0, 0, stretch[2] - 1}}, P[3][3] = {}, A[3][3][3][3] = {};
+      double H[3][3] = {{stretch[0] - 1, 0, 0}, {0, stretch[1] - 1, 0}, {0, 0, stretch[2] - 1}},
+             P[3][3] = {}, A[3][3][3][3] = {};
       physics::stress_and_tangent<3>(law, H, P, A);
       for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j) S[i][j] = P[i][j];
@@ -154,7 +171,8 @@ ExactSolution bar_1d(const Scene& scene) {
   const auto& m = first_material(scene);
   const double E = m.constants.at("youngs_modulus");
   if (m.constants.at("poissons_ratio") != 0.0)
-    throw InputError(scene.file + ": verification.exact_solution: bar_1d is exact for poissons_ratio 0 only");
+    throw InputError(scene.file +
+                     ": verification.exact_solution: bar_1d is exact for poissons_ratio 0 only");
   ExactSolution s;
   s.name = "bar_1d";
   s.displacement = [=](const double* X, double* u) {
@@ -162,7 +180,7 @@ ExactSolution bar_1d(const Scene& scene) {
     u[0] = (x / 2 - x * x * x / 6) / E;
     u[1] = u[2] = 0.0;
   };
-  s.nominal_stress = [=](const double* X, double (&S)[3][3]) {
+  s.nominal_stress = [=](const double* X, double(&S)[3][3]) {
     for (auto& row : S)
       for (auto& v : row) v = 0.0;
     S[0][0] = 0.5 - X[0] * X[0] / 2;
@@ -179,14 +197,17 @@ ExactSolution bar_1d(const Scene& scene) {
 ExactSolution make_exact_solution(const Scene& scene, int dimension) {
   const auto& name = scene.exact_solution;
   if (name == "timoshenko_beam") {
-    if (dimension != 2) throw InputError(scene.file + ": verification.exact_solution: timoshenko_beam needs a 2D mesh");
+    if (dimension != 2)
+      throw InputError(scene.file +
+                       ": verification.exact_solution: timoshenko_beam needs a 2D mesh");
     return timoshenko(scene);
   }
   if (name == "linear_patch") return linear_patch(scene, dimension);
   if (name == "bar_1d") return bar_1d(scene);
   if (name == "homogeneous_stretch") return homogeneous_stretch(scene, dimension);
   throw InputError(scene.file + ": verification.exact_solution: '" + name +
-                   "' has no implementation yet; available: timoshenko_beam, bar_1d, linear_patch, homogeneous_stretch");
+                   "' has no implementation yet; available: timoshenko_beam, bar_1d, linear_patch, "
+                   "homogeneous_stretch");
 }
 
 }  // namespace efg

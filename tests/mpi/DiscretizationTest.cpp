@@ -14,13 +14,14 @@
 namespace efg {
 namespace {
 
-void expect_identical(const CsrTable& a, const ParticleCloud& ca, const CsrTable& b, const ParticleCloud& cb,
-                      double& worst) {
+void expect_identical(const CsrTable& a, const ParticleCloud& ca, const CsrTable& b,
+                      const ParticleCloud& cb, double& worst) {
   ASSERT_EQ(a.rows(), b.rows());
   for (std::size_t r = 0; r < a.rows(); ++r) {
     ASSERT_EQ(a.offsets[r + 1] - a.offsets[r], b.offsets[r + 1] - b.offsets[r]) << "row " << r;
     for (auto k = a.offsets[r], m = b.offsets[r]; k < a.offsets[r + 1]; ++k, ++m) {
-      ASSERT_EQ(ca.mesh_node[static_cast<std::size_t>(a.particles[k])], cb.mesh_node[static_cast<std::size_t>(b.particles[m])]);
+      ASSERT_EQ(ca.mesh_node[static_cast<std::size_t>(a.particles[k])],
+                cb.mesh_node[static_cast<std::size_t>(b.particles[m])]);
       for (int w = 0; w < a.width; ++w) {
         const auto i = k * static_cast<std::size_t>(a.width) + static_cast<std::size_t>(w);
         const auto j = m * static_cast<std::size_t>(a.width) + static_cast<std::size_t>(w);
@@ -34,7 +35,8 @@ TEST(Discretization, GhostLayerGivesTheSameOperatorsAsAllParticles) {
   const auto comm = Tpetra::getDefaultComm();
   for (auto type : {CellType::quad4, CellType::hex8, CellType::tet4}) {
     for (auto scheme : {Integration::scni, Integration::nodal, Integration::gauss}) {
-      const auto mesh = generate_mesh(test::box_spec(type, cell_dimension(type) == 2 ? 10 : 6, 0.3, 5));
+      const auto mesh =
+          generate_mesh(test::box_spec(type, cell_dimension(type) == 2 ? 10 : 6, 0.3, 5));
       PartSpec part;
       part.name = "part";
       part.blocks = {"block_1"};
@@ -53,7 +55,8 @@ TEST(Discretization, GhostLayerGivesTheSameOperatorsAsAllParticles) {
       expect_identical(d.points.gradients, d.cloud, reference.gradients, full, worst);
       EXPECT_LE(worst, 1e-13) << cell_scene_name(type) << " scheme " << static_cast<int>(scheme);
       if (comm->getSize() == 2 && type == CellType::quad4) {
-        EXPECT_LT(d.cloud.size(), full.size());  // 2 halves of the 2D mesh: the ghosts are a strict subset
+        EXPECT_LT(d.cloud.size(),
+                  full.size());  // 2 halves of the 2D mesh: the ghosts are a strict subset
       }
       double mine = 0, total = 0;
       for (double w : d.points.weight) mine += w;

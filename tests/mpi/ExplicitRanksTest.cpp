@@ -39,7 +39,8 @@ TEST(ExplicitRanks, ThousandStepsMatchOneRank) {
   const CommPtr self = Teuchos::rcp(new Teuchos::MpiComm<int>(MPI_COMM_SELF));
   const auto dir = test::scratch_dir("explicit_ranks");
   const auto distributed = dir + "/np" + std::to_string(world->getSize()) + ".e";
-  const auto serial = dir + "/self_rank" + std::to_string(world->getRank()) + "_of" + std::to_string(world->getSize()) + ".e";
+  const auto serial = dir + "/self_rank" + std::to_string(world->getRank()) + "_of" +
+                      std::to_string(world->getSize()) + ".e";
   run_stages(world, build_model(world, parse_scene(kScene, "bounce.yaml")), distributed);
   run_stages(self, build_model(self, parse_scene(kScene, "bounce.yaml")), serial);
   world->barrier();
@@ -56,9 +57,12 @@ TEST(ExplicitRanks, ThousandStepsMatchOneRank) {
       }
   for (const auto& name : {"kinetic_energy", "internal_energy", "wall_wall_force"})
     for (std::size_t k = 0; k < a.times.size(); ++k)
-      EXPECT_NEAR(a.global.at(name)[k], b.global.at(name)[k], 1e-10 * std::max(1.0, std::abs(b.global.at(name)[k]))) << name;
+      EXPECT_NEAR(a.global.at(name)[k], b.global.at(name)[k],
+                  1e-10 * std::max(1.0, std::abs(b.global.at(name)[k])))
+          << name;
   EXPECT_LT(worst / scale, 1e-10);
-  std::printf("explicit, %d ranks vs one, 1000 steps: largest nodal difference %.3e relative\n", world->getSize(), worst / scale);
+  std::printf("explicit, %d ranks vs one, 1000 steps: largest nodal difference %.3e relative\n",
+              world->getSize(), worst / scale);
 }
 
 }  // namespace

@@ -9,8 +9,8 @@ namespace efg {
 namespace {
 
 // Brute force: every node of another rank within the radius of one of mine.
-std::vector<LocalIndex> brute_force_ghosts(const BackgroundMesh& mesh, const std::vector<int>& owner, int rank,
-                                           double radius) {
+std::vector<LocalIndex> brute_force_ghosts(const BackgroundMesh& mesh,
+                                           const std::vector<int>& owner, int rank, double radius) {
   const auto dim = static_cast<std::size_t>(mesh.dimension);
   std::vector<LocalIndex> ghosts;
   for (std::size_t j = 0; j < mesh.node_count(); ++j) {

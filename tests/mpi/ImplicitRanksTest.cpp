@@ -12,14 +12,15 @@
 
 #include "drivers/ImplicitDriver.hpp"
 #include "run/OutputFields.hpp"
-#include "support/BeamScene.hpp"
 #include "scene/SceneReader.hpp"
+#include "support/BeamScene.hpp"
 
 namespace efg {
 namespace {
 
 // Tight linear solves, so that rank-dependent preconditioners do not show in the comparison.
-const char* kTight = "nonlinear_solver: {Direction: {Newton: {Linear Solver: {Tolerance: 1.0e-14}}}}";
+const char* kTight =
+    "nonlinear_solver: {Direction: {Newton: {Linear Solver: {Tolerance: 1.0e-14}}}}";
 
 std::map<LocalIndex, std::array<double, 3>> solve(const CommPtr& comm, const std::string& text) {
   const Model model = build_model(comm, parse_scene(text, "ranks.yaml"));
@@ -27,14 +28,17 @@ std::map<LocalIndex, std::array<double, 3>> solve(const CommPtr& comm, const std
   Vector d(model.maps.owned_dofs), d_overlap(model.maps.overlap_dofs);
   double start = 0;
   for (const auto& stage : model.scene.stages) {
-    ImplicitDriver(problem, stage, start, model.scene.stages.front().end_time).run(d, [](double, const Vector&) {});
+    ImplicitDriver(problem, stage, start, model.scene.stages.front().end_time)
+        .run(d, [](double, const Vector&) {});
     start = stage.end_time;
   }
   problem.to_overlap(d, d_overlap);
   const auto columns = state_columns(model, problem.solid(), d_overlap);
   std::map<LocalIndex, std::array<double, 3>> u;
   for (std::size_t i = 0; i < model.partition.owned.size(); ++i)
-    for (int k = 0; k < model.mesh.dimension; ++k) u[model.partition.owned[i]][static_cast<std::size_t>(k)] = columns[static_cast<std::size_t>(k)][i];
+    for (int k = 0; k < model.mesh.dimension; ++k)
+      u[model.partition.owned[i]][static_cast<std::size_t>(k)] =
+          columns[static_cast<std::size_t>(k)][i];
   return u;
 }
 
@@ -47,14 +51,17 @@ void compare(const std::string& text) {
   for (const auto& [node, u] : serial)
     for (double v : u) scale = std::max(scale, std::abs(v));
   for (const auto& [node, u] : distributed)
-    for (std::size_t k = 0; k < 3; ++k) worst = std::max(worst, std::abs(u[k] - serial.at(node)[k]));
+    for (std::size_t k = 0; k < 3; ++k)
+      worst = std::max(worst, std::abs(u[k] - serial.at(node)[k]));
   EXPECT_GT(scale, 0.0);
   EXPECT_LT(worst / scale, 1e-10) << "ranks: " << world->getSize();
-  std::printf("[rank %d] largest difference to one rank: %.3e relative\n", world->getRank(), worst / scale);
+  std::printf("[rank %d] largest difference to one rank: %.3e relative\n", world->getRank(),
+              worst / scale);
 }
 
 TEST(ImplicitRanks, TimoshenkoBeamMatchesOneRank) {
-  compare(test::beam_scene(32, 8, 0.2, "transformation", "linear", "scni", 2.0, std::string(", ") + kTight));
+  compare(test::beam_scene(32, 8, 0.2, "transformation", "linear", "scni", 2.0,
+                           std::string(", ") + kTight));
 }
 
 TEST(ImplicitRanks, NeoHookeanBlockMatchesOneRank) {
@@ -70,7 +77,8 @@ boundary_conditions:
 loads:
   - {name: shear, type: traction, side_set: xmax, value: [0.2, 0.3, 0.0]}
 stages:
-  - {name: load, driver: implicit, end_time: 1, load_steps: 2, )") + kTight + "}\n");
+  - {name: load, driver: implicit, end_time: 1, load_steps: 2, )") +
+          kTight + "}\n");
 }
 
 }  // namespace

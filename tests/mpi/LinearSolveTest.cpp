@@ -17,10 +17,12 @@ namespace {
 
 TEST(LinearSolve, OneNewtonStepSolvesTheLinearBeam) {
   const auto comm = Tpetra::getDefaultComm();
-  const auto model = build_model(comm, parse_scene(test::beam_scene(32, 8, 0.0), "linear_solve.yaml"));
+  const auto model =
+      build_model(comm, parse_scene(test::beam_scene(32, 8, 0.0), "linear_solve.yaml"));
   StaticProblem problem(model);
   problem.set_load_factor([](const std::string&) { return 1.0; });
-  Vector d(model.maps.owned_dofs), r0(model.maps.owned_dofs), r1(model.maps.owned_dofs), dx(model.maps.owned_dofs);
+  Vector d(model.maps.owned_dofs), r0(model.maps.owned_dofs), r1(model.maps.owned_dofs),
+      dx(model.maps.owned_dofs);
   auto K = problem.create_matrix();
   problem.residual(d, r0);
   problem.jacobian(d, *K);
@@ -28,7 +30,8 @@ TEST(LinearSolve, OneNewtonStepSolvesTheLinearBeam) {
   rhs.scale(-1.0);
   using MV = Tpetra::MultiVector<>;
   using OP = Tpetra::Operator<>;
-  auto lp = Teuchos::rcp(new Belos::LinearProblem<double, MV, OP>(K, Teuchos::rcpFromRef(dx), Teuchos::rcpFromRef(rhs)));
+  auto lp = Teuchos::rcp(new Belos::LinearProblem<double, MV, OP>(K, Teuchos::rcpFromRef(dx),
+                                                                  Teuchos::rcpFromRef(rhs)));
   lp->setProblem();
   auto params = Teuchos::parameterList();
   params->set("Convergence Tolerance", 1e-12);

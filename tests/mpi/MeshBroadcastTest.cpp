@@ -28,7 +28,8 @@ TEST(MeshBroadcast, EveryRankReceivesRankZerosMesh) {
 TEST(MeshBroadcast, AnInputErrorOnRankZeroIsRaisedOnEveryRank) {
   const auto comm = Tpetra::getDefaultComm();
   try {
-    load_on_root_and_broadcast(comm, []() -> BackgroundMesh { throw InputError("mesh file 'x.e': broken"); });
+    load_on_root_and_broadcast(
+        comm, []() -> BackgroundMesh { throw InputError("mesh file 'x.e': broken"); });
     FAIL() << "no exception";
   } catch (const InputError& e) {
     EXPECT_EQ(std::string(e.what()), "mesh file 'x.e': broken");

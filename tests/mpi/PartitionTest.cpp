@@ -25,8 +25,10 @@ TEST_P(PartitionByElement, EveryNodeOwnedExactlyOnce) {
   for (std::size_t i = 0; i < n; ++i) EXPECT_EQ(total[i], 1) << "node " << i;
   // The owner map is the same on every rank and agrees with the owned lists.
   std::vector<int> max_owner(n), min_owner(n);
-  Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, static_cast<int>(n), p.owner.data(), max_owner.data());
-  Teuchos::reduceAll(*comm, Teuchos::REDUCE_MIN, static_cast<int>(n), p.owner.data(), min_owner.data());
+  Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, static_cast<int>(n), p.owner.data(),
+                     max_owner.data());
+  Teuchos::reduceAll(*comm, Teuchos::REDUCE_MIN, static_cast<int>(n), p.owner.data(),
+                     min_owner.data());
   EXPECT_EQ(max_owner, p.owner);
   EXPECT_EQ(min_owner, p.owner);
   for (auto node : p.owned) EXPECT_EQ(p.owner[static_cast<std::size_t>(node)], comm->getRank());
@@ -37,8 +39,8 @@ TEST_P(PartitionByElement, EveryNodeOwnedExactlyOnce) {
 }
 
 INSTANTIATE_TEST_SUITE_P(AllElements, PartitionByElement,
-                         ::testing::Values(CellType::quad4, CellType::tri3, CellType::hex8, CellType::tet4,
-                                           CellType::wedge6),
+                         ::testing::Values(CellType::quad4, CellType::tri3, CellType::hex8,
+                                           CellType::tet4, CellType::wedge6),
                          [](const auto& p) { return cell_scene_name(p.param); });
 
 TEST(Partition, IsDeterministic) {
@@ -61,7 +63,8 @@ TEST(DofMaps, OwnedAndOverlapMapsMatchThePartition) {
   // Owned first, then ghosts; dof gid = 3 * node + component.
   const auto overlap = maps.overlap_dofs->getNodeElementList();
   for (std::size_t i = 0; i < p.owned.size(); ++i)
-    for (int c = 0; c < 3; ++c) EXPECT_EQ(overlap[3 * i + static_cast<std::size_t>(c)], 3LL * p.owned[i] + c);
+    for (int c = 0; c < 3; ++c)
+      EXPECT_EQ(overlap[3 * i + static_cast<std::size_t>(c)], 3LL * p.owned[i] + c);
   for (std::size_t g = 0; g < p.ghosts.size(); ++g)
     EXPECT_EQ(overlap[3 * (p.owned.size() + g)], 3LL * p.ghosts[g]);
 }

@@ -19,7 +19,8 @@ TEST(ResultsOutput, GathersOwnedValuesIntoOneFile) {
   const auto p = partition_nodes(comm, mesh);
   const auto maps = make_dof_maps(comm, p, 3);
   const auto path = test::scratch_dir("gather") + "/np" + std::to_string(comm->getSize()) + ".e";
-  ResultsOutput output(comm, path, mesh, maps.owned_nodes, OutputLayout{{"f", "owner_rank"}, {}, {"t2"}}, "gather");
+  ResultsOutput output(comm, path, mesh, maps.owned_nodes,
+                       OutputLayout{{"f", "owner_rank"}, {}, {"t2"}}, "gather");
   for (int step = 0; step < 2; ++step) {
     ResultsOutput::MultiVector values(maps.owned_nodes, 2);
     {
@@ -37,7 +38,8 @@ TEST(ResultsOutput, GathersOwnedValuesIntoOneFile) {
     ASSERT_EQ(r.times.size(), 2u);
     for (std::size_t step = 0; step < 2; ++step) {
       for (std::size_t n = 0; n < mesh.node_count(); ++n) {
-        EXPECT_EQ(r.nodal.at("f")[step][n], 0.5 * static_cast<double>(n) + static_cast<double>(step));
+        EXPECT_EQ(r.nodal.at("f")[step][n],
+                  0.5 * static_cast<double>(n) + static_cast<double>(step));
         EXPECT_EQ(r.nodal.at("owner_rank")[step][n], p.owner[n]);
       }
       EXPECT_EQ(r.global.at("t2")[step], 2.0 * static_cast<double>(step));

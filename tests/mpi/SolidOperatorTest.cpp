@@ -15,13 +15,14 @@
 namespace efg {
 namespace {
 
-std::string scene_text(const char* element, const char* lower, const char* upper, const char* cells, const char* model,
-                       const char* formulation, const char* integration) {
-  return std::string("mesh:\n  generate: {element: ") + element + ", lower: " + lower + ", upper: " + upper +
-         ", cells: " + cells + ", perturbation: 0.25, seed: 4}\n" +
-         "parts:\n  - {name: body, blocks: [block_1], material: m, section: {formulation: " + formulation +
-         ", integration: " + integration + ", dilation: 1.6}}\n" +
-         "materials:\n  - {name: m, model: " + model + ", youngs_modulus: 100, poissons_ratio: 0.3}\n";
+std::string scene_text(const char* element, const char* lower, const char* upper, const char* cells,
+                       const char* model, const char* formulation, const char* integration) {
+  return std::string("mesh:\n  generate: {element: ") + element + ", lower: " + lower +
+         ", upper: " + upper + ", cells: " + cells + ", perturbation: 0.25, seed: 4}\n" +
+         "parts:\n  - {name: body, blocks: [block_1], material: m, section: {formulation: " +
+         formulation + ", integration: " + integration + ", dilation: 1.6}}\n" +
+         "materials:\n  - {name: m, model: " + model +
+         ", youngs_modulus: 100, poissons_ratio: 0.3}\n";
 }
 
 struct Fixture {
@@ -43,7 +44,8 @@ struct Fixture {
     auto v = d.getLocalViewHost(Tpetra::Access::OverwriteAll);
     const auto gids = model.maps.owned_dofs->getNodeElementList();
     for (long i = 0; i < gids.size(); ++i)
-      v(static_cast<std::size_t>(i), 0) = amplitude * std::sin(0.7 * static_cast<double>(gids[i]) + 0.3);
+      v(static_cast<std::size_t>(i), 0) =
+          amplitude * std::sin(0.7 * static_cast<double>(gids[i]) + 0.3);
     return d;
   }
   Vector overlap(const Vector& owned) const {
@@ -60,7 +62,8 @@ struct Fixture {
   double energy(const Vector& d) const {
     const double mine = op->strain_energy(overlap(d));
     double total = 0;
-    Teuchos::reduceAll(*model.maps.owned_dofs->getComm(), Teuchos::REDUCE_SUM, mine, Teuchos::outArg(total));
+    Teuchos::reduceAll(*model.maps.owned_dofs->getComm(), Teuchos::REDUCE_SUM, mine,
+                       Teuchos::outArg(total));
     return total;
   }
 };
@@ -70,10 +73,11 @@ class Operators : public ::testing::TestWithParam<std::tuple<int, const char*, c
 TEST_P(Operators, ForceIsEnergyGradientAndTangentIsForceDerivative) {
   const auto [dim, model_name, integration] = GetParam();
   const bool finite = std::string(model_name) == "neo_hookean";
-  const auto text = dim == 2 ? scene_text("quad4", "[0, 0]", "[2, 1]", "[8, 4]", model_name,
-                                          finite ? "total_lagrangian" : "small_strain", integration)
-                             : scene_text("hex8", "[0, 0, 0]", "[2, 1, 1]", "[4, 2, 2]", model_name,
-                                          finite ? "total_lagrangian" : "small_strain", integration);
+  const auto text = dim == 2
+                        ? scene_text("quad4", "[0, 0]", "[2, 1]", "[8, 4]", model_name,
+                                     finite ? "total_lagrangian" : "small_strain", integration)
+                        : scene_text("hex8", "[0, 0, 0]", "[2, 1, 1]", "[4, 2, 2]", model_name,
+                                     finite ? "total_lagrangian" : "small_strain", integration);
   Fixture fx(text);
   const auto d = fx.displacement(0.02);
   const auto f = fx.force(d);
@@ -126,7 +130,8 @@ TEST_P(Operators, ForceIsEnergyGradientAndTangentIsForceDerivative) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Materials, Operators,
-                         ::testing::Combine(::testing::Values(2, 3), ::testing::Values("linear_elastic", "neo_hookean"),
+                         ::testing::Combine(::testing::Values(2, 3),
+                                            ::testing::Values("linear_elastic", "neo_hookean"),
                                             ::testing::Values("scni", "gauss")));
 
 }  // namespace

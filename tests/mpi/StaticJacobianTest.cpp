@@ -33,17 +33,20 @@ TEST_P(StaticJacobian, MatchesCentralDifferences) {
   EXPECT_TRUE(K->getRowMap()->isSameAs(*model.maps.owned_dofs));
   K->apply(v, Kv);
   const double h = 1e-4;
-  Vector dp(d, Teuchos::Copy), dm(d, Teuchos::Copy), rp(model.maps.owned_dofs), rm(model.maps.owned_dofs);
+  Vector dp(d, Teuchos::Copy), dm(d, Teuchos::Copy), rp(model.maps.owned_dofs),
+      rm(model.maps.owned_dofs);
   dp.update(h, v, 1.0);
   dm.update(-h, v, 1.0);
   problem.residual(dp, rp);
   problem.residual(dm, rm);
   rp.update(-1.0 / (2 * h), rm, 1.0 / (2 * h));
   rp.update(-1.0, Kv, 1.0);
-  EXPECT_LT(rp.normInf(), 1e-8 * Kv.normInf()) << GetParam() << " on " << comm->getSize() << " ranks";
+  EXPECT_LT(rp.normInf(), 1e-8 * Kv.normInf())
+      << GetParam() << " on " << comm->getSize() << " ranks";
 }
 
-INSTANTIATE_TEST_SUITE_P(Methods, StaticJacobian, ::testing::Values("transformation", "nitsche", "penalty"));
+INSTANTIATE_TEST_SUITE_P(Methods, StaticJacobian,
+                         ::testing::Values("transformation", "nitsche", "penalty"));
 
 }  // namespace
 }  // namespace efg

@@ -9,7 +9,7 @@ namespace efg::test {
 
 /// `stage_extra` is appended inside the stage's map (e.g. ", nonlinear_solver: {...}").
 std::string beam_scene(int nx, int ny, double perturbation, const char* method = "transformation",
-                       const char* basis = "linear", const char* integration = "scni", double dilation = 2.0,
-                       const std::string& stage_extra = "");
+                       const char* basis = "linear", const char* integration = "scni",
+                       double dilation = 2.0, const std::string& stage_extra = "");
 
 }  // namespace efg::test

@@ -4,7 +4,8 @@
 
 namespace efg::test {
 
-ParticleCloud line_cloud(int n, double perturbation, const SectionSpec& section, std::uint64_t seed) {
+ParticleCloud line_cloud(int n, double perturbation, const SectionSpec& section,
+                         std::uint64_t seed) {
   ParticleCloud c;
   c.dimension = 1;
   c.section = section;
@@ -20,8 +21,12 @@ ParticleCloud line_cloud(int n, double perturbation, const SectionSpec& section,
   }
   // Spacing: the larger gap to a neighbour (as from the background cells around the node).
   for (int i = 0; i <= n; ++i) {
-    const double left = i > 0 ? c.position[static_cast<std::size_t>(i)] - c.position[static_cast<std::size_t>(i - 1)] : 0;
-    const double right = i < n ? c.position[static_cast<std::size_t>(i + 1)] - c.position[static_cast<std::size_t>(i)] : 0;
+    const double left = i > 0 ? c.position[static_cast<std::size_t>(i)] -
+                                    c.position[static_cast<std::size_t>(i - 1)]
+                              : 0;
+    const double right = i < n ? c.position[static_cast<std::size_t>(i + 1)] -
+                                     c.position[static_cast<std::size_t>(i)]
+                               : 0;
     c.support.push_back(section.dilation[0] * std::max(left, right));
   }
   c.owned_count = c.size();
@@ -36,8 +41,9 @@ ParticleCloud mesh_cloud(const BackgroundMesh& mesh, const SectionSpec& section)
   return make_particle_cloud(mesh, part, std::vector<int>(mesh.node_count(), 0), 0, {});
 }
 
-std::vector<double> random_points(int dim, const std::array<double, 3>& lower, const std::array<double, 3>& upper,
-                                  std::size_t count, std::uint64_t seed) {
+std::vector<double> random_points(int dim, const std::array<double, 3>& lower,
+                                  const std::array<double, 3>& upper, std::size_t count,
+                                  std::uint64_t seed) {
   std::mt19937_64 rng(seed);
   std::vector<double> x;
   for (std::size_t p = 0; p < count; ++p)

@@ -20,7 +20,8 @@ StaticSolution solve_static(const std::string& scene_text, const std::string& na
     s.summary.steps += summary.steps;
     s.summary.newton_iterations += summary.newton_iterations;
     s.summary.linear_iterations += summary.linear_iterations;
-    s.summary.residual_histories.insert(s.summary.residual_histories.end(), summary.residual_histories.begin(),
+    s.summary.residual_histories.insert(s.summary.residual_histories.end(),
+                                        summary.residual_histories.begin(),
                                         summary.residual_histories.end());
     start = stage.end_time;
   }

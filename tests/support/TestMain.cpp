@@ -12,7 +12,8 @@
 
 int main(int argc, char** argv) {
   ::testing::InitGoogleTest(&argc, argv);
-  setenv("OMP_PROC_BIND", "false", 0);  // unbound, as the OpenMP runtime already assumed; no Kokkos warning
+  setenv("OMP_PROC_BIND", "false",
+         0);  // unbound, as the OpenMP runtime already assumed; no Kokkos warning
   int library_argc = 1;
   Tpetra::ScopeGuard scope(&library_argc, &argv);
   const auto comm = Tpetra::getDefaultComm();
@@ -25,8 +26,8 @@ int main(int argc, char** argv) {
       explicit FailurePrinter(int r) : rank(r) {}
       void OnTestPartResult(const ::testing::TestPartResult& r) override {
         if (r.failed())
-          std::fprintf(stderr, "[rank %d] %s:%d: failure\n%s\n", rank, r.file_name() ? r.file_name() : "?",
-                       r.line_number(), r.summary());
+          std::fprintf(stderr, "[rank %d] %s:%d: failure\n%s\n", rank,
+                       r.file_name() ? r.file_name() : "?", r.line_number(), r.summary());
       }
     };
     listeners.Append(new FailurePrinter(comm->getRank()));

@@ -32,11 +32,13 @@ TEST(CellTopology, DistortedHexVolumeIsExact) {
   const double v = cell_geometry(CellType::hex8, x).volume;
   const int n = 40;
   double reference = 0;
-  const double c[8][3] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1}, {-1, -1, 1}, {1, -1, 1}, {1, 1, 1}, {-1, 1, 1}};
+  const double c[8][3] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
+                          {-1, -1, 1},  {1, -1, 1},  {1, 1, 1},  {-1, 1, 1}};
   for (int i = 0; i < n; ++i)
     for (int j = 0; j < n; ++j)
       for (int k = 0; k < n; ++k) {
-        const double r = -1 + (2.0 * i + 1) / n, s = -1 + (2.0 * j + 1) / n, t = -1 + (2.0 * k + 1) / n;
+        const double r = -1 + (2.0 * i + 1) / n, s = -1 + (2.0 * j + 1) / n,
+                     t = -1 + (2.0 * k + 1) / n;
         double jm[3][3] = {};
         for (int a = 0; a < 8; ++a) {
           const double d[3] = {0.125 * c[a][0] * (1 + c[a][1] * s) * (1 + c[a][2] * t),

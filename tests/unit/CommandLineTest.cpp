@@ -19,7 +19,8 @@ TEST(CommandLine, Commands) {
   EXPECT_EQ(parse_command_line({"--help"}).command, "help");
   EXPECT_EQ(parse_command_line({"--version"}).command, "version");
   EXPECT_EQ(parse_command_line({"schema"}).command, "schema");
-  cl = parse_command_line({"study", "a.yaml", "--levels", "3", "--factor", "1.5", "--sweep", "parts.0.section.basis=linear,quadratic"});
+  cl = parse_command_line({"study", "a.yaml", "--levels", "3", "--factor", "1.5", "--sweep",
+                           "parts.0.section.basis=linear,quadratic"});
   EXPECT_EQ(cl.levels, 3);
   EXPECT_DOUBLE_EQ(cl.factor, 1.5);
   ASSERT_EQ(cl.sweeps.size(), 1u);
@@ -29,7 +30,8 @@ TEST(CommandLine, Commands) {
 }
 
 TEST(CommandLine, ThreadsOptionSeenBeforeKokkosStarts) {
-  std::string a0 = "efg", a1 = "run", a2 = "x.yaml", a3 = "--threads", a4 = "3", a5 = "--threads=5", bad = "two";
+  std::string a0 = "efg", a1 = "run", a2 = "x.yaml", a3 = "--threads", a4 = "3", a5 = "--threads=5",
+              bad = "two";
   char* plain[] = {a0.data(), a1.data(), a2.data()};
   char* spaced[] = {a0.data(), a1.data(), a2.data(), a3.data(), a4.data()};
   char* joined[] = {a0.data(), a1.data(), a5.data()};
@@ -63,7 +65,8 @@ TEST(CommandLine, Mistakes) {
 
 TEST(CommandLine, HelpDocumentsExitCodes) {
   const auto help = help_text();
-  for (const char* code : {"0  success", "1  any other", "2  bad input", "3  numerical", "4  the run completed"})
+  for (const char* code :
+       {"0  success", "1  any other", "2  bad input", "3  numerical", "4  the run completed"})
     EXPECT_NE(help.find(code), std::string::npos) << code;
 }
 

@@ -58,12 +58,15 @@ TEST_P(RoundTrip, MeshAndEveryFieldComeBackEqual) {
     EXPECT_TRUE(std::filesystem::exists(path + ".part"));
     EXPECT_FALSE(std::filesystem::exists(path));  // the final name appears only on close
     for (int step = 0; step < 3; ++step) {
-      std::vector<std::vector<double>> nodal(layout.nodal.size(), std::vector<double>(mesh.node_count()));
+      std::vector<std::vector<double>> nodal(layout.nodal.size(),
+                                             std::vector<double>(mesh.node_count()));
       for (std::size_t v = 0; v < nodal.size(); ++v)
         for (std::size_t n = 0; n < mesh.node_count(); ++n)
-          nodal[v][n] = 1.0 / 3.0 * static_cast<double>(n) + 0.1 * static_cast<double>(v) - step * 1e-7;
+          nodal[v][n] =
+              1.0 / 3.0 * static_cast<double>(n) + 0.1 * static_cast<double>(v) - step * 1e-7;
       std::vector<double> element(mesh.cell_count());
-      for (std::size_t c = 0; c < element.size(); ++c) element[c] = std::sqrt(2.0) * static_cast<double>(c + step);
+      for (std::size_t c = 0; c < element.size(); ++c)
+        element[c] = std::sqrt(2.0) * static_cast<double>(c + step);
       const std::vector<double> global = {0.5 * step, -1.0 / 7.0 * step};
       writer.write_record(0.1 * step, nodal, {element}, global);
       nodal_records.push_back(nodal);
@@ -87,8 +90,8 @@ TEST_P(RoundTrip, MeshAndEveryFieldComeBackEqual) {
 }
 
 INSTANTIATE_TEST_SUITE_P(AllElements, RoundTrip,
-                         ::testing::Values(CellType::quad4, CellType::tri3, CellType::hex8, CellType::tet4,
-                                           CellType::wedge6),
+                         ::testing::Values(CellType::quad4, CellType::tri3, CellType::hex8,
+                                           CellType::tet4, CellType::wedge6),
                          [](const auto& p) { return cell_scene_name(p.param); });
 
 TEST(ExodusWriter, RefusesNonFiniteValues) {
@@ -145,9 +148,12 @@ TEST(ExodusReader, TruncatedFilesAreRejected) {
   const auto size = std::filesystem::file_size(dir + "/full.e");
   for (double fraction : {0.05, 0.3, 0.6, 0.9, 0.99}) {
     const auto cut = dir + "/cut.e";
-    std::filesystem::copy_file(dir + "/full.e", cut, std::filesystem::copy_options::overwrite_existing);
-    std::filesystem::resize_file(cut, static_cast<std::uintmax_t>(fraction * static_cast<double>(size)));
-    EXPECT_THROW(validate_mesh(read_exodus_mesh(cut)), InputError) << "kept " << fraction << " of the file";
+    std::filesystem::copy_file(dir + "/full.e", cut,
+                               std::filesystem::copy_options::overwrite_existing);
+    std::filesystem::resize_file(cut,
+                                 static_cast<std::uintmax_t>(fraction * static_cast<double>(size)));
+    EXPECT_THROW(validate_mesh(read_exodus_mesh(cut)), InputError)
+        << "kept " << fraction << " of the file";
   }
 }
 

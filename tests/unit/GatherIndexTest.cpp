@@ -16,7 +16,8 @@ TEST(GatherIndex, TransposesARandomTable) {
   std::vector<int> column;
   for (std::size_t r = 0; r < rows; ++r) {
     const auto n = rng() % 40;  // some rows empty
-    for (std::size_t k = 0; k < n; ++k) column.push_back(static_cast<int>(rng() % (columns - 1)));  // last column empty
+    for (std::size_t k = 0; k < n; ++k)
+      column.push_back(static_cast<int>(rng() % (columns - 1)));  // last column empty
     offsets.push_back(column.size());
   }
   const auto g = gather_index(to_device(offsets, "offsets"), to_device(column, "column"), columns);
@@ -29,8 +30,9 @@ TEST(GatherIndex, TransposesARandomTable) {
     std::vector<std::size_t> expected;
     for (std::size_t k = 0; k < column.size(); ++k)
       if (static_cast<std::size_t>(column[k]) == c) expected.push_back(k);
-    const std::vector<std::size_t> found(entry.begin() + static_cast<std::ptrdiff_t>(col_offsets[c]),
-                                         entry.begin() + static_cast<std::ptrdiff_t>(col_offsets[c + 1]));
+    const std::vector<std::size_t> found(
+        entry.begin() + static_cast<std::ptrdiff_t>(col_offsets[c]),
+        entry.begin() + static_cast<std::ptrdiff_t>(col_offsets[c + 1]));
     EXPECT_EQ(found, expected) << "column " << c;
   }
   for (std::size_t r = 0; r < rows; ++r)

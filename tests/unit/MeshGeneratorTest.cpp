@@ -43,18 +43,24 @@ TEST_P(GeneratorByElement, CountsVolumesAndSets) {
       // Side areas on a plane add up to the plane's area; every side node lies on the plane.
       double area = 0;
       for (std::size_t i = 0; i < set.cells.size(); ++i) {
-        const auto nodes = mesh.side_node_indices(static_cast<std::size_t>(set.cells[i]), set.sides[i]);
+        const auto nodes =
+            mesh.side_node_indices(static_cast<std::size_t>(set.cells[i]), set.sides[i]);
         std::vector<double> x;
         for (auto n : nodes)
           for (int d = 0; d < mesh.dimension; ++d)
-            x.push_back(mesh.coordinates[static_cast<std::size_t>(n) * static_cast<std::size_t>(mesh.dimension) + static_cast<std::size_t>(d)]);
+            x.push_back(mesh.coordinates[static_cast<std::size_t>(n) *
+                                             static_cast<std::size_t>(mesh.dimension) +
+                                         static_cast<std::size_t>(d)]);
         if (!is3d) {
           area += std::hypot(x[2] - x[0], x[3] - x[1]);
         } else {
           const auto tri = [&](int a, int b, int c) {
-            const double u[3] = {x[3 * b] - x[3 * a], x[3 * b + 1] - x[3 * a + 1], x[3 * b + 2] - x[3 * a + 2]};
-            const double v[3] = {x[3 * c] - x[3 * a], x[3 * c + 1] - x[3 * a + 1], x[3 * c + 2] - x[3 * a + 2]};
-            return 0.5 * std::sqrt(std::pow(u[1] * v[2] - u[2] * v[1], 2) + std::pow(u[2] * v[0] - u[0] * v[2], 2) +
+            const double u[3] = {x[3 * b] - x[3 * a], x[3 * b + 1] - x[3 * a + 1],
+                                 x[3 * b + 2] - x[3 * a + 2]};
+            const double v[3] = {x[3 * c] - x[3 * a], x[3 * c + 1] - x[3 * a + 1],
+                                 x[3 * c + 2] - x[3 * a + 2]};
+            return 0.5 * std::sqrt(std::pow(u[1] * v[2] - u[2] * v[1], 2) +
+                                   std::pow(u[2] * v[0] - u[0] * v[2], 2) +
                                    std::pow(u[0] * v[1] - u[1] * v[0], 2));
           };
           area += tri(0, 1, 2) + (nodes.size() == 4 ? tri(0, 2, 3) : 0.0);
@@ -68,8 +74,9 @@ TEST_P(GeneratorByElement, CountsVolumesAndSets) {
 }
 
 INSTANTIATE_TEST_SUITE_P(AllElements, GeneratorByElement,
-                         ::testing::Values(Expected{CellType::quad4, 1}, Expected{CellType::tri3, 2},
-                                           Expected{CellType::hex8, 1}, Expected{CellType::tet4, 6},
+                         ::testing::Values(Expected{CellType::quad4, 1},
+                                           Expected{CellType::tri3, 2}, Expected{CellType::hex8, 1},
+                                           Expected{CellType::tet4, 6},
                                            Expected{CellType::wedge6, 2}),
                          [](const auto& p) { return cell_scene_name(p.param.type); });
 
@@ -79,7 +86,8 @@ TEST(MeshGenerator, PerturbationIsSeededAndKeepsBoundaryPlanes) {
   const auto c = generate_mesh(test::box_spec(CellType::hex8, 4, 0.3, 12));
   EXPECT_EQ(a.coordinates, b.coordinates);
   EXPECT_NE(a.coordinates, c.coordinates);
-  for (auto n : a.find_node_set("xmax")->nodes) EXPECT_EQ(a.coordinates[3 * static_cast<std::size_t>(n)], 2.0);
+  for (auto n : a.find_node_set("xmax")->nodes)
+    EXPECT_EQ(a.coordinates[3 * static_cast<std::size_t>(n)], 2.0);
   // Interior nodes moved by at most 30 % of the spacing (0.25) per direction.
   const auto regular = generate_mesh(test::box_spec(CellType::hex8, 4));
   double largest = 0, smallest = 1;

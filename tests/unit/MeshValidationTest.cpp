@@ -41,10 +41,12 @@ TEST(MeshValidation, ZeroVolumeCell) {
 TEST(MeshValidation, SetIndicesOutOfRange) {
   auto mesh = generate_mesh(test::box_spec(CellType::hex8, 1));
   mesh.node_sets[0].nodes.push_back(-1);
-  EXPECT_NE(error_of(mesh).find("node set 'xmin' refers to node 0"), std::string::npos) << error_of(mesh);
+  EXPECT_NE(error_of(mesh).find("node set 'xmin' refers to node 0"), std::string::npos)
+      << error_of(mesh);
   mesh = generate_mesh(test::box_spec(CellType::hex8, 1));
   mesh.side_sets[0].sides[0] = 6;
-  EXPECT_NE(error_of(mesh).find("names side 7 of a hex8 cell"), std::string::npos) << error_of(mesh);
+  EXPECT_NE(error_of(mesh).find("names side 7 of a hex8 cell"), std::string::npos)
+      << error_of(mesh);
   mesh = generate_mesh(test::box_spec(CellType::hex8, 1));
   mesh.side_sets[0].cells[0] = 99;
   EXPECT_NE(error_of(mesh).find("refers to cell 100"), std::string::npos) << error_of(mesh);

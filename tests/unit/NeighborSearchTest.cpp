@@ -32,12 +32,15 @@ TEST(NeighborSearch, MatchesBruteForceOrderedByGlobalId) {
         const double* x = points.data() + p * static_cast<std::size_t>(dim);
         std::vector<LocalIndex> expected;
         for (std::size_t i = 0; i < cloud.size(); ++i)
-          if (covers(shape == SupportShape::sphere, dim, cloud.x(i), cloud.a(i), x)) expected.push_back(static_cast<LocalIndex>(i));
+          if (covers(shape == SupportShape::sphere, dim, cloud.x(i), cloud.a(i), x))
+            expected.push_back(static_cast<LocalIndex>(i));
         std::sort(expected.begin(), expected.end(), [&](LocalIndex a, LocalIndex b) {
-          return cloud.mesh_node[static_cast<std::size_t>(a)] < cloud.mesh_node[static_cast<std::size_t>(b)];
+          return cloud.mesh_node[static_cast<std::size_t>(a)] <
+                 cloud.mesh_node[static_cast<std::size_t>(b)];
         });
-        const std::vector<LocalIndex> found(lists.particles.begin() + static_cast<std::ptrdiff_t>(lists.offsets[p]),
-                                            lists.particles.begin() + static_cast<std::ptrdiff_t>(lists.offsets[p + 1]));
+        const std::vector<LocalIndex> found(
+            lists.particles.begin() + static_cast<std::ptrdiff_t>(lists.offsets[p]),
+            lists.particles.begin() + static_cast<std::ptrdiff_t>(lists.offsets[p + 1]));
         ASSERT_EQ(found, expected) << "dim " << dim << " point " << p;
       }
     }

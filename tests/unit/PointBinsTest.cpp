@@ -21,11 +21,13 @@ TEST(PointBins, FindsExactlyThePointsWithinRadius) {
         const double* p = x.data() + q * static_cast<std::size_t>(dim);
         const double radius = 0.1 + 0.01 * static_cast<double>(q);
         std::set<std::size_t> found, expected;
-        bins.for_each_within(p, radius, [&](std::size_t j) { EXPECT_TRUE(found.insert(j).second); });
+        bins.for_each_within(p, radius,
+                             [&](std::size_t j) { EXPECT_TRUE(found.insert(j).second); });
         for (std::size_t j = 0; j < n; ++j) {
           double d2 = 0;
           for (int d = 0; d < dim; ++d) {
-            const double dx = x[j * static_cast<std::size_t>(dim) + static_cast<std::size_t>(d)] - p[d];
+            const double dx =
+                x[j * static_cast<std::size_t>(dim) + static_cast<std::size_t>(d)] - p[d];
             d2 += dx * dx;
           }
           if (d2 <= radius * radius) expected.insert(j);

@@ -59,8 +59,9 @@ TEST(SceneSchema, DefaultsAreFilledIn) {
 
 TEST(SceneSchema, SolverSublistsBecomeTypedParameterLists) {
   const auto scene = parse_scene(kMinimal, "minimal.yaml");
-  const auto list = parameter_list_from_yaml(scene.stages[0].settings["linear_solver"], "Linear Solver",
-                                             scene.file, "stages[0].linear_solver");
+  const auto list =
+      parameter_list_from_yaml(scene.stages[0].settings["linear_solver"], "Linear Solver",
+                               scene.file, "stages[0].linear_solver");
   EXPECT_EQ(list.get<std::string>("Solver Type"), "GMRES");
   const auto& belos = list.sublist("Belos");
   EXPECT_EQ(belos.get<int>("Maximum Iterations"), 200);
@@ -70,9 +71,11 @@ TEST(SceneSchema, SolverSublistsBecomeTypedParameterLists) {
 
 TEST(SceneSchema, EveryExampleSceneIsValid) {
   int count = 0;
-  for (const auto& entry : std::filesystem::directory_iterator(std::string(EFG_SOURCE_DIR) + "/input")) {
+  for (const auto& entry :
+       std::filesystem::directory_iterator(std::string(EFG_SOURCE_DIR) + "/input")) {
     if (entry.path().extension() != ".yaml") continue;
-    EXPECT_NO_THROW(parse_scene(read_scene_text(entry.path().string()), entry.path().string())) << entry.path();
+    EXPECT_NO_THROW(parse_scene(read_scene_text(entry.path().string()), entry.path().string()))
+        << entry.path();
     ++count;
   }
   EXPECT_GE(count, 1);
@@ -86,7 +89,8 @@ TEST(SceneSchema, MessagesCarryFileLineAndKeyPath) {
     FAIL() << "no error";
   } catch (const InputError& e) {
     EXPECT_EQ(std::string(e.what()),
-              "bad.yaml:7:75: materials[0].poissons_ratio: expected a finite real in (-1, 0.5), found 0.55");
+              "bad.yaml:7:75: materials[0].poissons_ratio: expected a finite real in (-1, 0.5), "
+              "found 0.55");
   }
 }
 

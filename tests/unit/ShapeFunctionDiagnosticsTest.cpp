@@ -12,7 +12,8 @@ namespace {
 
 std::string error_of(const ParticleCloud& cloud, const std::vector<double>& points) {
   try {
-    evaluate_shape_functions(cloud, points.data(), points.size() / static_cast<std::size_t>(cloud.dimension), true);
+    evaluate_shape_functions(cloud, points.data(),
+                             points.size() / static_cast<std::size_t>(cloud.dimension), true);
   } catch (const NumericalError& e) {
     return e.what();
   }
@@ -26,8 +27,11 @@ TEST(ShapeFunctionDiagnostics, DilationTooSmall) {
   section.dilation = {1.0};
   const auto cloud = test::mesh_cloud(generate_mesh(test::box_spec(CellType::quad4, 4)), section);
   const auto message = error_of(cloud, {0.5, 0.5});
-  EXPECT_NE(message.find("shape functions: evaluation point 0 at (0.5, 0.5)"), std::string::npos) << message;
-  EXPECT_NE(message.find("only 1 particle support(s) cover it, a linear basis in 2D needs at least 3"), std::string::npos)
+  EXPECT_NE(message.find("shape functions: evaluation point 0 at (0.5, 0.5)"), std::string::npos)
+      << message;
+  EXPECT_NE(
+      message.find("only 1 particle support(s) cover it, a linear basis in 2D needs at least 3"),
+      std::string::npos)
       << message;
   EXPECT_NE(message.find("increase the part's dilation (now 1)"), std::string::npos) << message;
 }
@@ -45,7 +49,8 @@ TEST(ShapeFunctionDiagnostics, AllNeighboursOnALine) {
   }
   cloud.owned_count = cloud.size();
   const auto message = error_of(cloud, {0.4, 0.5});
-  EXPECT_NE(message.find("the moment matrix is singular with 5 neighbours (at least 3 needed, not all on one line or plane)"),
+  EXPECT_NE(message.find("the moment matrix is singular with 5 neighbours (at least 3 needed, not "
+                         "all on one line or plane)"),
             std::string::npos)
       << message;
 }
@@ -62,7 +67,9 @@ TEST(ShapeFunctionDiagnostics, NodalIntegrationNamesTheParticle) {
     integrate_part(mesh, part, cloud, owner, 0);
     FAIL() << "no error";
   } catch (const NumericalError& e) {
-    EXPECT_NE(std::string(e.what()).find("nodal integration point at particle 1 at (0, 0, 0)"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("nodal integration point at particle 1 at (0, 0, 0)"),
+              std::string::npos)
+        << e.what();
   }
 }
 

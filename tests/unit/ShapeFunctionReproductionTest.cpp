@@ -44,14 +44,16 @@ TEST_P(Reproduction, PolynomialsAndGradientsToRoundOff) {
   section.support = support;
   section.basis = basis;
   // Enough neighbours for a regular moment matrix: quadratic bases and spheres need more.
-  section.dilation = {basis == Basis::quadratic ? 2.6 : (support == SupportShape::sphere ? 2.1 : 1.6)};
+  section.dilation = {basis == Basis::quadratic ? 2.6
+                                                : (support == SupportShape::sphere ? 2.1 : 1.6)};
   const double perturbation = perturbed ? 0.3 : 0.0;
   ParticleCloud cloud;
   std::array<double, 3> lower{0, 0, 0}, upper{1, 1, 1};
   if (dim == 1) {
     cloud = test::line_cloud(20, perturbation, section);
   } else {
-    auto spec = test::box_spec(dim == 2 ? CellType::quad4 : CellType::hex8, dim == 2 ? 8 : 4, perturbation, 21);
+    auto spec = test::box_spec(dim == 2 ? CellType::quad4 : CellType::hex8, dim == 2 ? 8 : 4,
+                               perturbation, 21);
     upper = spec.upper;
     cloud = test::mesh_cloud(generate_mesh(spec), section);
   }
@@ -70,10 +72,12 @@ TEST_P(Reproduction, PolynomialsAndGradientsToRoundOff) {
         value += v.phi[k] * m.value(xi);
         for (std::size_t e = 0; e < d; ++e) gradient[e] += v.grad[k * d + e] * m.value(xi);
       }
-      // Relative to the size of the field over the domain (at most 2^2 = 4 here) and of its gradient.
+      // Relative to the size of the field over the domain (at most 2^2 = 4 here) and of its
+      // gradient.
       worst_value = std::max(worst_value, std::abs(value - m.value(x)) / 4.0);
       for (std::size_t e = 0; e < d; ++e)
-        worst_gradient = std::max(worst_gradient, std::abs(gradient[e] - m.derivative(x, static_cast<int>(e))) / 4.0);
+        worst_gradient = std::max(
+            worst_gradient, std::abs(gradient[e] - m.derivative(x, static_cast<int>(e))) / 4.0);
     }
   }
   EXPECT_LT(worst_value, 1e-12);
@@ -82,17 +86,22 @@ TEST_P(Reproduction, PolynomialsAndGradientsToRoundOff) {
 
 std::string name(const ::testing::TestParamInfo<Config>& info) {
   const auto [dim, kernel, support, basis, perturbed] = info.param;
-  const char* k = kernel == KernelType::cubic_spline ? "cubic" : kernel == KernelType::quartic_spline ? "quartic" : "quadratic";
+  const char* k = kernel == KernelType::cubic_spline     ? "cubic"
+                  : kernel == KernelType::quartic_spline ? "quartic"
+                                                         : "quadratic";
   return std::to_string(dim) + "d_" + k + (support == SupportShape::box ? "_box" : "_sphere") +
-         (basis == Basis::linear ? "_linear" : "_quadraticbasis") + (perturbed ? "_perturbed" : "_regular");
+         (basis == Basis::linear ? "_linear" : "_quadraticbasis") +
+         (perturbed ? "_perturbed" : "_regular");
 }
 
 INSTANTIATE_TEST_SUITE_P(
     AllCombinations, Reproduction,
     ::testing::Combine(::testing::Values(1, 2, 3),
-                       ::testing::Values(KernelType::cubic_spline, KernelType::quadratic_spline, KernelType::quartic_spline),
+                       ::testing::Values(KernelType::cubic_spline, KernelType::quadratic_spline,
+                                         KernelType::quartic_spline),
                        ::testing::Values(SupportShape::box, SupportShape::sphere),
-                       ::testing::Values(Basis::linear, Basis::quadratic), ::testing::Values(false, true)),
+                       ::testing::Values(Basis::linear, Basis::quadratic),
+                       ::testing::Values(false, true)),
     name);
 
 TEST(ShapeFunctions, PartitionOfUnityOfTheWeightsMatchesKernelAtNodesForLinearBasis) {

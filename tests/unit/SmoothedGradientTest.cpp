@@ -44,13 +44,15 @@ TEST_P(ByCell, DivergenceConsistency) {
   for (std::size_t l = 0; l < s.ip.size(); ++l)
     for (auto k = s.ip.gradients.offsets[l]; k < s.ip.gradients.offsets[l + 1]; ++k)
       for (std::size_t d = 0; d < dim; ++d)
-        lhs[static_cast<std::size_t>(s.ip.gradients.particles[k]) * dim + d] += s.ip.gradients.values[k * dim + d] * s.ip.weight[l];
+        lhs[static_cast<std::size_t>(s.ip.gradients.particles[k]) * dim + d] +=
+            s.ip.gradients.values[k * dim + d] * s.ip.weight[l];
   // Right: the boundary integral of phi_I n over the part's boundary, same boundary quadrature.
   std::vector<SmoothingPoint> boundary;
   for (const auto& p : smoothing_points(s.mesh, s.part.blocks))
     if (p.minus < 0) boundary.push_back(p);
   std::vector<double> x;
-  for (const auto& p : boundary) x.insert(x.end(), p.x.begin(), p.x.begin() + static_cast<std::ptrdiff_t>(dim));
+  for (const auto& p : boundary)
+    x.insert(x.end(), p.x.begin(), p.x.begin() + static_cast<std::ptrdiff_t>(dim));
   const auto phi = evaluate_shape_functions(s.cloud, x.data(), boundary.size(), false);
   std::vector<double> rhs(lhs.size(), 0.0), scale(s.cloud.size(), 0.0);
   for (std::size_t p = 0; p < boundary.size(); ++p)
@@ -65,7 +67,8 @@ TEST_P(ByCell, DivergenceConsistency) {
   const double flux_scale = *std::max_element(scale.begin(), scale.end());
   ASSERT_GT(flux_scale, 0.0);
   double worst = 0;
-  for (std::size_t i = 0; i < lhs.size(); ++i) worst = std::max(worst, std::abs(lhs[i] - rhs[i]) / flux_scale);
+  for (std::size_t i = 0; i < lhs.size(); ++i)
+    worst = std::max(worst, std::abs(lhs[i] - rhs[i]) / flux_scale);
   EXPECT_LT(worst, 1e-12) << cell_scene_name(GetParam());
 }
 
@@ -83,13 +86,16 @@ TEST_P(ByCell, LinearFieldGivesExactConstantGradient) {
         for (std::size_t i = 0; i < dim; ++i) {
           double u = a[i];
           for (std::size_t j = 0; j < dim; ++j) u += g[i][j] * xi[j];
-          for (std::size_t d = 0; d < dim; ++d) grad[i][d] += u * s.ip.gradients.values[k * dim + d];
+          for (std::size_t d = 0; d < dim; ++d)
+            grad[i][d] += u * s.ip.gradients.values[k * dim + d];
         }
       }
       for (std::size_t i = 0; i < dim; ++i)
-        for (std::size_t j = 0; j < dim; ++j) worst = std::max(worst, std::abs(grad[i][j] - g[i][j]) / 2.0);
+        for (std::size_t j = 0; j < dim; ++j)
+          worst = std::max(worst, std::abs(grad[i][j] - g[i][j]) / 2.0);
     }
-    EXPECT_LT(worst, 1e-12) << cell_scene_name(GetParam()) << " scheme " << static_cast<int>(scheme);
+    EXPECT_LT(worst, 1e-12) << cell_scene_name(GetParam()) << " scheme "
+                            << static_cast<int>(scheme);
   }
 }
 
@@ -103,8 +109,8 @@ TEST_P(ByCell, WeightsAddUpToTheDomainVolume) {
 }
 
 INSTANTIATE_TEST_SUITE_P(AllCells, ByCell,
-                         ::testing::Values(CellType::quad4, CellType::tri3, CellType::hex8, CellType::tet4,
-                                           CellType::wedge6),
+                         ::testing::Values(CellType::quad4, CellType::tri3, CellType::hex8,
+                                           CellType::tet4, CellType::wedge6),
                          [](const auto& p) { return cell_scene_name(p.param); });
 
 TEST(SmoothedGradient, NodalDomainsOfARegularGridAreItsDualCells) {

@@ -38,12 +38,15 @@ TEST(Explicit, WaveFrontAndLoadedEndFollowTheClosedForm) {
     if (t < 0.9 * L / c && t > 0.1 * L / c) {
       std::vector<std::pair<double, double>> row;  // (x, sigma_xx)
       for (std::size_t n = 0; n < mesh.node_count(); ++n)
-        if (mesh.coordinates[2 * n + 1] == 0.0) row.emplace_back(mesh.coordinates[2 * n], r.nodal.at("stress_xx")[k][n]);
+        if (mesh.coordinates[2 * n + 1] == 0.0)
+          row.emplace_back(mesh.coordinates[2 * n], r.nodal.at("stress_xx")[k][n]);
       std::sort(row.begin(), row.end());
       std::size_t j = 0;
       for (std::size_t m = 0; m + 1 < row.size(); ++m)
         if (row[m].second < -0.5 * p) j = m;
-      const double front = row[j].first + (row[j].second + 0.5 * p) / (row[j].second - row[j + 1].second) * (row[j + 1].first - row[j].first);
+      const double front = row[j].first + (row[j].second + 0.5 * p) /
+                                              (row[j].second - row[j + 1].second) *
+                                              (row[j + 1].first - row[j].first);
       EXPECT_NEAR(front, c * t, 2 * h) << "t = " << t;
       ++fronts;
     }
@@ -93,7 +96,7 @@ stages:
   Vector d(model.maps.owned_dofs), residual(model.maps.owned_dofs), a(model.maps.owned_dofs);
   d.randomize(-0.05, 0.05);
   problem.set_load_factor([](const std::string&) { return 0.0; });
-  problem.residual(d, residual);  // f_int(d): no loads, no conditions
+  problem.residual(d, residual);        // f_int(d): no loads, no conditions
   driver.acceleration(0.0, 1.0, d, a);  // M^-1 (0 - f_int(d))
   a.elementWiseMultiply(1.0, driver.mass(), a, 0.0);
   a.update(1.0, residual, 1.0);  // -f_int + f_int

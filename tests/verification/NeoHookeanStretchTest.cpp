@@ -57,7 +57,8 @@ TEST(NeoHookeanStretch, CauchyStressMatchesClosedFormAndNewtonIsQuadratic) {
   for (const auto& h : s.summary.residual_histories) {
     double best = 0;
     for (std::size_t k = 2; k < h.size(); ++k)
-      if (h[k] > 1e-12 * h[0]) best = std::max(best, std::log(h[k] / h[k - 1]) / std::log(h[k - 1] / h[k - 2]));
+      if (h[k] > 1e-12 * h[0])
+        best = std::max(best, std::log(h[k] / h[k - 1]) / std::log(h[k - 1] / h[k - 2]));
     EXPECT_GE(best, 1.8) << "residual history of a load step";
     EXPECT_LE(h.size(), 8u);
   }

@@ -12,19 +12,22 @@
 namespace efg {
 namespace {
 
-std::string patch_scene(int dim, const char* element, const char* method, const std::string& extra_bc = "") {
+std::string patch_scene(int dim, const char* element, const char* method,
+                        const std::string& extra_bc = "") {
   std::ostringstream s;
-  s << "mesh:\n  generate: {element: " << element << ", lower: " << (dim == 2 ? "[0, 0]" : "[0, 0, 0]")
-    << ", upper: " << (dim == 2 ? "[2, 1]" : "[2, 1, 1]") << ", cells: " << (dim == 2 ? "[8, 4]" : "[4, 2, 2]")
-    << ", perturbation: 0.3, seed: 5}\n"
+  s << "mesh:\n  generate: {element: " << element
+    << ", lower: " << (dim == 2 ? "[0, 0]" : "[0, 0, 0]")
+    << ", upper: " << (dim == 2 ? "[2, 1]" : "[2, 1, 1]")
+    << ", cells: " << (dim == 2 ? "[8, 4]" : "[4, 2, 2]") << ", perturbation: 0.3, seed: 5}\n"
     << "parts:\n  - {name: body, blocks: [block_1], material: m, section: {dilation: 1.8}}\n"
-    << "materials:\n  - {name: m, model: linear_elastic, youngs_modulus: 200, poissons_ratio: 0.3}\n"
+    << "materials:\n  - {name: m, model: linear_elastic, youngs_modulus: 200, poissons_ratio: "
+       "0.3}\n"
     << "boundary_conditions:\n";
   const char* comps = dim == 2 ? "[x, y]" : "[x, y, z]";
   for (const char* set : {"xmin", "xmax", "ymin", "ymax", "zmin", "zmax"}) {
     if (dim == 2 && set[0] == 'z') break;
-    s << "  - {name: " << set << ", type: displacement, node_set: " << set << ", from_exact_solution: " << comps
-      << ", method: " << method << extra_bc << "}\n";
+    s << "  - {name: " << set << ", type: displacement, node_set: " << set
+      << ", from_exact_solution: " << comps << ", method: " << method << extra_bc << "}\n";
   }
   s << "stages:\n  - {name: load, driver: implicit, end_time: 1}\n"
     << "verification:\n  exact_solution: linear_patch\n";
@@ -50,18 +53,22 @@ TEST_P(Patch, LinearFieldToRoundOff) {
   EXPECT_LT(e.energy_relative, 1e-10);
 }
 
-INSTANTIATE_TEST_SUITE_P(Methods, Patch,
-                         ::testing::Values(Case{2, "quad4", "transformation"}, Case{2, "tri3", "transformation"},
-                                           Case{3, "hex8", "transformation"}, Case{3, "tet4", "transformation"},
-                                           Case{2, "quad4", "nitsche"}, Case{3, "hex8", "nitsche"},
-                                           Case{3, "wedge6", "nitsche"}),
-                         [](const auto& p) { return std::string(p.param.element) + "_" + p.param.method; });
+INSTANTIATE_TEST_SUITE_P(
+    Methods, Patch,
+    ::testing::Values(Case{2, "quad4", "transformation"}, Case{2, "tri3", "transformation"},
+                      Case{3, "hex8", "transformation"}, Case{3, "tet4", "transformation"},
+                      Case{2, "quad4", "nitsche"}, Case{3, "hex8", "nitsche"},
+                      Case{3, "wedge6", "nitsche"}),
+    [](const auto& p) { return std::string(p.param.element) + "_" + p.param.method; });
 
 TEST(PatchPenalty, NotConsistentButErrorShrinksWithAlpha) {
   std::vector<double> errors;
   for (double alpha : {1e3, 1e7}) {
-    auto s = test::solve_static(patch_scene(2, "quad4", "penalty", ", penalty: " + std::to_string(alpha)));
-    errors.push_back(error_norms(*s.model, s.problem->solid(), *s.d_overlap, make_exact_solution(s.model->scene, 2)).l2_relative);
+    auto s = test::solve_static(
+        patch_scene(2, "quad4", "penalty", ", penalty: " + std::to_string(alpha)));
+    errors.push_back(error_norms(*s.model, s.problem->solid(), *s.d_overlap,
+                                 make_exact_solution(s.model->scene, 2))
+                         .l2_relative);
   }
   EXPECT_GT(errors[0], 1e-8);  // not a round-off result: penalty is not consistent
   EXPECT_LT(errors[1], 0.1 * errors[0]);

@@ -19,18 +19,21 @@ struct Level {
   double h, l2, energy, tip;
 };
 
-std::vector<Level> series(double perturbation, const char* method, const char* basis, double dilation) {
+std::vector<Level> series(double perturbation, const char* method, const char* basis,
+                          double dilation) {
   std::vector<Level> levels;
   for (int ny : {4, 8, 16, 32}) {
-    auto s = test::solve_static(test::beam_scene(4 * ny, ny, perturbation, method, basis, "scni", dilation));
+    auto s = test::solve_static(
+        test::beam_scene(4 * ny, ny, perturbation, method, basis, "scni", dilation));
     const auto exact = make_exact_solution(s.model->scene, 2);
     const auto e = error_norms(*s.model, s.problem->solid(), *s.d_overlap, exact);
     const double tip_point[3] = {48.0, 0.0, 0.0};
     const auto tip = displacement_at(*s.model, s.problem->solid(), *s.d_overlap, tip_point);
     levels.push_back({12.0 / ny, e.l2_relative, e.energy_relative, tip[1]});
     std::ostringstream o;
-    o << "timoshenko " << method << " " << basis << " perturbation " << perturbation << ": h = " << 12.0 / ny
-      << "  L2 " << e.l2_relative << "  energy " << e.energy_relative << "  tip u_y " << tip[1];
+    o << "timoshenko " << method << " " << basis << " perturbation " << perturbation
+      << ": h = " << 12.0 / ny << "  L2 " << e.l2_relative << "  energy " << e.energy_relative
+      << "  tip u_y " << tip[1];
     Log::info(o.str());
   }
   return levels;
@@ -69,7 +72,10 @@ TEST(TimoshenkoReaction, ClampReactionBalancesTheTipLoad) {
 }
 
 INSTANTIATE_TEST_SUITE_P(RegularAndPerturbed, Timoshenko, ::testing::Values(0.0, 0.2),
-                         [](const auto& p) { return p.param == 0.0 ? std::string("regular") : std::string("perturbed"); });
+                         [](const auto& p) {
+                           return p.param == 0.0 ? std::string("regular")
+                                                 : std::string("perturbed");
+                         });
 
 }  // namespace
 }  // namespace efg
