@@ -1,9 +1,8 @@
 // Thread scaling of the three kernels that dominate a run, on a 3D block of >= 1e5 particles
 // (hex8 background cells, linear basis, SCNI, box supports of dilation 1.2, linear elastic):
 //   shape functions  neighbour search + MLS values and gradients at every owned particle
-//   explicit step    one internal force (stress pass + gather pass) plus the velocity-Verlet
-//   updates tangent          one assembly of the stiffness matrix (begin, kernels, end with the
-//   export)
+//   explicit step    one internal force (stress pass + gather pass) plus the velocity-Verlet updates
+//   tangent          one assembly of the stiffness matrix (begin, kernels, end with the export)
 // One process configuration per run: bench/threads.sh runs it with 1 thread, 2 threads and
 // 2 MPI ranks x 1 thread back to back and prints the ratios. Each time is the fastest of
 // --repeats runs, the slowest rank's. Checksums (|f|, |K|_F) show every configuration computes

@@ -7,8 +7,8 @@
 //     Finite Element Analysis", 2nd ed., eqs. 6.27-6.29 and 6.40):
 //     F = I + H, J = det F,  W = mu/2 (tr(F^T F) - 3) - mu ln J + lambda/2 (ln J)^2,
 //     P = mu (F - F^-T) + lambda ln J F^-T,
-//     A_iJkL = dP_iJ/dF_kL = mu d_ik d_JL + (mu - lambda ln J) F^-1_Li F^-1_Jk + lambda F^-1_Ji
-//     F^-1_Lk, Cauchy sigma = 1/J (mu (b - I) + lambda ln J I), b = F F^T.
+//     A_iJkL = dP_iJ/dF_kL = mu d_ik d_JL + (mu - lambda ln J) F^-1_Li F^-1_Jk + lambda F^-1_Ji F^-1_Lk,
+//     Cauchy sigma = 1/J (mu (b - I) + lambda ln J I), b = F F^T.
 //   In 2D plane strain F_33 = 1 (the 3D formulas restricted to the plane; tr(F^T F) gains 1).
 #pragma once
 

@@ -10,8 +10,8 @@
 //    do not vanish on Gamma_u break consistency (Wagner & Liu 2000). Exact nodal values;
 //    nonsymmetric system.
 //  nitsche - symmetric Nitsche (Nitsche 1971; Fernandez-Mendez & Huerta 2004):
-//    - integral phi_I (P n)_i - integral (dP(phi_I e_i) n).(u^h - u_bar) + beta integral phi_I (u^h
-//    - u_bar)_i, beta = alpha E / h (alpha default 100). Consistent and symmetric.
+//    - integral phi_I (P n)_i - integral (dP(phi_I e_i) n).(u^h - u_bar) + beta integral phi_I (u^h - u_bar)_i,
+//    beta = alpha E / h (alpha default 100). Consistent and symmetric.
 //  penalty - beta integral phi_I (u^h - u_bar)_i only (alpha default 1e4): symmetric, simple,
 //    but not consistent: the error decreases like 1/alpha.
 //

@@ -1,8 +1,7 @@
 // Errors of a discrete solution against an exact one, integrated with a Gauss rule of order 5 on
 // every background cell (independent of the scheme that integrated the weak form):
 //   relative L2 displacement error  ||u^h - u|| / ||u||
-//   relative energy-norm error      sqrt(a(u^h - u, u^h - u) / a(u, u)), a(v, v) = integral eps(v)
-//   : C : eps(v)
+//   relative energy-norm error      sqrt(a(u^h - u, u^h - u) / a(u, u)), a(v, v) = integral eps(v) : C : eps(v)
 // with u^h = sum_I phi_I d_I and its direct gradient. Small-strain materials only (the energy
 // norm of the linear elasticity tensor).
 #pragma once

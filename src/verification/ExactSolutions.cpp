@@ -58,8 +58,7 @@ const MaterialSpec& first_material(const Scene& s) {
 }
 
 // Timoshenko & Goodier cantilever, plane stress; plane strain by E -> E/(1-nu^2), nu -> nu/(1-nu).
-// Domain x in [0, L], y in [-D/2, D/2]; shear traction P at x = L
-// (../shared/reference/benchmarks.md).
+// Domain x in [0, L], y in [-D/2, D/2]; shear traction P at x = L (../shared/reference/benchmarks.md).
 ExactSolution timoshenko(const Scene& scene) {
   const Parameters p(scene, {"length", "depth", "load"});
   const double L = p.number("length", 48.0), D = p.number("depth", 12.0),

@@ -72,8 +72,7 @@ TEST_P(Reproduction, PolynomialsAndGradientsToRoundOff) {
         value += v.phi[k] * m.value(xi);
         for (std::size_t e = 0; e < d; ++e) gradient[e] += v.grad[k * d + e] * m.value(xi);
       }
-      // Relative to the size of the field over the domain (at most 2^2 = 4 here) and of its
-      // gradient.
+      // Relative to the size of the field over the domain (at most 2^2 = 4 here) and of its gradient.
       worst_value = std::max(worst_value, std::abs(value - m.value(x)) / 4.0);
       for (std::size_t e = 0; e < d; ++e)
         worst_gradient = std::max(
