@@ -4,7 +4,7 @@
 //   tangent         K_(I,i)(J,k) = sum_q w_q B_qI,j A_ijkl(q) B_qJ,l
 //   strain energy   E            = sum_q w_q W(H_q)
 // in two passes. Pass 1, one work item per point q, stores the force terms of its entries in
-// particle order (force), or P(q) and A(q) (tangent). Pass 2, one work item per particle I,
+// particle order (force), or A(q) (tangent). Pass 2, one work item per particle I,
 // *gathers* the contributions of the points that reach I (GatherIndex, ascending q) into I's
 // force or I's matrix rows. Why a gather and not an atomic
 // scatter: no two work items write the same particle, so the kernels are race-free on threads
@@ -50,30 +50,24 @@ KOKKOS_INLINE_FUNCTION void displacement_gradient(const DevicePoints& p, const D
   }
 }
 
-/// Pass 1: P(q) into stress(q, i * Dim + j) and, when `tangent` has rows, A(q) into
-/// tangent(q, ((i * Dim + j) * Dim + k) * Dim + l). `inverted` receives the smallest point
-/// index with det F <= 0 (INT_MAX when none); that point's stress is left zero.
+/// Pass 1 of the tangent: A(q) = dP/dH into tangent(q, ((i * Dim + j) * Dim + k) * Dim + l).
+/// `inverted` receives the smallest point index with det F <= 0 (INT_MAX when none); that
+/// point's tangent is left unset (the caller reports it before the gather).
 template <int Dim, class DisplacementView>
-struct PointStressKernel {
+struct PointTangentKernel {
   DevicePoints p;
   DisplacementView u;
-  DeviceView<double**> stress;
   DeviceView<double**> tangent;
   Kokkos::View<int, MemSpace> inverted;
 
   KOKKOS_INLINE_FUNCTION void operator()(const int q) const {
     double H[Dim][Dim], P[Dim][Dim], A[Dim][Dim][Dim][Dim];
     displacement_gradient<Dim>(p, u, q, H);
-    const bool with_tangent = tangent.extent(0) > 0;
-    if (!physics::stress<Dim>(p.material, H, P, with_tangent ? A : nullptr)) {
+    if (!physics::stress<Dim>(p.material, H, P, A)) {
       Kokkos::atomic_fetch_min(&inverted(), q);
-      for (int m = 0; m < Dim * Dim; ++m) stress(q, m) = 0.0;
       return;
     }
-    for (int i = 0; i < Dim; ++i)
-      for (int j = 0; j < Dim; ++j) stress(q, i * Dim + j) = P[i][j];
-    if (with_tangent)
-      for (int m = 0; m < Dim * Dim * Dim * Dim; ++m) tangent(q, m) = (&A[0][0][0][0])[m];
+    for (int m = 0; m < Dim * Dim * Dim * Dim; ++m) tangent(q, m) = (&A[0][0][0][0])[m];
   }
 };
 
@@ -89,7 +83,7 @@ KOKKOS_INLINE_FUNCTION double force_term(const DevicePoints& p, const double (&P
 
 /// Pass 1 of the force: per point q, the force terms w_q P(q) B_k of its entries, written to
 /// their slots in particle order (each slot belongs to one entry: no two work items write the
-/// same place). `inverted` as in PointStressKernel; an inverted point writes zeros.
+/// same place). `inverted` as in PointTangentKernel; an inverted point writes zeros.
 template <int Dim, class DisplacementView>
 struct PointForceKernel {
   DevicePoints p;
@@ -130,7 +124,7 @@ struct NodalForceKernel {
 /// The force in one pass for an execution space with one thread (Kokkos::Serial): per point,
 /// stress then f(I) += w_q P(q) B_k for every entry. Each f(I) receives its terms in ascending q,
 /// the order NodalForceKernel gathers them in, with the same arithmetic, so both give the same
-/// bits; this one skips the stored stresses and the transposed reads (measured on Debian's
+/// bits; this one skips the stored terms and the second pass (measured on Debian's
 /// Serial build, 105,300 particles: docs/threads.md). Never run on a space with threads.
 template <int Dim, class DisplacementView, class ForceView>
 struct SerialForceKernel {

@@ -164,13 +164,10 @@ void SolidOperator::add_tangent(const Vector& d_overlap, FEMatrix& K) const {
   for_each_part(
       [&](auto dim, const auto& points, const PartData& p, const auto& inverted) {
         constexpr int Dim = decltype(dim)::value;
-        if (p.stress.extent(0) != p.points)
-          p.stress = DeviceView<double**>("efg::point stress", p.points, Dim * Dim);
         if (p.tangent.extent(0) != p.points)
           p.tangent = DeviceView<double**>("efg::point tangent", p.points, Dim * Dim * Dim * Dim);
-        Kokkos::parallel_for(
-            "efg::point_stress", points,
-            PointStressKernel<Dim, decltype(u)>{p.device, u, p.stress, p.tangent, inverted});
+        Kokkos::parallel_for("efg::point_tangent", points,
+                             PointTangentKernel<Dim, decltype(u)>{p.device, u, p.tangent, inverted});
       },
       [&](auto dim, const auto& nodes, const PartData& p) {
         using Kernel = NodalTangentKernel<decltype(dim)::value, decltype(local)>;

@@ -44,10 +44,9 @@ class SolidOperator {
  private:
   struct PartData {
     DevicePoints device;
-    // Pass-1 scratch (SolidKernels.hpp), allocated on first use: force terms per entry, and P and
-    // A per point once a tangent is asked for.
+    // Pass-1 scratch (SolidKernels.hpp), allocated on first use: force terms per entry, and A per
+    // point once a tangent is asked for.
     mutable DeviceView<double**> term;
-    mutable DeviceView<double**> stress;
     mutable DeviceView<double**> tangent;
     std::vector<int> overlap_node;
     std::size_t points = 0;
