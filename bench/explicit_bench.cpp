@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <cstring>
 
+#include "ExplicitStep.hpp"
 #include "core/RunSummary.hpp"
 #include "operators/ModelOperators.hpp"
 #include "scene/SceneReader.hpp"
@@ -49,22 +50,18 @@ int main(int argc, char** argv) {
       const int steps = 20;
       const auto start = std::chrono::steady_clock::now();
       for (int s = 0; s < steps; ++s) {
-        v.update(0.5e-3, a, 1.0);
-        d.update(1e-3, v, 1.0);
-        ops.internal_force(d, f);
-        a.update(-1.0, f, 0.0);
-        v.update(0.5e-3, a, 1.0);
+        explicit_step(ops, 1e-3, d, v, a, f);
       }
       const double seconds =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       double entries = 0;
       for (const auto& part : model.parts)
         entries += static_cast<double>(part.points.gradients.particles.size());
-      // Per entry: node id (4) + gradient (24) + displacement (24) in the stress pass; entry
-      // index (8) + point index (4) + gradient (24) in the gather pass; per point: weight and
-      // offsets (16) and the stress written and read (144); per dof: the five vector updates
-      // read and write (5 x 16 x 3 per particle).
-      const double bytes = entries * 88.0 + particles * (160.0 + 240.0);
+      // Per entry (the one-pass force of the Serial build): node id (4) + gradient (24) +
+      // gathered displacement (24) + force read-modify-write (48); per point: weight and offsets
+      // (16); per dof: the five vector updates read and write (5 x 16 x 3 per particle). The
+      // threaded build's two passes also write and read each entry's force term and slot (~56).
+      const double bytes = entries * 100.0 + particles * (16.0 + 240.0);
       const double per_step = seconds / steps;
       std::printf("%10.0f %8.1f %12.1f %14.1f %12.4f %14.3e %12.2f\n", particles, dilation,
                   entries / particles, 1e9 * per_step / particles,

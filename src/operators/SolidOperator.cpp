@@ -166,8 +166,9 @@ void SolidOperator::add_tangent(const Vector& d_overlap, FEMatrix& K) const {
         constexpr int Dim = decltype(dim)::value;
         if (p.tangent.extent(0) != p.points)
           p.tangent = DeviceView<double**>("efg::point tangent", p.points, Dim * Dim * Dim * Dim);
-        Kokkos::parallel_for("efg::point_tangent", points,
-                             PointTangentKernel<Dim, decltype(u)>{p.device, u, p.tangent, inverted});
+        Kokkos::parallel_for(
+            "efg::point_tangent", points,
+            PointTangentKernel<Dim, decltype(u)>{p.device, u, p.tangent, inverted});
       },
       [&](auto dim, const auto& nodes, const PartData& p) {
         using Kernel = NodalTangentKernel<decltype(dim)::value, decltype(local)>;

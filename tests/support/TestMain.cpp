@@ -6,16 +6,13 @@
 #include <Teuchos_CommHelpers.hpp>
 #include <Tpetra_Core.hpp>
 
-#include <cstdlib>
-
 #include "core/Log.hpp"
+#include "core/Threads.hpp"
 
 int main(int argc, char** argv) {
   ::testing::InitGoogleTest(&argc, argv);
-  setenv("OMP_PROC_BIND", "false",
-         0);  // unbound, as the OpenMP runtime already assumed; no Kokkos warning
-  int library_argc = 1;
-  Tpetra::ScopeGuard scope(&library_argc, &argv);
+  efg::LibraryArguments library(argc, argv);  // as efg itself: --threads N, OMP_PROC_BIND
+  Tpetra::ScopeGuard scope(library.argc(), library.argv());
   const auto comm = Tpetra::getDefaultComm();
   efg::Log::set_rank(comm->getRank());
   if (comm->getRank() != 0) {
