@@ -25,6 +25,7 @@ StageSummary ImplicitDriver::run(Vector& d, const OutputHook& output) {
   NewtonSolver newton(problem_, stage_.settings, scene.file, "stage '" + stage_.name + "'");
   Progress progress("stage '" + stage_.name + "'", span);
   StageSummary summary;
+  summary.linear_solver = newton.plan().describe() + " (" + newton.plan().reason + ")";
   double t = start_, dt = span / steps, next_output = std::min(end, start_ + interval),
          last_output = start_;
   Vector saved(d, Teuchos::Copy);
@@ -38,6 +39,18 @@ StageSummary ImplicitDriver::run(Vector& d, const OutputHook& output) {
     const auto result = newton.solve(d);
     summary.newton_iterations += result.iterations;
     summary.linear_iterations += result.linear_iterations;
+    summary.newton_records.push_back(result.record);
+    summary.linear_setup_seconds = newton.preconditioner_seconds();
+    if (result.linear_failure) {
+      // The linear system itself cannot be solved (singular, or beyond the preconditioner):
+      // a smaller load step has the same matrix, so cutting back would only repeat it.
+      if (t > last_output) output(t, d);
+      std::ostringstream why;
+      why << "stage '" << stage_.name << "': load step " << summary.steps + 1
+          << " at t = " << target << ", Newton iteration " << result.iterations << ": "
+          << result.failure;
+      throw NumericalError(why.str());
+    }
     if (!result.converged) {
       Tpetra::deep_copy(d, saved);
       ++summary.cutbacks;

@@ -18,7 +18,10 @@ using OutputHook = std::function<void(double, const Vector&)>;
 struct StageSummary {
   int steps = 0, cutbacks = 0, newton_iterations = 0, linear_iterations = 0;
   std::vector<std::vector<double>>
-      residual_histories;  ///< ||r|| per Newton iteration, per converged step
+      residual_histories;                    ///< ||r|| per Newton iteration, per converged step
+  std::vector<NewtonRecord> newton_records;  ///< every Newton solve, cut back ones included
+  std::string linear_solver;                 ///< what solved the linear systems, and why
+  double linear_setup_seconds = 0;           ///< preconditioner builds / factorizations
 };
 
 class ImplicitDriver {

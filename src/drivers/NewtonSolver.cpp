@@ -6,10 +6,8 @@
 #include <NOX_Observer.hpp>
 #include <NOX_SolverStats.hpp>
 #include <Stratimikos_DefaultLinearSolverBuilder.hpp>
-#include <Stratimikos_MueLuHelpers.hpp>
-#include <Teuchos_AbstractFactoryStd.hpp>
 #include <Teuchos_TimeMonitor.hpp>
-#include <Thyra_Ifpack2PreconditionerFactory.hpp>
+#include <Thyra_TpetraThyraWrappers.hpp>
 
 #include <cmath>
 #include <sstream>
@@ -17,68 +15,53 @@
 #include "core/Errors.hpp"
 #include "core/Log.hpp"
 #include "scene/ParameterListFromYaml.hpp"
+#include "solvers/RigidBodyModes.hpp"
 
 namespace efg {
 namespace {
 
+std::string sci(double v) {
+  std::ostringstream o;
+  o.precision(3);
+  o << std::scientific << v;
+  return o.str();
+}
+
+// Prints one line per Newton iteration from the record NewtonConvergence keeps.
 class ResidualLog : public NOX::Observer {
  public:
-  explicit ResidualLog(NewtonResult& result) : result_(result) {}
-  void runPreSolve(const NOX::Solver::Generic& solver) override {
-    if (!solver.getSolutionGroup().isF()) return;
-    result_.residual_history.push_back(solver.getSolutionGroup().getNormF());
-    Log::info("    Newton 0: ||r|| = " + format(result_.residual_history.back()));
-  }
+  explicit ResidualLog(const NewtonRecord& record) : record_(record) {}
   void runPostIterate(const NOX::Solver::Generic& solver) override {
-    const double r = solver.getSolutionGroup().getNormF();
-    const int its = solver.getSolverStatistics()->linearSolve.lastLinearSolve_NumIterations;
-    result_.linear_iterations += its;
+    const auto& h = record_.residuals;
+    if (h.size() == 2) Log::info("    Newton 0: ||r|| = " + sci(h[0]));
+    if (h.size() < 2 || record_.linear_iterations.empty()) return;
+    const double r = h.back();
     std::string rate;
-    const auto& h = result_.residual_history;
-    if (h.size() >= 2 && h[h.size() - 1] > 0 && h[h.size() - 2] > 0 && r > 0)
-      rate =
-          ", order " + format(std::log(r / h.back()) / std::log(h[h.size() - 1] / h[h.size() - 2]));
-    result_.residual_history.push_back(r);
-    Log::info("    Newton " + std::to_string(solver.getNumIterations()) + ": ||r|| = " + format(r) +
-              " (" + std::to_string(its) + " linear iterations" + rate + ")");
+    if (h.size() >= 3 && h[h.size() - 2] > 0 && h[h.size() - 3] > 0 && r > 0)
+      rate = ", order " +
+             sci(std::log(r / h[h.size() - 2]) / std::log(h[h.size() - 2] / h[h.size() - 3]));
+    Log::info("    Newton " + std::to_string(solver.getNumIterations()) + ": ||r|| = " + sci(r) +
+              " (" + std::to_string(record_.linear_iterations.back()) +
+              " linear iterations, reduction " + sci(record_.linear_reductions.back()) +
+              (record_.linear_converged.back() ? "" : ", not converged") + rate + ")");
   }
 
  private:
-  static std::string format(double v) {
-    std::ostringstream o;
-    o.precision(3);
-    o << std::scientific << v;
-    return o.str();
-  }
-  NewtonResult& result_;
-};
-
-// Stops a Newton iteration whose residual grew a thousandfold: it will not come back, and every
-// further iteration costs a full linear solve. The driver then cuts the load step.
-class RelativeDivergence : public NOX::StatusTest::Generic {
- public:
-  NOX::StatusTest::StatusType checkStatus(const NOX::Solver::Generic& solver,
-                                          NOX::StatusTest::CheckType) override {
-    const double r = solver.getSolutionGroup().getNormF();
-    if (solver.getNumIterations() == 0) initial_ = r;
-    status_ = initial_ > 0 && !(r <= 1e3 * initial_) ? NOX::StatusTest::Failed
-                                                     : NOX::StatusTest::Unconverged;
-    return status_;
-  }
-  NOX::StatusTest::StatusType getStatus() const override { return status_; }
-  std::ostream& print(std::ostream& stream, int indent) const override {
-    for (int i = 0; i < indent; ++i) stream << ' ';
-    return stream << status_ << " ||r|| below 1e3 x its initial value\n";
-  }
-
- private:
-  double initial_ = -1;
-  NOX::StatusTest::StatusType status_ = NOX::StatusTest::Unevaluated;
+  const NewtonRecord& record_;
 };
 
 Teuchos::ParameterList from_stage(const YAML::Node& stage, const char* key, const std::string& file,
                                   const std::string& where) {
   return parameter_list_from_yaml(stage[key], key, file, where + "." + key);
+}
+
+std::string linear_failure_advice(const LinearSolverPlan& plan) {
+  return "linear solver " + plan.describe() +
+         ". Candidates: a body or part not held against rigid motion (missing essential "
+         "conditions), a nearly incompressible material (nu >= 0.49: the displacement-only "
+         "formulation locks and its system is ill-conditioned), an inverted or degenerate "
+         "state. Try solver: direct on one rank, or a preconditioner suited to the problem "
+         "(docs/implicit.md, 'When a solve fails')";
 }
 
 }  // namespace
@@ -104,85 +87,46 @@ Teuchos::RCP<Teuchos::ParameterList> nonlinear_parameters(const Teuchos::Paramet
   out.set("Parameters", false);
   out.set("Details", false);
   p->sublist("Solver Options").set("Status Test Check Type", "Complete");
-  // Converged when ||r|| drops 1e-9 below its value at the start of the step (or below an
-  // absolute floor), within 25 iterations; NaN or Inf stops the step.
+  // Convergence itself is efg's test (NewtonConvergence); NOX's list adds the iteration cap and
+  // the finite-value check.
   auto& st = p->sublist("Status Tests");
   st.set("Test Type", "Combo");
   st.set("Combo Type", "OR");
-  st.set("Number of Tests", 4);
-  auto& relative = st.sublist("Test 0");
-  relative.set("Test Type", "RelativeNormF");
-  relative.set("Tolerance", 1e-9);
-  auto& absolute = st.sublist("Test 1");
-  absolute.set("Test Type", "NormF");
-  absolute.set("Tolerance", 1e-300);
-  absolute.set("Norm Type", "Two Norm");
-  absolute.set("Scale Type", "Unscaled");
-  st.sublist("Test 2").set("Test Type", "MaxIters");
-  st.sublist("Test 2").set("Maximum Iterations", 20);
-  st.sublist("Test 3").set("Test Type", "FiniteValue");
+  st.set("Number of Tests", 2);
+  st.sublist("Test 0").set("Test Type", "MaxIters");
+  st.sublist("Test 0").set("Maximum Iterations", 20);
+  st.sublist("Test 1").set("Test Type", "FiniteValue");
+  if (user.isSublist("Status Tests")) p->remove("Status Tests");  // the user's replace these
   p->setParameters(user);
   return p;
 }
 
-Teuchos::RCP<Teuchos::ParameterList> linear_parameters(
-    const Teuchos::ParameterList& solver, const Teuchos::ParameterList& preconditioner) {
+Teuchos::RCP<Teuchos::ParameterList> linear_parameters(const LinearSolverPlan& plan) {
   auto p = Teuchos::parameterList("Linear Solver");
   p->set("Linear Solver Type", "Belos");
   auto& belos = p->sublist("Linear Solver Types").sublist("Belos");
-  const std::string type =
-      solver.isParameter("Solver Type") ? solver.get<std::string>("Solver Type") : "Block GMRES";
-  belos.set("Solver Type", type);
-  auto& chosen = belos.sublist("Solver Types").sublist(type);
-  chosen.set("Convergence Tolerance", 1e-10);  // NOX passes its own forcing term per solve
-  chosen.set("Maximum Iterations", 2000);
-  if (type == "Block GMRES" || type == "Pseudo Block GMRES") chosen.set("Num Blocks", 300);
-  chosen.set("Verbosity", 1);  // errors only
-  for (auto it = solver.begin(); it != solver.end(); ++it)
-    if (solver.name(it) != "Solver Type") chosen.setEntry(solver.name(it), solver.entry(it));
+  belos.setParameters(plan.krylov);
   belos.sublist("VerboseObject").set("Verbosity Level", "none");
-
-  const std::string prec =
-      preconditioner.isParameter("Type") ? preconditioner.get<std::string>("Type") : "Ifpack2";
-  p->set("Preconditioner Type", prec);
-  if (prec == "Ifpack2") {
-    auto& ifpack = p->sublist("Preconditioner Types").sublist("Ifpack2");
-    const std::string kind = preconditioner.isParameter("Prec Type")
-                                 ? preconditioner.get<std::string>("Prec Type")
-                                 : "RILUK";
-    ifpack.set("Prec Type", kind);
-    // ILU(2): ILU(1) stalls on the constraint rows of the transformation method at dilation 2.
-    if (kind == "RILUK") ifpack.sublist("Ifpack2 Settings").set("fact: iluk level-of-fill", 2);
-    for (auto it = preconditioner.begin(); it != preconditioner.end(); ++it)
-      if (preconditioner.name(it) != "Type" && preconditioner.name(it) != "Prec Type")
-        ifpack.sublist("Ifpack2 Settings")
-            .setEntry(preconditioner.name(it), preconditioner.entry(it));
-  } else if (prec == "MueLu") {
-    auto& muelu = p->sublist("Preconditioner Types").sublist("MueLu");
-    muelu.set("verbosity", "none");
-    muelu.set("coarse: type", "RELAXATION");  // not KLU2: wrong answers on more than one rank
-    for (auto it = preconditioner.begin(); it != preconditioner.end(); ++it)
-      if (preconditioner.name(it) != "Type")
-        muelu.setEntry(preconditioner.name(it), preconditioner.entry(it));
-  }
+  p->set("Preconditioner Type", "None");  // efg's own, handed over as W_prec
   return p;
 }
 
 NewtonSolver::NewtonSolver(StaticProblem& problem, const YAML::Node& stage, const std::string& file,
                            const std::string& where)
     : problem_(problem) {
+  const auto& model = problem.model();
+  const int ranks = problem.owned_dofs()->getComm()->getSize();
+  const auto dofs = static_cast<std::int64_t>(problem.owned_dofs()->getGlobalNumElements());
+  plan_ = plan_linear_solver(stage["solver"] ? stage["solver"].as<std::string>() : "auto",
+                             stage["direct_limit"] ? stage["direct_limit"].as<std::int64_t>() : 0,
+                             from_stage(stage, "linear_solver", file, where),
+                             from_stage(stage, "preconditioner", file, where), dofs,
+                             model.mesh.dimension, ranks, file + ": " + where);
+  if (stage["residual_tolerance"]) tolerance_ = stage["residual_tolerance"].as<double>();
   try {
     nox_params_ = nonlinear_parameters(from_stage(stage, "nonlinear_solver", file, where));
-    auto linear = linear_parameters(from_stage(stage, "linear_solver", file, where),
-                                    from_stage(stage, "preconditioner", file, where));
     Stratimikos::DefaultLinearSolverBuilder builder;
-    using Factory = Thyra::PreconditionerFactoryBase<double>;
-    builder.setPreconditioningStrategyFactory(
-        Teuchos::abstractFactoryStd<Factory,
-                                    Thyra::Ifpack2PreconditionerFactory<Tpetra::CrsMatrix<>>>(),
-        "Ifpack2");
-    Stratimikos::enableMueLu<Map::local_ordinal_type, GlobalOrdinal, Map::node_type>(builder);
-    builder.setParameterList(linear);
+    builder.setParameterList(linear_parameters(plan_));
     lows_factory_ = builder.createLinearSolveStrategy("");
   } catch (const InputError&) {
     throw;
@@ -190,27 +134,62 @@ NewtonSolver::NewtonSolver(StaticProblem& problem, const YAML::Node& stage, cons
     throw InputError(file + ": " + where +
                      ": the solver parameters were rejected by Trilinos: " + e.what());
   }
+  Teuchos::RCP<Tpetra::MultiVector<>> modes, coordinates;
+  if (plan_.preconditioner == LinearSolverPlan::Preconditioner::multigrid) {
+    const int dim = model.mesh.dimension;
+    std::vector<double> center(static_cast<std::size_t>(dim), 0.0);
+    const auto n = model.mesh.node_count();
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t c = 0; c < center.size(); ++c)
+        center[c] += model.mesh.coordinates[i * center.size() + c] / static_cast<double>(n);
+    modes = rigid_body_modes(model.maps, dim, model.mesh.coordinates, center);
+    coordinates = particle_coordinates(model.maps, dim, model.mesh.coordinates);
+  }
+  preconditioner_ = make_matrix_preconditioner(plan_, problem.owned_dofs(), modes, coordinates);
+  Vector zero(problem.owned_dofs());
+  model_ = Teuchos::rcp(new SolidModelEvaluator(problem_, zero));
+  model_->set_W_factory(lows_factory_);
+  model_->set_preconditioner(preconditioner_);
+  jacobian_ = model_->create_W_op();
+  preconditioner_op_ = model_->create_W_prec();
+  Log::info("  linear solver: " + plan_.describe() + " (" + plan_.reason + ")");
+}
+
+double NewtonSolver::preconditioner_seconds() const {
+  return preconditioner_.is_null() ? 0.0 : preconditioner_->setup_seconds();
 }
 
 NewtonResult NewtonSolver::solve(Vector& d) {
   Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewCounter("efg: Newton iterations"));
   NewtonResult result;
-  auto model = Teuchos::rcp(new SolidModelEvaluator(problem_, d));
-  model->set_W_factory(lows_factory_);
-  NOX::Thyra::Vector x0(model->getNominalValues().get_x()->clone_v());
-  auto group = Teuchos::rcp(new NOX::Thyra::Group(x0, model));
+  model_->set_initial_guess(d);
+  model_->clear_failure();
+  NOX::Thyra::Vector x0(model_->getNominalValues().get_x()->clone_v());
+  const Teuchos::RCP<const Thyra::ModelEvaluator<double>> model = model_;
+  const Teuchos::RCP<Thyra::PreconditionerFactoryBase<double>> no_factory;
+  auto group = Teuchos::rcp(
+      new NOX::Thyra::Group(x0, model, jacobian_, lows_factory_, preconditioner_op_, no_factory));
   auto params = Teuchos::rcp(new Teuchos::ParameterList(*nox_params_));
   params->sublist("Solver Options")
-      .set<Teuchos::RCP<NOX::Observer>>("Observer", Teuchos::rcp(new ResidualLog(result)));
+      .set<Teuchos::RCP<NOX::Observer>>("Observer", Teuchos::rcp(new ResidualLog(result.record)));
   NOX::Utils utils(params->sublist("Printing"));
   auto tests = Teuchos::rcp(new NOX::StatusTest::Combo(NOX::StatusTest::Combo::OR));
+  auto ratio = [this](const NOX::Abstract::Vector& dd, const NOX::Abstract::Vector& r) {
+    return model_->linear_residual_ratio(
+        dynamic_cast<const NOX::Thyra::Vector&>(dd).getThyraVector(),
+        dynamic_cast<const NOX::Thyra::Vector&>(r).getThyraVector());
+  };
+  tests->addStatusTest(Teuchos::rcp(
+      new NewtonConvergence(problem_, tolerance_, energy_tolerance_, ratio, result.record)));
   tests->addStatusTest(NOX::StatusTest::buildStatusTests(params->sublist("Status Tests"), utils));
-  tests->addStatusTest(Teuchos::rcp(new RelativeDivergence));
   auto solver = NOX::Solver::buildSolver(group, tests, params);
   group->computeF();
   NOX::StatusTest::StatusType status = NOX::StatusTest::Failed;
   try {
     status = solver->solve();
+  } catch (const NumericalError& e) {  // a singular factorization, a failed multigrid setup
+    result.failure = e.what();
+    result.linear_failure = true;
   } catch (const std::exception& e) {
     result.failure = std::string("linear or nonlinear solver failed: ") + e.what();
   }
@@ -218,7 +197,15 @@ NewtonResult NewtonSolver::solve(Vector& d) {
   // the step when NOX still converges: the trial point was rejected.
   result.converged = status == NOX::StatusTest::Converged;
   result.iterations = solver->getNumIterations();
-  if (!result.converged && !model->failure().empty()) result.failure = model->failure();
+  result.residual_history = result.record.residuals;
+  for (int its : result.record.linear_iterations) result.linear_iterations += its;
+  if (result.record.linear_failure) {
+    result.linear_failure = true;
+    result.failure = result.record.reason + "; " + linear_failure_advice(plan_);
+  } else if (!result.converged && !model_->failure().empty()) {
+    result.failure = model_->failure();
+  }
+  if (result.converged) Log::info("    converged: " + result.record.reason);
   using Extract = Thyra::TpetraOperatorVectorExtraction<double, Map::local_ordinal_type,
                                                         GlobalOrdinal, Map::node_type>;
   const auto& x = dynamic_cast<const NOX::Thyra::Vector&>(solver->getSolutionGroup().getX());

@@ -1,7 +1,8 @@
-// NOX Newton with line search on the solid model evaluator, linear solves by Belos with an
-// Ifpack2 or MueLu preconditioner through Stratimikos. Defaults suit the nonsymmetric systems of
-// the transformation method (GMRES + ILU(2)); the stage's nonlinear_solver, linear_solver and
-// preconditioner maps override them (see docs/scene.md).
+// NOX Newton with line search on the solid model evaluator; linear solves by Belos (through
+// Stratimikos) with a preconditioner efg builds from each Jacobian (solvers/): a direct LU
+// factorization on one rank for small and medium models, smoothed-aggregation multigrid with
+// rigid-body modes otherwise (solvers/LinearSolverPlan.hpp). Newton stops on the tests of
+// drivers/NewtonConvergence.hpp. The stage's keys and maps override the defaults (docs/scene.md).
 #pragma once
 
 #include <Teuchos_ParameterList.hpp>
@@ -9,7 +10,9 @@
 #include <string>
 #include <vector>
 
+#include "drivers/NewtonConvergence.hpp"
 #include "drivers/SolidModelEvaluator.hpp"
+#include "solvers/LinearSolverPlan.hpp"
 
 namespace efg {
 
@@ -18,7 +21,9 @@ struct NewtonResult {
   int iterations = 0;
   int linear_iterations = 0;
   std::vector<double> residual_history;  ///< ||r||_2 before the first and after every iteration
+  NewtonRecord record;                   ///< linear iterations and reductions per iteration
   std::string failure;                   ///< a numerical failure inside an evaluation, if any
+  bool linear_failure = false;  ///< the linear system could not be solved: no cutback helps
 };
 
 class NewtonSolver {
@@ -30,15 +35,25 @@ class NewtonSolver {
   /// Solves r(d) = 0 starting from d; d holds the last iterate on return.
   NewtonResult solve(Vector& d);
 
+  const LinearSolverPlan& plan() const { return plan_; }
+  /// Seconds spent building preconditioners / factorizations so far.
+  double preconditioner_seconds() const;
+
  private:
   StaticProblem& problem_;
+  LinearSolverPlan plan_;
+  double tolerance_ = 1e-9, energy_tolerance_ = 1e-12;
   Teuchos::RCP<Teuchos::ParameterList> nox_params_;
   Teuchos::RCP<const Thyra::LinearOpWithSolveFactoryBase<double>> lows_factory_;
+  Teuchos::RCP<MatrixPreconditioner> preconditioner_;
+  Teuchos::RCP<SolidModelEvaluator> model_;
+  Teuchos::RCP<Thyra::LinearOpBase<double>> jacobian_;
+  Teuchos::RCP<Thyra::PreconditionerBase<double>> preconditioner_op_;
 };
 
-/// The default NOX, Stratimikos lists, merged with a stage's maps (exposed for tests and docs).
+/// The default NOX list merged with a stage's map, and the Stratimikos list of a plan (exposed
+/// for tests and docs).
 Teuchos::RCP<Teuchos::ParameterList> nonlinear_parameters(const Teuchos::ParameterList& user);
-Teuchos::RCP<Teuchos::ParameterList> linear_parameters(
-    const Teuchos::ParameterList& solver, const Teuchos::ParameterList& preconditioner);
+Teuchos::RCP<Teuchos::ParameterList> linear_parameters(const LinearSolverPlan& plan);
 
 }  // namespace efg

@@ -1,6 +1,7 @@
 #include "drivers/SolidModelEvaluator.hpp"
 
 #include <Teuchos_CommHelpers.hpp>
+#include <Thyra_DefaultPreconditioner.hpp>
 #include <Thyra_TpetraThyraWrappers.hpp>
 #include <Thyra_VectorStdOps.hpp>
 
@@ -38,6 +39,7 @@ Thyra::ModelEvaluatorBase::OutArgs<double> SolidModelEvaluator::createOutArgsImp
   out.setModelEvalDescription(this->description());
   out.setSupports(Thyra::ModelEvaluatorBase::OUT_ARG_f);
   out.setSupports(Thyra::ModelEvaluatorBase::OUT_ARG_W_op);
+  if (!preconditioner_.is_null()) out.setSupports(Thyra::ModelEvaluatorBase::OUT_ARG_W_prec);
   return std::move(out);
 }
 
@@ -49,6 +51,25 @@ Teuchos::RCP<Thyra::LinearOpBase<double>> SolidModelEvaluator::create_W_op() con
   return Thyra::createLinearOp<double>(op, space_, space_);
 }
 
+Teuchos::RCP<Thyra::PreconditionerBase<double>> SolidModelEvaluator::create_W_prec() const {
+  if (preconditioner_.is_null()) return Teuchos::null;
+  Teuchos::RCP<Tpetra::Operator<>> op = preconditioner_;
+  return Teuchos::rcp(
+      new Thyra::DefaultPreconditioner<double>(Thyra::createLinearOp<double>(op, space_, space_)));
+}
+
+double SolidModelEvaluator::linear_residual_ratio(const Thyra::VectorBase<double>& dd,
+                                                  const Thyra::VectorBase<double>& r) const {
+  if (last_jacobian_.is_null()) return -1;
+  const auto d = Extract::getConstTpetraVector(Teuchos::rcpFromRef(dd));
+  const auto f = Extract::getConstTpetraVector(Teuchos::rcpFromRef(r));
+  Vector jd(f->getMap());
+  last_jacobian_->apply(*d, jd);
+  const double rn = f->norm2();
+  jd.update(1.0, *f, 1.0);
+  return rn > 0 ? jd.norm2() / rn : 0.0;
+}
+
 void SolidModelEvaluator::evalModelImpl(
     const Thyra::ModelEvaluatorBase::InArgs<double>& in,
     const Thyra::ModelEvaluatorBase::OutArgs<double>& out) const {
@@ -58,13 +79,21 @@ void SolidModelEvaluator::evalModelImpl(
   int failed = 0;
   try {
     if (!f_thyra.is_null()) problem_.residual(*x, *Extract::getTpetraVector(f_thyra));
-    if (!w_thyra.is_null())
-      problem_.jacobian(
-          *x, *Teuchos::rcp_dynamic_cast<FEMatrix>(Extract::getTpetraOperator(w_thyra), true));
+    if (!w_thyra.is_null()) {
+      last_jacobian_ =
+          Teuchos::rcp_dynamic_cast<FEMatrix>(Extract::getTpetraOperator(w_thyra), true);
+      problem_.jacobian(*x, *last_jacobian_);
+    }
   } catch (const NumericalError& e) {
     failure_ = e.what();
     failed = 1;
   }
+  // The preconditioner is built from the Jacobian NOX evaluated last (NOX asks for W_prec right
+  // after W_op, before the linear solve). A singular factorization is no failure of the
+  // evaluation point but of the linear system: it propagates as a NumericalError.
+  if (out.supports(Thyra::ModelEvaluatorBase::OUT_ARG_W_prec) && !out.get_W_prec().is_null() &&
+      !preconditioner_.is_null() && !last_jacobian_.is_null())
+    preconditioner_->compute(last_jacobian_);
   int any = 0;
   Teuchos::reduceAll(*problem_.owned_dofs()->getComm(), Teuchos::REDUCE_MAX, failed,
                      Teuchos::outArg(any));

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "drivers/StaticProblem.hpp"
+#include "solvers/MatrixPreconditioner.hpp"
 
 namespace efg {
 
@@ -21,11 +22,18 @@ class SolidModelEvaluator : public Thyra::StateFuncModelEvaluatorBase<double> {
     w_factory_ = factory;
   }
   void set_initial_guess(const Vector& guess);
+  /// The preconditioner rebuilt from every new Jacobian (W_prec); none: Belos runs without one.
+  void set_preconditioner(const Teuchos::RCP<MatrixPreconditioner>& preconditioner) {
+    preconditioner_ = preconditioner;
+  }
 
   /// The message of the last numerical failure inside an evaluation (empty when none). Such a
   /// failure (e.g. an inverted point) turns the residual into NaN on every rank, so that NOX's
   /// finite-value test stops the step collectively and the driver can cut the step back.
   const std::string& failure() const { return failure_; }
+  /// ||J dd + r|| / ||r|| with the Jacobian evaluated last (the achieved linear reduction).
+  double linear_residual_ratio(const Thyra::VectorBase<double>& dd,
+                               const Thyra::VectorBase<double>& r) const;
   void clear_failure() { failure_.clear(); }
 
   Teuchos::RCP<const Thyra::VectorSpaceBase<double>> get_x_space() const override { return space_; }
@@ -36,6 +44,7 @@ class SolidModelEvaluator : public Thyra::StateFuncModelEvaluatorBase<double> {
   }
   Thyra::ModelEvaluatorBase::InArgs<double> createInArgs() const override;
   Teuchos::RCP<Thyra::LinearOpBase<double>> create_W_op() const override;
+  Teuchos::RCP<Thyra::PreconditionerBase<double>> create_W_prec() const override;
 
  protected:
   Thyra::ModelEvaluatorBase::OutArgs<double> createOutArgsImpl() const override;
@@ -47,6 +56,8 @@ class SolidModelEvaluator : public Thyra::StateFuncModelEvaluatorBase<double> {
   Teuchos::RCP<const Thyra::VectorSpaceBase<double>> space_;
   Teuchos::RCP<const Thyra::LinearOpWithSolveFactoryBase<double>> w_factory_;
   Thyra::ModelEvaluatorBase::InArgs<double> nominal_;
+  Teuchos::RCP<MatrixPreconditioner> preconditioner_;
+  mutable Teuchos::RCP<FEMatrix> last_jacobian_;  ///< the W_op evaluated last (W_prec's source)
   mutable std::string failure_;
 };
 

@@ -18,11 +18,16 @@ StaticProblem::StaticProblem(std::shared_ptr<const ModelOperators> operators)
   ops_->solid().add_point_couplings(couplings);
   conditions_.add_couplings(couplings);
   graph_ = couplings.build(model_.maps);
+  linear_ = true;
+  for (const auto& part : model_.scene.parts)
+    for (const auto& material : model_.scene.materials)
+      if (material.name == part.material && material.model != "linear_elastic") linear_ = false;
 }
 
 void StaticProblem::set_load_factor(const LoadFactor& factor) {
   conditions_.set_factor(factor);
   ops_->loads().assemble(factor, f_ext_);
+  external_norm_ = f_ext_.norm2();
 }
 
 void StaticProblem::unconstrained_residual(const Vector& d_owned, Vector& r_owned) {
@@ -34,6 +39,7 @@ void StaticProblem::unconstrained_residual(const Vector& d_owned, Vector& r_owne
     conditions_.add_boundary_terms(d_overlap_, r_overlap_);
   }
   ops_->to_owned(r_overlap_, r_owned);
+  internal_norm_ = r_owned.norm2();
   r_owned.update(-1.0, f_ext_, 1.0);
 }
 

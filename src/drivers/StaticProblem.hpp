@@ -4,6 +4,7 @@
 // and its Jacobian on a graph built once. Knows nothing of the nonlinear solver that drives it.
 #pragma once
 
+#include <algorithm>
 #include <memory>
 
 #include "operators/EssentialConditions.hpp"
@@ -31,6 +32,14 @@ class StaticProblem {
   const Teuchos::RCP<const Map>& owned_dofs() const { return model_.maps.owned_dofs; }
   const SolidOperator& solid() const { return ops_->solid(); }
   const Model& model() const { return model_; }
+
+  /// The force scale of the last residual evaluation: max(||f_ext||, ||f_int(d)||) (2-norms over
+  /// the owned dofs). Newton's tolerance is relative to it, so that a step that starts converged
+  /// (a hold stage) or a load that is reacted by stiff supports is judged in force units.
+  double force_scale() const { return std::max(external_norm_, internal_norm_); }
+  /// True when r(d) is affine in d (small-strain linear elastic parts only): one Newton step
+  /// with a converged linear solve is then the solution.
+  bool linear() const { return linear_; }
   /// Imports owned values to the overlap map (owned then ghost particles).
   void to_overlap(const Vector& owned, Vector& overlap) const { ops_->to_overlap(owned, overlap); }
 
@@ -42,6 +51,8 @@ class StaticProblem {
   EssentialConditions conditions_;
   Teuchos::RCP<const FEGraph> graph_;
   Vector d_overlap_, r_overlap_, f_ext_;
+  double external_norm_ = 0, internal_norm_ = 0;
+  bool linear_ = false;
 };
 
 }  // namespace efg

@@ -238,13 +238,32 @@ SpecPtr stage_spec() {
                             .above(0)
                             .at_most(1),
                         "1e-4"),
+           optional_key("solver",
+                        choice("Linear solver: a direct LU factorization (one rank only), GMRES "
+                               "with multigrid, or auto (direct on one rank up to direct_limit "
+                               "dofs, iterative otherwise); docs/implicit.md.",
+                               {"auto", "direct", "iterative"}),
+                        "auto"),
+           optional_key("direct_limit",
+                        integer("Largest dof count that solver: auto factors directly; 0: the "
+                                "default (150000 in 2D, 40000 in 3D).")
+                            .at_least(0),
+                        "0"),
+           optional_key("residual_tolerance",
+                        real("Newton converges when ||r|| <= this x max(||f_ext||, ||f_int||, "
+                             "||r_0||), or when the energy of the update is negligible.",
+                             "-")
+                            .above(0)
+                            .below(1),
+                        "1e-9"),
            optional_key("nonlinear_solver",
                         passthrough("NOX parameter list (e.g. Nonlinear Solver, Line Search)."),
                         "{}"),
            optional_key("linear_solver",
                         passthrough("Belos parameter list; 'Solver Type' picks the method."), "{}"),
            optional_key("preconditioner",
-                        passthrough("Ifpack2 or MueLu parameter list; 'Type' picks the package."),
+                        passthrough("'Type': direct, MueLu, Ifpack2 or None; the other keys go "
+                                    "to that package's list (Amesos2 'solver' for direct)."),
                         "{}")})
       .variant(
           "explicit",

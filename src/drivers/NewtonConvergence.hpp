@@ -1,0 +1,66 @@
+// Newton's stopping test for static equilibrium, in force and energy units rather than relative to
+// wherever the step happened to start (a hold stage starts converged; an exactly solved linear
+// step leaves only round-off). Converged when, after the iterate's update:
+//   (a) ||r|| <= tol * max(||f_ext||, ||f_int(d)||, ||r_0||)   (residual against the force scale),
+//   (b) the problem is linear and the linear solve of the iteration converged (one Newton step of
+//       an affine residual with an exact direction is the solution: never cut back), or
+//   (c) |dd_k . r_{k-1}| <= energy_tol * |dd_1 . r_0|   (energy norm of the update: Bathe 1996,
+//       sec. 8.4.4; it also ends iterations stuck at the round-off floor of f_int, where the
+//       update is round-off too).
+// Fails when the linear solve of an iteration did not converge and reduced the residual of its
+// system by less than 1e-3 (the direction is no Newton direction: a singular or hopeless system),
+// or when ||r|| grows above 1e3 ||r_0|| (divergence). Keeps the per-iteration record the log and
+// the run report print.
+#pragma once
+
+#include <NOX_Abstract_Vector.H>
+#include <NOX_StatusTest_Generic.H>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "drivers/StaticProblem.hpp"
+
+namespace efg {
+
+struct NewtonRecord {
+  std::vector<double> residuals;          ///< ||r|| before the first and after every iteration
+  std::vector<int> linear_iterations;     ///< per iteration
+  std::vector<double> linear_reductions;  ///< ||J dd + r|| / ||r|| per iteration
+  std::vector<bool> linear_converged;     ///< per iteration
+  std::string reason;                     ///< which test ended the iteration (or why it failed)
+  bool linear_failure = false;            ///< the linear solver, not Newton, failed
+};
+
+class NewtonConvergence : public NOX::StatusTest::Generic {
+ public:
+  /// ||J dd + r|| / ||r|| with the Jacobian of the previous iterate (dd: the Newton direction).
+  using LinearResidualRatio =
+      std::function<double(const NOX::Abstract::Vector& dd, const NOX::Abstract::Vector& r)>;
+
+  NewtonConvergence(const StaticProblem& problem, double tolerance, double energy_tolerance,
+                    LinearResidualRatio ratio, NewtonRecord& record)
+      : problem_(problem),
+        tol_(tolerance),
+        energy_tol_(energy_tolerance),
+        ratio_(std::move(ratio)),
+        record_(record) {}
+
+  NOX::StatusTest::StatusType checkStatus(const NOX::Solver::Generic& solver,
+                                          NOX::StatusTest::CheckType type) override;
+  NOX::StatusTest::StatusType getStatus() const override { return status_; }
+  std::ostream& print(std::ostream& stream, int indent) const override;
+
+ private:
+  void record_linear_solve(const NOX::Solver::Generic& solver, const NOX::Abstract::Vector& update);
+
+  const StaticProblem& problem_;
+  double tol_, energy_tol_;
+  LinearResidualRatio ratio_;
+  NewtonRecord& record_;
+  double first_energy_ = 0;
+  NOX::StatusTest::StatusType status_ = NOX::StatusTest::Unevaluated;
+};
+
+}  // namespace efg

@@ -1,0 +1,147 @@
+#include "solvers/LinearSolverPlan.hpp"
+
+#include "core/Errors.hpp"
+
+namespace efg {
+namespace {
+
+using Plan = LinearSolverPlan;
+
+// Smoothed aggregation for vector elasticity (Vanek, Mandel & Brezina 1996): the near-null space
+// (rigid-body modes) is attached by the preconditioner; one aggregate per block of `dim` dofs.
+// The smoother is Ifpack2's ILU(0): Gauss-Seidel and Chebyshev stall on the collocated
+// constraint rows of the transformation method, which are not diagonally dominant. The coarse
+// solve is a relaxation, never Amesos2 KLU2 (wrong answers on more than one rank in 13.2).
+Teuchos::ParameterList multigrid_defaults(int dimension) {
+  Teuchos::ParameterList p;
+  p.set("verbosity", "none");
+  p.set("multigrid algorithm", "sa");
+  p.set("number of equations", dimension);
+  p.set("max levels", 10);
+  p.set("coarse: max size", 1000);
+  p.set("smoother: type", "RILUK");
+  p.sublist("smoother: params").set("fact: iluk level-of-fill", 0);
+  p.set("coarse: type", "RILUK");
+  p.sublist("coarse: params").set("fact: iluk level-of-fill", 1);
+  p.set("aggregation: type", "uncoupled");
+  return p;
+}
+
+Plan::Preconditioner from_type(const std::string& type, const std::string& where) {
+  if (type == "direct") return Plan::Preconditioner::direct;
+  if (type == "MueLu") return Plan::Preconditioner::multigrid;
+  if (type == "Ifpack2") return Plan::Preconditioner::ifpack2;
+  if (type == "None") return Plan::Preconditioner::none;
+  throw InputError(where +
+                   ".preconditioner.Type: expected one of direct, MueLu, Ifpack2, None; "
+                   "found '" +
+                   type + "'");
+}
+
+std::string text(const Teuchos::ParameterList& list, const std::string& key,
+                 const std::string& fallback) {
+  return list.isParameter(key) ? list.get<std::string>(key) : fallback;
+}
+
+}  // namespace
+
+std::string LinearSolverPlan::describe() const {
+  const std::string krylov_name = text(krylov, "Solver Type", "Block GMRES");
+  switch (preconditioner) {
+    case Preconditioner::direct:
+      return "direct (Amesos2 " + text(settings, "solver", "KLU2") + " LU)";
+    case Preconditioner::multigrid:
+      return krylov_name + " + MueLu smoothed aggregation with rigid-body modes";
+    case Preconditioner::ifpack2:
+      return krylov_name + " + Ifpack2 " + text(settings, "Prec Type", "RILUK");
+    case Preconditioner::none:
+      break;
+  }
+  return krylov_name + " without preconditioner";
+}
+
+std::int64_t default_direct_limit(int dimension) {
+  return dimension <= 2 ? 150000 : 40000;
+}
+
+LinearSolverPlan plan_linear_solver(const std::string& solver, std::int64_t direct_limit,
+                                    const Teuchos::ParameterList& linear_solver,
+                                    const Teuchos::ParameterList& preconditioner,
+                                    std::int64_t global_dofs, int dimension, int ranks,
+                                    const std::string& where) {
+  Plan plan;
+  const bool typed = preconditioner.isParameter("Type");
+  const std::string type = typed ? preconditioner.get<std::string>("Type") : "";
+  const std::int64_t limit = direct_limit > 0 ? direct_limit : default_direct_limit(dimension);
+  if (typed) {
+    plan.preconditioner = from_type(type, where);
+    plan.reason = "preconditioner.Type: " + type;
+    if (solver == "direct" && plan.preconditioner != Plan::Preconditioner::direct)
+      throw InputError(where + ".preconditioner.Type: '" + type +
+                       "' contradicts solver: direct (remove one of them)");
+  } else if (solver == "direct") {
+    plan.preconditioner = Plan::Preconditioner::direct;
+    plan.reason = "solver: direct";
+  } else if (solver == "iterative") {
+    plan.preconditioner = Plan::Preconditioner::multigrid;
+    plan.reason = "solver: iterative";
+  } else if (ranks == 1 && global_dofs <= limit) {
+    plan.preconditioner = Plan::Preconditioner::direct;
+    plan.reason =
+        "auto: one rank and " + std::to_string(global_dofs) + " dofs <= " + std::to_string(limit);
+  } else {
+    plan.preconditioner = Plan::Preconditioner::multigrid;
+    plan.reason = ranks > 1
+                      ? "auto: " + std::to_string(ranks) + " ranks"
+                      : "auto: " + std::to_string(global_dofs) + " dofs > " + std::to_string(limit);
+  }
+  if (plan.preconditioner == Plan::Preconditioner::direct && ranks > 1)
+    throw InputError(where +
+                     ": a direct solve is available on one rank only (Amesos2 KLU2 "
+                     "returns wrong solutions on more ranks in Trilinos 13.2); use solver: "
+                     "iterative or auto, or run on one rank");
+
+  // Krylov method: GMRES (the transformation method makes the Jacobian nonsymmetric). With the
+  // direct preconditioner it converges in one iteration; otherwise the iteration count is
+  // bounded so that a hopeless solve stops with a message instead of running for hours.
+  const std::string method = text(linear_solver, "Solver Type", "Block GMRES");
+  plan.krylov.set("Solver Type", method);
+  auto& chosen = plan.krylov.sublist("Solver Types").sublist(method);
+  chosen.set("Convergence Tolerance", 1e-10);
+  plan.max_iterations = plan.preconditioner == Plan::Preconditioner::direct ? 20 : 500;
+  chosen.set("Maximum Iterations", plan.max_iterations);
+  if (method == "Block GMRES" || method == "Pseudo Block GMRES") chosen.set("Num Blocks", 100);
+  chosen.set("Verbosity", 1);  // errors only
+  for (auto it = linear_solver.begin(); it != linear_solver.end(); ++it)
+    if (linear_solver.name(it) != "Solver Type")
+      chosen.setEntry(linear_solver.name(it), linear_solver.entry(it));
+  plan.max_iterations = chosen.get<int>("Maximum Iterations");
+
+  switch (plan.preconditioner) {
+    case Plan::Preconditioner::direct:
+      // Tacho (Cholesky) crashed on its first factorization in Debian's 13.2 build (measured);
+      // KLU2 is the Amesos2 solver of that build that factors these (nonsymmetric) systems.
+      if (text(preconditioner, "solver", "KLU2") != "KLU2")
+        throw InputError(where +
+                         ".preconditioner.solver: expected KLU2 (the one Amesos2 solver "
+                         "of this Trilinos build that factors these systems), found '" +
+                         text(preconditioner, "solver", "") + "'");
+      plan.settings.set("solver", "KLU2");
+      break;
+    case Plan::Preconditioner::multigrid:
+      plan.settings = multigrid_defaults(dimension);
+      break;
+    case Plan::Preconditioner::ifpack2:
+      plan.settings.set("Prec Type", "RILUK");
+      plan.settings.set("fact: iluk level-of-fill", 2);
+      break;
+    case Plan::Preconditioner::none:
+      break;
+  }
+  for (auto it = preconditioner.begin(); it != preconditioner.end(); ++it)
+    if (preconditioner.name(it) != "Type")
+      plan.settings.setEntry(preconditioner.name(it), preconditioner.entry(it));
+  return plan;
+}
+
+}  // namespace efg

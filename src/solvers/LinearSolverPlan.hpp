@@ -1,0 +1,45 @@
+// Which linear solver an implicit stage uses (docs/implicit.md, "Linear solvers"):
+//
+//   direct     - a sparse LU factorization (Amesos2 KLU2) of the whole Jacobian, used as the
+//                preconditioner of GMRES, which then converges in one iteration. One rank only:
+//                Amesos2 KLU2 in Trilinos 13.2 returns wrong solutions on more than one rank.
+//   iterative  - GMRES preconditioned by smoothed-aggregation multigrid (MueLu) with the
+//                rigid-body modes as near-null space, or by the preconditioner the stage names.
+//   auto       - direct on one rank up to `direct_limit` dofs, iterative otherwise.
+//
+// Plain data: resolving the plan needs the stage settings, the dof count and the rank count.
+#pragma once
+
+#include <Teuchos_ParameterList.hpp>
+
+#include <cstdint>
+#include <string>
+
+namespace efg {
+
+struct LinearSolverPlan {
+  enum class Preconditioner { direct, multigrid, ifpack2, none };
+  Preconditioner preconditioner = Preconditioner::direct;
+  std::string reason;               ///< why this one (for the log)
+  Teuchos::ParameterList krylov;    ///< the Belos list for the chosen method
+  Teuchos::ParameterList settings;  ///< the preconditioner's own list (MueLu, Ifpack2, Amesos2)
+  int max_iterations = 0;
+
+  /// A short name for messages: "direct (Amesos2 KLU2)", "GMRES + MueLu SA-AMG", ...
+  std::string describe() const;
+};
+
+/// Largest number of dofs the automatic choice factors directly on one rank, per dimension
+/// (measured on this machine: docs/implicit.md).
+std::int64_t default_direct_limit(int dimension);
+
+/// `solver` is the stage's `solver` key (auto, direct, iterative), `direct_limit` its key of that
+/// name (<= 0: the default), `linear_solver` and `preconditioner` its pass-through maps. Throws
+/// InputError for a direct solve on more than one rank.
+LinearSolverPlan plan_linear_solver(const std::string& solver, std::int64_t direct_limit,
+                                    const Teuchos::ParameterList& linear_solver,
+                                    const Teuchos::ParameterList& preconditioner,
+                                    std::int64_t global_dofs, int dimension, int ranks,
+                                    const std::string& where);
+
+}  // namespace efg

@@ -1,0 +1,57 @@
+// A preconditioner rebuilt from each new Jacobian, seen by Belos as a plain Tpetra operator
+// (applied on the right, so GMRES measures the true residual). The model evaluator hands it to
+// NOX as W_prec; `compute` runs once per Newton iteration, after the Jacobian is assembled.
+// Three kinds (solvers/LinearSolverPlan.hpp): a direct LU factorization (Amesos2), smoothed
+// aggregation multigrid with rigid-body modes (MueLu), an Ifpack2 preconditioner.
+#pragma once
+
+#include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_MultiVector.hpp>
+#include <Tpetra_Operator.hpp>
+
+#include <memory>
+#include <string>
+
+#include "solvers/LinearSolverPlan.hpp"
+
+namespace efg {
+
+class MatrixPreconditioner : public Tpetra::Operator<> {
+ public:
+  using Matrix = Tpetra::CrsMatrix<>;
+  using MultiVector = Tpetra::MultiVector<>;
+  using Map = Tpetra::Map<>;
+
+  /// Builds (first call) or refreshes (later calls: same sparsity, new values) from K. Throws
+  /// NumericalError when K cannot be factored (singular).
+  virtual void compute(const Teuchos::RCP<const Matrix>& K) = 0;
+
+  /// Seconds spent in compute() so far (setup share of the linear solves).
+  double setup_seconds() const { return setup_seconds_; }
+
+  /// Square operator on the owned dofs (known before the first compute: Thyra asks for it).
+  Teuchos::RCP<const Map> getDomainMap() const override { return map_; }
+  Teuchos::RCP<const Map> getRangeMap() const override { return map_; }
+  void set_map(const Teuchos::RCP<const Map>& map) { map_ = map; }
+
+ protected:
+  double setup_seconds_ = 0;
+  Teuchos::RCP<const Map> map_;
+};
+
+/// The preconditioner of `plan`; `near_null_space` (the rigid-body modes) is used by multigrid.
+Teuchos::RCP<MatrixPreconditioner> make_matrix_preconditioner(
+    const LinearSolverPlan& plan, const Teuchos::RCP<const Tpetra::Map<>>& dofs,
+    const Teuchos::RCP<Tpetra::MultiVector<>>& near_null_space,
+    const Teuchos::RCP<Tpetra::MultiVector<>>& coordinates);
+
+Teuchos::RCP<MatrixPreconditioner> make_direct_preconditioner(
+    const Teuchos::ParameterList& settings);
+Teuchos::RCP<MatrixPreconditioner> make_multigrid_preconditioner(
+    const Teuchos::ParameterList& settings,
+    const Teuchos::RCP<Tpetra::MultiVector<>>& near_null_space,
+    const Teuchos::RCP<Tpetra::MultiVector<>>& coordinates);
+Teuchos::RCP<MatrixPreconditioner> make_ifpack2_preconditioner(
+    const Teuchos::ParameterList& settings);
+
+}  // namespace efg
