@@ -239,14 +239,14 @@ SpecPtr stage_spec() {
                             .at_most(1),
                         "1e-4"),
            optional_key("solver",
-                        choice("Linear solver: a direct LU factorization (one rank only), GMRES "
-                               "with multigrid, or auto (direct on one rank up to direct_limit "
-                               "dofs, iterative otherwise); docs/implicit.md.",
+                        choice("Linear solver: a direct LU factorization (on rank 0), GMRES "
+                               "with multigrid, or auto (direct up to direct_limit dofs, "
+                               "iterative above); docs/implicit.md.",
                                {"auto", "direct", "iterative"}),
                         "auto"),
            optional_key("direct_limit",
                         integer("Largest dof count that solver: auto factors directly; 0: the "
-                                "default (150000 in 2D, 40000 in 3D).")
+                                "default (40000 in 2D, 12000 in 3D).")
                             .at_least(0),
                         "0"),
            optional_key("residual_tolerance",

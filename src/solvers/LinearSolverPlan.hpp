@@ -1,11 +1,12 @@
 // Which linear solver an implicit stage uses (docs/implicit.md, "Linear solvers"):
 //
 //   direct     - a sparse LU factorization (Amesos2 KLU2) of the whole Jacobian, used as the
-//                preconditioner of GMRES, which then converges in one iteration. One rank only:
-//                Amesos2 KLU2 in Trilinos 13.2 returns wrong solutions on more than one rank.
+//                preconditioner of GMRES, which then converges in one iteration. On more than
+//                one rank the matrix is gathered and factored on rank 0 (Amesos2 KLU2 in
+//                Trilinos 13.2 returns wrong solutions for distributed matrices).
 //   iterative  - GMRES preconditioned by smoothed-aggregation multigrid (MueLu) with the
 //                rigid-body modes as near-null space, or by the preconditioner the stage names.
-//   auto       - direct on one rank up to `direct_limit` dofs, iterative otherwise.
+//   auto       - direct up to `direct_limit` dofs, iterative above.
 //
 // Plain data: resolving the plan needs the stage settings, the dof count and the rank count.
 #pragma once
@@ -35,7 +36,7 @@ std::int64_t default_direct_limit(int dimension);
 
 /// `solver` is the stage's `solver` key (auto, direct, iterative), `direct_limit` its key of that
 /// name (<= 0: the default), `linear_solver` and `preconditioner` its pass-through maps. Throws
-/// InputError for a direct solve on more than one rank.
+/// InputError for contradicting choices.
 LinearSolverPlan plan_linear_solver(const std::string& solver, std::int64_t direct_limit,
                                     const Teuchos::ParameterList& linear_solver,
                                     const Teuchos::ParameterList& preconditioner,
