@@ -1,6 +1,7 @@
 #include "drivers/SolidModelEvaluator.hpp"
 
 #include <Teuchos_CommHelpers.hpp>
+#include <Teuchos_TimeMonitor.hpp>
 #include <Thyra_DefaultPreconditioner.hpp>
 #include <Thyra_TpetraThyraWrappers.hpp>
 #include <Thyra_VectorStdOps.hpp>
@@ -92,8 +93,10 @@ void SolidModelEvaluator::evalModelImpl(
   // after W_op, before the linear solve). A singular factorization is no failure of the
   // evaluation point but of the linear system: it propagates as a NumericalError.
   if (out.supports(Thyra::ModelEvaluatorBase::OUT_ARG_W_prec) && !out.get_W_prec().is_null() &&
-      !preconditioner_.is_null() && !last_jacobian_.is_null())
+      !preconditioner_.is_null() && !last_jacobian_.is_null()) {
+    Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewCounter("efg: linear solver setup"));
     preconditioner_->compute(last_jacobian_);
+  }
   int any = 0;
   Teuchos::reduceAll(*problem_.owned_dofs()->getComm(), Teuchos::REDUCE_MAX, failed,
                      Teuchos::outArg(any));

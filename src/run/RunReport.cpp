@@ -33,6 +33,41 @@ std::string number(double v) {
   return o.str();
 }
 
+template <class T>
+void write_list(std::ostream& o, const std::vector<T>& values) {
+  o << "[";
+  for (std::size_t i = 0; i < values.size(); ++i) o << (i ? ", " : "") << number(values[i]);
+  o << "]";
+}
+
+// Per implicit stage: the linear solver, its setup time, and every Newton solve's residuals,
+// linear iterations and achieved linear reductions (cut back attempts included).
+void write_implicit_stages(std::ostream& o, const std::vector<ImplicitStageReport>& stages) {
+  o << ",\n  \"implicit_stages\": [";
+  for (std::size_t s = 0; s < stages.size(); ++s) {
+    const auto& st = stages[s].summary;
+    o << (s ? ", " : "") << "{\"stage\": " << quoted(stages[s].stage)
+      << ", \"linear_solver\": " << quoted(st.linear_solver)
+      << ", \"linear_setup_seconds\": " << number(st.linear_setup_seconds)
+      << ", \"load_steps\": " << st.steps << ", \"cutbacks\": " << st.cutbacks
+      << ", \"newton_iterations\": " << st.newton_iterations
+      << ", \"linear_iterations\": " << st.linear_iterations << ", \"newton_solves\": [";
+    for (std::size_t k = 0; k < st.newton_records.size(); ++k) {
+      const auto& r = st.newton_records[k];
+      std::vector<double> its(r.linear_iterations.begin(), r.linear_iterations.end());
+      o << (k ? ", " : "") << "{\"residuals\": ";
+      write_list(o, r.residuals);
+      o << ", \"linear_iterations\": ";
+      write_list(o, its);
+      o << ", \"linear_reductions\": ";
+      write_list(o, r.linear_reductions);
+      o << ", \"stopped_by\": " << quoted(r.reason) << "}";
+    }
+    o << "]}";
+  }
+  o << "]";
+}
+
 }  // namespace
 
 const std::vector<std::string>& report_phases() {
@@ -44,6 +79,7 @@ const std::vector<std::string>& report_phases() {
                                                   "tangent assembly",
                                                   "essential conditions",
                                                   "Newton iterations",
+                                                  "linear solver setup",
                                                   "stable time step",
                                                   "explicit time steps",
                                                   "output"};
@@ -115,7 +151,8 @@ std::vector<ReferenceCheck> reference_checks(const ModelOperators& ops, const Ru
 void write_run_report(const CommPtr& comm, const Model& model, const std::string& json_path,
                       const std::string& results_path, const RunState& state,
                       const std::optional<ErrorNorms>& errors,
-                      const std::vector<ReferenceCheck>& checks, double total_seconds) {
+                      const std::vector<ReferenceCheck>& checks, double total_seconds,
+                      const std::vector<ImplicitStageReport>& implicit) {
   std::vector<double> local, global;
   for (const auto& phase : report_phases()) {
     const auto timer = Teuchos::TimeMonitor::lookupCounter("efg: " + phase);
@@ -148,6 +185,7 @@ void write_run_report(const CommPtr& comm, const Model& model, const std::string
       << ", \"l2_rel_error\": " << number(errors->l2_relative)
       << ", \"energy_rel_error\": " << number(errors->energy_relative)
       << ", \"max_nodal_error\": " << number(errors->max_nodal) << "}";
+  write_implicit_stages(o, implicit);
   o << ",\n  \"reference_values\": [";
   for (std::size_t i = 0; i < checks.size(); ++i)
     o << (i ? ", " : "") << "{\"name\": " << quoted(checks[i].name)

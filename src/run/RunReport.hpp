@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "drivers/ImplicitDriver.hpp"
 #include "drivers/RunState.hpp"
 #include "operators/ModelOperators.hpp"
 #include "verification/ErrorNorms.hpp"
@@ -26,11 +27,18 @@ std::vector<ReferenceCheck> reference_checks(const ModelOperators& ops, const Ru
                                              const std::vector<std::string>& global_names,
                                              const std::vector<double>& global_values);
 
+/// What an implicit stage's solvers did, for the report.
+struct ImplicitStageReport {
+  std::string stage;
+  StageSummary summary;
+};
+
 /// Writes the report on rank 0 (collective: timers and memory are reduced over ranks).
 void write_run_report(const CommPtr& comm, const Model& model, const std::string& json_path,
                       const std::string& results_path, const RunState& state,
                       const std::optional<ErrorNorms>& errors,
-                      const std::vector<ReferenceCheck>& checks, double total_seconds);
+                      const std::vector<ReferenceCheck>& checks, double total_seconds,
+                      const std::vector<ImplicitStageReport>& implicit = {});
 
 /// The wall-time phases the report lists (Teuchos timer names without the "efg: " prefix).
 const std::vector<std::string>& report_phases();

@@ -81,6 +81,7 @@ RunOutcome run_stages(const CommPtr& comm, const Model& model, const std::string
 
   write(state);
   const double first_end = model.scene.stages.empty() ? 1.0 : model.scene.stages.front().end_time;
+  std::vector<ImplicitStageReport> implicit_reports;
   for (const auto& stage : model.scene.stages) {
     Log::info("stage '" + stage.name + "' (" + stage.driver +
               "), t = " + std::to_string(state.time) + " to " + std::to_string(stage.end_time));
@@ -93,6 +94,7 @@ RunOutcome run_stages(const CommPtr& comm, const Model& model, const std::string
           state.time = t;
           write(state);
         });
+        implicit_reports.push_back({stage.name, s});
         Log::info("stage '" + stage.name + "' done: " + std::to_string(s.steps) + " steps, " +
                   std::to_string(s.cutbacks) + " cutbacks, " + std::to_string(s.newton_iterations) +
                   " Newton iterations, " + std::to_string(s.linear_iterations) +
@@ -141,7 +143,8 @@ RunOutcome run_stages(const CommPtr& comm, const Model& model, const std::string
   const double seconds =
       setup_seconds +
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-  write_run_report(comm, model, path + ".report.json", path, state, errors, checks, seconds);
+  write_run_report(comm, model, path + ".report.json", path, state, errors, checks, seconds,
+                   implicit_reports);
   Log::info("run report: " + path + ".report.json");
   return outcome;
 }

@@ -290,6 +290,7 @@ class SceneBuilder {
     stage.end_time = st["end_time"].as<double>();
     if (st["output_interval"]) stage.output_interval = st["output_interval"].as<double>();
     stage.settings = st;
+    if (stage.driver == "implicit") check_linear_solver(st, doc, i);
     if (stage.driver == "explicit")
       for (std::size_t p = 0; p < s_.parts.size(); ++p)
         if (!s_.find_material(s_.parts[p].material)->density)
@@ -297,6 +298,29 @@ class SceneBuilder {
                "an explicit stage needs a density for every material; material '" +
                    s_.parts[p].material + "' has none");
     s_.stages.push_back(stage);
+  }
+
+  // The static part of the linear solver choice (solvers/LinearSolverPlan.cpp resolves the rest
+  // with the model's size): caught here so that `check` reports it and nothing is written.
+  void check_linear_solver(const YAML::Node& st, const YAML::Node& doc, std::size_t i) const {
+    const std::string at = "stages[" + std::to_string(i) + "].preconditioner";
+    const YAML::Node prec = st["preconditioner"];
+    if (!prec || !prec.IsMap()) return;
+    const YAML::Node written = doc["preconditioner"];
+    if (prec["Type"]) {
+      const auto type = prec["Type"].as<std::string>();
+      if (type != "direct" && type != "MueLu" && type != "Ifpack2" && type != "None")
+        fail(written["Type"], at + ".Type",
+             "expected one of direct, MueLu, Ifpack2, None; found '" + type + "'");
+      if (st["solver"].as<std::string>() == "direct" && type != "direct")
+        fail(written["Type"], at + ".Type",
+             "'" + type + "' contradicts solver: direct (remove one of them)");
+    }
+    if (prec["solver"] && prec["solver"].as<std::string>() != "KLU2")
+      fail(written["solver"], at + ".solver",
+           "expected KLU2 (the one Amesos2 solver of this Trilinos build that factors these "
+           "systems; Tacho crashed), found '" +
+               prec["solver"].as<std::string>() + "'");
   }
 
   Scene& s_;

@@ -107,14 +107,15 @@ class DirectPreconditioner : public MatrixPreconditioner {
     if (serial_map_.is_null()) {
       auto self = Teuchos::createSerialComm<int>();
       const auto gids = root_->getNodeElementList();
-      serial_map_ = Teuchos::rcp(new Tpetra::Map<>(root_->getGlobalNumElements(), gids,
-                                                   root_->getIndexBase(), self));
+      serial_map_ = Teuchos::rcp(
+          new Tpetra::Map<>(root_->getGlobalNumElements(), gids, root_->getIndexBase(), self));
     }
     const auto rows = static_cast<std::size_t>(gathered.getNodeNumRows());
     auto serial = Teuchos::rcp(new Matrix(serial_map_, gathered.getNodeMaxNumRowEntries()));
     typename Matrix::nonconst_global_inds_host_view_type cols("cols",
                                                               gathered.getNodeMaxNumRowEntries());
-    typename Matrix::nonconst_values_host_view_type vals("vals", gathered.getNodeMaxNumRowEntries());
+    typename Matrix::nonconst_values_host_view_type vals("vals",
+                                                         gathered.getNodeMaxNumRowEntries());
     const auto gids = root_->getNodeElementList();
     for (std::size_t i = 0; i < rows; ++i) {
       std::size_t count = 0;
@@ -146,7 +147,8 @@ class DirectPreconditioner : public MatrixPreconditioner {
 
 }  // namespace
 
-Teuchos::RCP<MatrixPreconditioner> make_direct_preconditioner(const Teuchos::ParameterList& settings) {
+Teuchos::RCP<MatrixPreconditioner> make_direct_preconditioner(
+    const Teuchos::ParameterList& settings) {
   return Teuchos::rcp(new DirectPreconditioner(
       settings.isParameter("solver") ? settings.get<std::string>("solver") : "KLU2"));
 }

@@ -63,7 +63,9 @@ std::string LinearSolverPlan::describe() const {
 // KLU2 factor times measured on this machine (docs/implicit.md): 2D 1.0-3.0 s at 8.5k dofs,
 // 20-68 s at 33k, 173 s at 132k; 3D 0.11 s at 1.6k, 6.6 s at 10k dofs. Above these limits
 // multigrid is faster where it converges.
-std::int64_t default_direct_limit(int dimension) { return dimension <= 2 ? 40000 : 12000; }
+std::int64_t default_direct_limit(int dimension) {
+  return dimension <= 2 ? 40000 : 12000;
+}
 
 LinearSolverPlan plan_linear_solver(const std::string& solver, std::int64_t direct_limit,
                                     const Teuchos::ParameterList& linear_solver,
