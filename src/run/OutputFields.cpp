@@ -26,9 +26,11 @@ void particle_state(const physics::SolidMaterial& m, bool finite, const double* 
       if (finite)  // Green-Lagrange: E = (H + H^T + H^T H) / 2
         for (int k = 0; k < Dim; ++k) strain[i][j] += 0.5 * H[k][i] * H[k][j];
     }
-  if (Dim == 2 && m.plane_stress &&
-      !finite)  // eps_zz = -lambda*/(lambda* + 2 mu) (eps_xx + eps_yy)
-    strain[2][2] = -m.lambda / (m.lambda + 2 * m.mu) * (strain[0][0] + strain[1][1]);
+  // Plane stress: sigma_zz = 0 gives eps_zz = -nu/(1 - nu) (eps_xx + eps_yy), and with the
+  // reduced lambda* = 2 lambda mu / (lambda + 2 mu) that the material carries,
+  // nu/(1 - nu) = lambda/(lambda + 2 mu) = lambda*/(2 mu).
+  if (Dim == 2 && m.plane_stress && !finite)
+    strain[2][2] = -m.lambda / (2 * m.mu) * (strain[0][0] + strain[1][1]);
 }
 
 void push_tensor(std::vector<double>& out, const double (&t)[3][3], int dim,
