@@ -30,12 +30,8 @@ class Ifpack2Preconditioner : public MatrixPreconditioner {
       throw NumericalError("the Ifpack2 " + type +
                            " preconditioner could not be built from the Jacobian: " + e.what());
     }
+    built_ = prec_;
     setup_seconds_ += clock.stop();
-  }
-
-  void apply(const MultiVector& X, MultiVector& Y, Teuchos::ETransp mode, double alpha,
-             double beta) const override {
-    prec_->apply(X, Y, mode, alpha, beta);
   }
 
  private:

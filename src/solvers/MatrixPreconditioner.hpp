@@ -34,9 +34,16 @@ class MatrixPreconditioner : public Tpetra::Operator<> {
   Teuchos::RCP<const Map> getRangeMap() const override { return map_; }
   void set_map(const Teuchos::RCP<const Map>& map) { map_ = map; }
 
+  /// Applies the package's operator built by compute() (the direct solve overrides this).
+  void apply(const MultiVector& X, MultiVector& Y, Teuchos::ETransp mode, double alpha,
+             double beta) const override {
+    built_->apply(X, Y, mode, alpha, beta);
+  }
+
  protected:
   double setup_seconds_ = 0;
   Teuchos::RCP<const Map> map_;
+  Teuchos::RCP<Tpetra::Operator<>> built_;  ///< set by compute() of package preconditioners
 };
 
 /// The preconditioner of `plan`; `near_null_space` (the rigid-body modes) is used by multigrid.

@@ -35,12 +35,8 @@ class MultigridPreconditioner : public MatrixPreconditioner {
                                        "from the Jacobian: ") +
                            e.what());
     }
+    built_ = hierarchy_;
     setup_seconds_ += clock.stop();
-  }
-
-  void apply(const MultiVector& X, MultiVector& Y, Teuchos::ETransp mode, double alpha,
-             double beta) const override {
-    hierarchy_->apply(X, Y, mode, alpha, beta);
   }
 
  private:
