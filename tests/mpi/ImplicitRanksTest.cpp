@@ -64,6 +64,13 @@ TEST(ImplicitRanks, TimoshenkoBeamMatchesOneRank) {
                            std::string(", ") + kTight));
 }
 
+// The multigrid path (distributed hierarchy, rigid-body modes) gives the same answer as the
+// one-rank direct path's problem on any rank count, to the linear tolerance.
+TEST(ImplicitRanks, TimoshenkoBeamMultigridMatchesOneRank) {
+  compare(test::beam_scene(32, 8, 0.2, "transformation", "linear", "scni", 2.0,
+                           std::string(", solver: iterative, ") + kTight));
+}
+
 TEST(ImplicitRanks, NeoHookeanBlockMatchesOneRank) {
   compare(std::string(R"(
 mesh:
