@@ -11,6 +11,7 @@
 #include <Teuchos_Time.hpp>
 #include <Tpetra_Import.hpp>
 
+#include <algorithm>
 #include <vector>
 
 #include "core/Errors.hpp"
@@ -22,7 +23,7 @@ namespace {
 using GO = Tpetra::Map<>::global_ordinal_type;
 using LO = Tpetra::Map<>::local_ordinal_type;
 
-/// The same global ids as `distributed`, all on rank 0.
+/// The same global ids as `distributed`, all on rank 0, ascending.
 Teuchos::RCP<const Tpetra::Map<>> root_map(const Tpetra::Map<>& distributed) {
   const auto& comm = *distributed.getComm();
   const auto mine = distributed.getNodeElementList();
@@ -33,6 +34,9 @@ Teuchos::RCP<const Tpetra::Map<>> root_map(const Tpetra::Map<>& distributed) {
   for (std::size_t r = 1; r < counts.size(); ++r) offsets[r] = offsets[r - 1] + counts[r - 1];
   std::vector<GO> all(comm.getRank() == 0 ? distributed.getGlobalNumElements() : 0);
   Teuchos::gatherv(mine.getRawPtr(), count, all.data(), counts.data(), offsets.data(), 0, comm);
+  // Ascending ids: the factored matrix has the same row order (so the same pivot order and
+  // round-off) on any rank count.
+  std::sort(all.begin(), all.end());
   return Teuchos::rcp(new Tpetra::Map<>(distributed.getGlobalNumElements(), all.data(),
                                         static_cast<LO>(all.size()), distributed.getIndexBase(),
                                         distributed.getComm()));

@@ -1,7 +1,9 @@
 #!/usr/bin/env python3
 """Cook's tapered panel (issue 12's membrane): default implicit solver settings on refined levels,
 1 and 2 ranks, two Poisson ratios. Fails when a level does not converge, when 1 and 2 ranks
-differ by more than 1e-8, or when the nu = 1/3 panel misses the literature value.
+differ by more than 1e-7 of the largest displacement, or when the nu = 1/3 panel misses the
+literature value. (1 vs 2 ranks: the assembled matrices differ in their last bits, and the
+solutions by about cond(K) x 1e-16: measured 5e-12 at 32 x 32, 2-3e-8 at 128 x 128.)
 
 Cook's membrane (Cook 1974): trapezoid (0,0), (48,44), (48,60), (0,44), plane stress, E = 1,
 thickness 1, clamped at x = 0, a vertical shear of total 1 on x = 48. For nu = 1/3 the vertical
@@ -110,7 +112,9 @@ def main():
             if len(results) == 2:
                 scale = np.max(np.abs(results[1]))
                 diff = np.max(np.abs(results[1] - results[2])) / scale
-                if not diff <= 1e-8:
+                print("level %d nu %s: 1 vs 2 ranks differ by %.2e of the largest displacement"
+                      % (n, nu[:4], diff))
+                if not diff <= 1e-7:
                     failures.append("level %d nu %s: 1 and 2 ranks differ by %.3g of the largest "
                                     "displacement" % (n, nu, diff))
     print("| cells per side | particles | nu | ranks | linear solver | Newton its | linear its"
