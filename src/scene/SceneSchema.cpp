@@ -1,5 +1,7 @@
 #include "scene/SceneSchema.hpp"
 
+#include "scene/ExactSolutionNames.hpp"
+
 namespace efg {
 namespace {
 
@@ -331,8 +333,7 @@ SpecPtr verification_spec() {
   return map("Optional: how the run checks itself (exact solution or reference values).")
       .optional("exact_solution",
                 choice("Named exact solution the error norms are measured against.",
-                       {"timoshenko_beam", "bar_1d", "homogeneous_stretch", "linear_patch",
-                        "wave_front"}))
+                       exact_solution_names()))
       .optional("parameters",
                 passthrough("Parameters of the exact solution; see docs/verification.md (e.g. "
                             "length, depth, load of the beam)."))

@@ -5,6 +5,7 @@
 
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "scene/Scene.hpp"
 
@@ -20,5 +21,8 @@ struct ExactSolution {
 /// The scene's exact solution with its parameters (and the first part's material and plane
 /// assumption). Throws InputError for unknown parameters or values out of range.
 ExactSolution make_exact_solution(const Scene& scene, int dimension);
+
+/// The names make_exact_solution implements (equal to scene/ExactSolutionNames.hpp's list).
+std::vector<std::string> implemented_exact_solutions();
 
 }  // namespace efg

@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -8,7 +9,9 @@
 #include "scene/ParameterListFromYaml.hpp"
 #include "scene/SceneReader.hpp"
 #include "scene/SceneSchema.hpp"
+#include "scene/ExactSolutionNames.hpp"
 #include "scene/SchemaMarkdown.hpp"
+#include "verification/ExactSolutions.hpp"
 
 namespace efg {
 namespace {
@@ -96,3 +99,13 @@ TEST(SceneSchema, MessagesCarryFileLineAndKeyPath) {
 
 }  // namespace
 }  // namespace efg
+
+// One registry: every exact solution the schema offers is implemented, and no other
+// (wave_front used to be offered and then throw "no implementation").
+TEST(SceneSchema, ExactSolutionChoicesAreImplemented) {
+  auto offered = efg::exact_solution_names();
+  auto implemented = efg::implemented_exact_solutions();
+  std::sort(offered.begin(), offered.end());
+  std::sort(implemented.begin(), implemented.end());
+  EXPECT_EQ(offered, implemented);
+}
