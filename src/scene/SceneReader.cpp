@@ -290,7 +290,16 @@ class SceneBuilder {
     stage.end_time = st["end_time"].as<double>();
     if (st["output_interval"]) stage.output_interval = st["output_interval"].as<double>();
     stage.settings = st;
-    if (stage.driver == "implicit") check_linear_solver(st, doc, i);
+    if (stage.driver == "implicit") {
+      check_linear_solver(st, doc, i);
+      bool held = false;
+      for (const auto& bc : s_.boundary_conditions) held = held || bc.type == "displacement";
+      if (!held)
+        fail(doc["driver"], "stages[" + std::to_string(i) + "].driver",
+             "an implicit (static) stage needs displacement conditions that hold the body "
+             "against rigid-body motion; the scene has none, so the body is free and its "
+             "stiffness singular (add boundary_conditions, or use driver: explicit)");
+    }
     if (stage.driver == "explicit")
       for (std::size_t p = 0; p < s_.parts.size(); ++p)
         if (!s_.find_material(s_.parts[p].material)->density)

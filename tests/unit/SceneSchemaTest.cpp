@@ -6,10 +6,10 @@
 #include <sstream>
 
 #include "core/Errors.hpp"
+#include "scene/ExactSolutionNames.hpp"
 #include "scene/ParameterListFromYaml.hpp"
 #include "scene/SceneReader.hpp"
 #include "scene/SceneSchema.hpp"
-#include "scene/ExactSolutionNames.hpp"
 #include "scene/SchemaMarkdown.hpp"
 #include "verification/ExactSolutions.hpp"
 
@@ -23,6 +23,8 @@ parts:
   - {name: strip, blocks: [block_1], material: m}
 materials:
   - {name: m, model: linear_elastic, youngs_modulus: 100, poissons_ratio: 0.25}
+boundary_conditions:
+  - {name: clamp, type: displacement, node_set: xmin, x: 0, y: 0}
 stages:
   - name: load
     driver: implicit
