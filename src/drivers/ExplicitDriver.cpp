@@ -29,7 +29,9 @@ ExplicitDriver::ExplicitDriver(const ModelOperators& ops, const StageSpec& stage
       f_wall_old_(mass_.getMap()),
       f_int_(mass_.getMap()),
       wall_overlap_(ops.model().maps.overlap_dofs),
-      d_overlap_(ops.model().maps.overlap_dofs) {
+      d_overlap_(ops.model().maps.overlap_dofs),
+      f_support_(mass_.getMap()),
+      f_support_old_(mass_.getMap()) {
   inverse_mass_.reciprocal(mass_);
 }
 
@@ -91,9 +93,11 @@ void ExplicitDriver::report_non_finite(const RunState& state, long long step) co
 }
 
 void ExplicitDriver::account_energy(RunState& state, const Vector& delta_d) const {
-  // Trapezoidal work of the external and wall forces over the step.
+  // Trapezoidal work of the external, support and wall forces over the step (the supports of
+  // prescribed motions are external forces too).
   state.external_work +=
-      0.5 * (reproducible_dot(f_ext_old_, delta_d) + reproducible_dot(f_ext_, delta_d));
+      0.5 * (reproducible_dot(f_ext_old_, delta_d) + reproducible_dot(f_ext_, delta_d)) +
+      0.5 * (reproducible_dot(f_support_old_, delta_d) + reproducible_dot(f_support_, delta_d));
   state.wall_work +=
       0.5 * (reproducible_dot(f_wall_old_, delta_d) + reproducible_dot(f_wall_, delta_d));
 }
@@ -137,7 +141,9 @@ ExplicitSummary ExplicitDriver::run(RunState& state, const StateOutput& output) 
                          "; lower dt, or set allow_unstable_dt: true to run it anyway");
 
   state.wall_forces = accelerate(state.time, dt);
-  motion_.constrain_end(curve_factor(scene, state.time, 1.0), state.v, state.a);
+  motion_.support_force(mass_, state.a, f_support_);
+  const Vector v_start(state.v, Teuchos::Copy);
+  motion_.constrain_end(curve_factor(scene, state.time, 1.0), v_start, state.v, state.a);
   energies();
   if (!state.energy_started) {
     state.initial_energy = state.kinetic + state.internal;
@@ -170,6 +176,7 @@ ExplicitSummary ExplicitDriver::run(RunState& state, const StateOutput& output) 
     state.d.update(1.0, delta, 1.0);
     Tpetra::deep_copy(f_ext_old_, f_ext_);
     Tpetra::deep_copy(f_wall_old_, f_wall_);
+    Tpetra::deep_copy(f_support_old_, f_support_);
     // An inverted point (det F <= 0) may show on one rank only: agree on it collectively, write
     // the last good state, and name the point, step and time.
     try {
@@ -190,7 +197,8 @@ ExplicitSummary ExplicitDriver::run(RunState& state, const StateOutput& output) 
     }
     Tpetra::deep_copy(state.v, v_half);
     state.v.update(0.5 * step_dt, state.a, 1.0);
-    motion_.constrain_end(at_end, state.v, state.a);
+    motion_.support_force(mass_, state.a, f_support_);
+    motion_.constrain_end(at_end, v_half, state.v, state.a);
     state.time += step_dt;
     state.dt = step_dt;
     ++summary.steps;

@@ -50,6 +50,7 @@ class ExplicitDriver {
   PrescribedMotion motion_;
   StableTimeStep stable_;
   Vector f_ext_, f_ext_old_, f_wall_, f_wall_old_, f_int_, wall_overlap_, d_overlap_;
+  Vector f_support_, f_support_old_;  ///< forces of the prescribed motions (their work is external)
 };
 
 }  // namespace efg

@@ -26,13 +26,26 @@ void PrescribedMotion::constrain_velocity(const LoadFactor& start, const LoadFac
   }
 }
 
-void PrescribedMotion::constrain_end(const LoadFactor& end, Vector& v_end, Vector& a_end) const {
+void PrescribedMotion::constrain_end(const LoadFactor& end, const Vector& v_half, Vector& v_end,
+                                     Vector& a_end) const {
   auto v = v_end.getLocalViewHost(Tpetra::Access::ReadWrite);
   auto a = a_end.getLocalViewHost(Tpetra::Access::ReadWrite);
+  const auto rate = v_half.getLocalViewHost(Tpetra::Access::ReadOnly);
   for (const auto& c : dofs_) {
     const auto k = static_cast<std::size_t>(c.row);
     a(k, 0) = 0.0;
-    if (c.velocity) v(k, 0) = c.value * end(c.curve);
+    v(k, 0) = c.velocity ? c.value * end(c.curve) : rate(k, 0);
+  }
+}
+
+void PrescribedMotion::support_force(const Vector& mass, const Vector& a_free, Vector& R) const {
+  R.putScalar(0.0);
+  auto r = R.getLocalViewHost(Tpetra::Access::ReadWrite);
+  const auto m = mass.getLocalViewHost(Tpetra::Access::ReadOnly);
+  const auto a = a_free.getLocalViewHost(Tpetra::Access::ReadOnly);
+  for (const auto& c : dofs_) {
+    const auto k = static_cast<std::size_t>(c.row);
+    r(k, 0) = -m(k, 0) * a(k, 0);
   }
 }
 

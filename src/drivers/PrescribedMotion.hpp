@@ -24,8 +24,14 @@ class PrescribedMotion {
   /// mid-step, or the change of the prescribed displacement from step start to end over dt.
   void constrain_velocity(const LoadFactor& start, const LoadFactor& mid, const LoadFactor& end,
                           double dt, Vector& v_half) const;
-  /// Zeroes the constrained entries of an acceleration and sets the constrained velocities.
-  void constrain_end(const LoadFactor& factor_end, Vector& v, Vector& a) const;
+  /// Zeroes the constrained entries of an acceleration and sets the constrained velocities
+  /// (displacement conditions keep the rate of v_half: the free acceleration must not leak in).
+  void constrain_end(const LoadFactor& factor_end, const Vector& v_half, Vector& v,
+                     Vector& a) const;
+  /// The force the supports apply to hold the prescribed motion, R = -M a_free on the
+  /// constrained entries (a_free: the acceleration before constrain_end), 0 elsewhere. Its work
+  /// R . dd is external work: a crush driven by prescribed motion puts its energy in that way.
+  void support_force(const Vector& mass, const Vector& a_free, Vector& R) const;
 
  private:
   struct Dof {
