@@ -174,10 +174,11 @@ void ExodusWriter::write_record(double time, const std::vector<std::vector<doubl
   ++records_;
 }
 
-void ExodusWriter::close() {
+void ExodusWriter::close(bool keep_partial) {
   if (!file_) return;
   file_->close();
   file_.reset();
+  if (keep_partial) return;
   const std::string part = path_ + ".part";
   if (std::rename(part.c_str(), path_.c_str()) != 0)
     throw std::runtime_error("cannot rename '" + part + "' to '" + path_ + "'");

@@ -37,8 +37,9 @@ class ExodusWriter {
   void write_record(double time, const std::vector<std::vector<double>>& nodal,
                     const std::vector<std::vector<double>>& element,
                     const std::vector<double>& global);
-  /// Closes the file and renames it to its final path.
-  void close();
+  /// Closes the file and renames it to its final path; with `keep_partial` (a failed run) the
+  /// file stays "<path>.part" and an earlier result at <path> is left untouched.
+  void close(bool keep_partial = false);
 
   const std::string& path() const { return path_; }
   int records() const { return records_; }

@@ -53,4 +53,9 @@ void ResultsOutput::close() {
   comm_->barrier();
 }
 
+void ResultsOutput::close_partial() {
+  if (writer_) writer_->close(true);
+  comm_->barrier();
+}
+
 }  // namespace efg

@@ -27,6 +27,9 @@ class ResultsOutput {
   void write(double time, const MultiVector& nodal, const std::vector<double>& global);
   /// Collective: closes and renames the file on rank 0.
   void close();
+  /// Collective: closes the file of a failed run, which stays "<path>.part" (an earlier result at
+  /// <path> is not replaced by a failed run).
+  void close_partial();
 
  private:
   CommPtr comm_;

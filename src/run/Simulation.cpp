@@ -42,10 +42,12 @@ RunOutcome run_stages(const CommPtr& comm, const Model& model, const std::string
                        OutputLayout{columns, {}, history.names()},
                        model.scene.title.empty() ? model.scene.name : model.scene.title);
   std::unique_ptr<std::ofstream> csv;
+  std::string csv_final;
   if (!model.scene.output.history.empty() && comm->getRank() == 0) {
     const auto csv_path =
         (std::filesystem::path(path).parent_path() / model.scene.output.history).string();
-    csv = std::make_unique<std::ofstream>(csv_path);
+    csv_final = csv_path;
+    csv = std::make_unique<std::ofstream>(csv_path + ".part");  // renamed when the run succeeds
     *csv << history.csv_header() << "\n";
   }
   RunState state(model.maps.owned_dofs);
@@ -110,8 +112,12 @@ RunOutcome run_stages(const CommPtr& comm, const Model& model, const std::string
         Log::info(o.str());
       }
     } catch (const NumericalError&) {
-      output.close();  // the records up to the failure, the last good state included
-      Log::info("results up to the failure: " + path);
+      // The records up to the failure, the last good state included, stay in the .part files:
+      // a failed run never replaces an earlier result or history of the same name.
+      output.close_partial();
+      if (csv) csv->close();
+      Log::info("results up to the failure: " + path + ".part" +
+                (csv_final.empty() ? std::string() : " and " + csv_final + ".part"));
       throw;
     }
     state.time = stage.end_time;
@@ -128,6 +134,10 @@ RunOutcome run_stages(const CommPtr& comm, const Model& model, const std::string
     Log::info(o.str());
   }
   output.close();
+  if (csv) {
+    csv->close();
+    std::filesystem::rename(csv_final + ".part", csv_final);
+  }
   RunOutcome outcome;
   outcome.records = records;
   outcome.errors = errors;
