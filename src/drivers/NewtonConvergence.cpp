@@ -38,10 +38,11 @@ NOX::StatusTest::StatusType NewtonConvergence::checkStatus(const NOX::Solver::Ge
   status_ = NOX::StatusTest::Unconverged;
   // dd_k = x_k - x_{k-1}: the update of this iteration.
   const auto& previous = solver.getPreviousSolutionGroup();
-  auto dd = group.getX().clone(NOX::DeepCopy);
+  Teuchos::RCP<NOX::Abstract::Vector> dd;
   if (k == 0) {
     record_.residuals.assign(1, r);
   } else {
+    dd = group.getX().clone(NOX::DeepCopy);
     dd->update(-1.0, previous.getX(), 1.0);
     record_.residuals.push_back(r);
     record_linear_solve(solver, *dd);

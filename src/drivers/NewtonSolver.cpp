@@ -121,7 +121,7 @@ NewtonSolver::NewtonSolver(StaticProblem& problem, const YAML::Node& stage, cons
                              stage["direct_limit"] ? stage["direct_limit"].as<std::int64_t>() : 0,
                              from_stage(stage, "linear_solver", file, where),
                              from_stage(stage, "preconditioner", file, where), dofs,
-                             model.mesh.dimension, ranks, file + ": " + where);
+                             model.mesh.dimension, ranks);
   if (stage["residual_tolerance"]) tolerance_ = stage["residual_tolerance"].as<double>();
   try {
     nox_params_ = nonlinear_parameters(from_stage(stage, "nonlinear_solver", file, where));
@@ -136,14 +136,8 @@ NewtonSolver::NewtonSolver(StaticProblem& problem, const YAML::Node& stage, cons
   }
   Teuchos::RCP<Tpetra::MultiVector<>> modes, coordinates;
   if (plan_.preconditioner == LinearSolverPlan::Preconditioner::multigrid) {
-    const int dim = model.mesh.dimension;
-    std::vector<double> center(static_cast<std::size_t>(dim), 0.0);
-    const auto n = model.mesh.node_count();
-    for (std::size_t i = 0; i < n; ++i)
-      for (std::size_t c = 0; c < center.size(); ++c)
-        center[c] += model.mesh.coordinates[i * center.size() + c] / static_cast<double>(n);
-    modes = rigid_body_modes(model.maps, dim, model.mesh.coordinates, center);
-    coordinates = particle_coordinates(model.maps, dim, model.mesh.coordinates);
+    modes = rigid_body_modes(model.maps, model.mesh.dimension, model.mesh.coordinates);
+    coordinates = particle_coordinates(model.maps, model.mesh.dimension, model.mesh.coordinates);
   }
   preconditioner_ = make_matrix_preconditioner(plan_, problem.owned_dofs(), modes, coordinates);
   Vector zero(problem.owned_dofs());
@@ -199,8 +193,8 @@ NewtonResult NewtonSolver::solve(Vector& d) {
   result.iterations = solver->getNumIterations();
   result.residual_history = result.record.residuals;
   for (int its : result.record.linear_iterations) result.linear_iterations += its;
+  result.linear_failure = result.linear_failure || result.record.linear_failure;
   if (result.record.linear_failure) {
-    result.linear_failure = true;
     result.failure = result.record.reason + "; " + linear_failure_advice(plan_);
   } else if (!result.converged && !model_->failure().empty()) {
     result.failure = model_->failure();

@@ -48,9 +48,8 @@ class DirectPreconditioner : public MatrixPreconditioner {
 
   void compute(const Teuchos::RCP<const Matrix>& K) override {
     Teuchos::Time clock("direct factorization", true);
-    const auto& map = *K->getRowMap();
     if (root_.is_null()) {
-      root_ = root_map(map);
+      root_ = root_map(*K->getRowMap());
       gather_ = Teuchos::rcp(new Tpetra::Import<>(K->getRowMap(), root_));
       scatter_ = Teuchos::rcp(new Tpetra::Import<>(root_, K->getRowMap()));
     }
@@ -64,17 +63,13 @@ class DirectPreconditioner : public MatrixPreconditioner {
     if (root_->getComm()->getRank() == 0) {
       try {
         factor(gathered);
-      } catch (const InputError&) {
-        throw;
       } catch (const std::exception& e) {
         failed = 1;
         why = e.what();
       }
     }
-    int any = 0;
     Teuchos::broadcast(*root_->getComm(), 0, Teuchos::outArg(failed));
-    any = failed;
-    if (any)
+    if (failed)
       throw NumericalError(
           "the direct solver (Amesos2 " + solver_name_ +
           ") could not factor the Jacobian: it is singular. Candidates: a body or part that "
@@ -131,8 +126,6 @@ class DirectPreconditioner : public MatrixPreconditioner {
                               serial_matrix_->getNodeNumEntries() == serial->getNodeNumEntries();
     serial_matrix_ = serial;
     if (solver_.is_null()) {
-      if (!Amesos2::query(solver_name_))
-        throw InputError("preconditioner.solver: Amesos2 has no solver '" + solver_name_ + "'");
       solver_ = Amesos2::create<Matrix, MultiVector>(solver_name_, serial_matrix_);
       solver_->symbolicFactorization();
     } else {

@@ -35,12 +35,11 @@ struct LinearSolverPlan {
 std::int64_t default_direct_limit(int dimension);
 
 /// `solver` is the stage's `solver` key (auto, direct, iterative), `direct_limit` its key of that
-/// name (<= 0: the default), `linear_solver` and `preconditioner` its pass-through maps. Throws
-/// InputError for contradicting choices.
+/// name (<= 0: the default), `linear_solver` and `preconditioner` its pass-through maps, as the
+/// scene reader checked them.
 LinearSolverPlan plan_linear_solver(const std::string& solver, std::int64_t direct_limit,
                                     const Teuchos::ParameterList& linear_solver,
                                     const Teuchos::ParameterList& preconditioner,
-                                    std::int64_t global_dofs, int dimension, int ranks,
-                                    const std::string& where);
+                                    std::int64_t global_dofs, int dimension, int ranks);
 
 }  // namespace efg

@@ -9,8 +9,7 @@ int rigid_body_mode_count(int dimension) {
 }
 
 Teuchos::RCP<Tpetra::MultiVector<>> rigid_body_modes(const DofMaps& maps, int dimension,
-                                                     const std::vector<double>& coordinates,
-                                                     const std::vector<double>& center) {
+                                                     const std::vector<double>& coordinates) {
   if (maps.dofs_per_node != dimension)
     throw std::logic_error("rigid_body_modes: one displacement dof per dimension expected");
   const auto modes = rigid_body_mode_count(dimension);
@@ -19,6 +18,11 @@ Teuchos::RCP<Tpetra::MultiVector<>> rigid_body_modes(const DofMaps& maps, int di
   auto view = z->getLocalViewHost(Tpetra::Access::ReadWrite);
   const auto nodes = maps.owned_nodes->getNodeElementList();
   const auto dim = static_cast<std::size_t>(dimension);
+  double center[3] = {0, 0, 0};
+  const std::size_t count = coordinates.size() / dim;
+  for (std::size_t n = 0; n < count; ++n)
+    for (std::size_t c = 0; c < dim; ++c)
+      center[c] += coordinates[n * dim + c] / static_cast<double>(count);
   for (std::size_t i = 0; i < static_cast<std::size_t>(nodes.size()); ++i) {
     const auto n = static_cast<std::size_t>(nodes[i]);
     double x[3] = {0, 0, 0};

@@ -15,11 +15,11 @@
 namespace efg {
 
 /// Columns: dim translations, then the rotations (1 in 2D about z; 3 in 3D about x, y, z), all
-/// about `center` so that the columns are well scaled. `coordinates` holds every mesh node (the
-/// owned ones are looked up by global id in maps.owned_nodes); dof = node * dim + component.
+/// about the centroid of `coordinates` so that the columns are well scaled. `coordinates` holds
+/// every mesh node (the owned ones are looked up by global id in maps.owned_nodes; the same on
+/// every rank); dof = node * dim + component.
 Teuchos::RCP<Tpetra::MultiVector<>> rigid_body_modes(const DofMaps& maps, int dimension,
-                                                     const std::vector<double>& coordinates,
-                                                     const std::vector<double>& center);
+                                                     const std::vector<double>& coordinates);
 
 /// Owned particle coordinates on maps.owned_nodes, one column per dimension (for multigrid's
 /// distance-based aggregation).
