@@ -8,6 +8,7 @@
 #include "io/ExodusWriter.hpp"
 #include "mesh/NodalVolume.hpp"
 #include "run/Model.hpp"
+#include "run/RunChecks.hpp"
 #include "scene/SceneEcho.hpp"
 #include "scene/SceneSchema.hpp"
 #include "scene/SchemaMarkdown.hpp"
@@ -32,6 +33,7 @@ std::string mesh_summary(const BackgroundMesh& mesh) {
 void check_command(const CommPtr& comm, const CommandLine& cl) {
   const auto scene = load_scene(comm, cl.scene);
   const auto mesh = load_mesh(comm, scene);
+  check_run_inputs(comm, scene, mesh, cl.output_dir);
   YAML::Emitter out;
   out << compact_for_echo(scene.resolved);
   Log::info("# " + cl.scene + ": valid. Resolved scene (defaults filled in):");

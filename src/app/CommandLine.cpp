@@ -14,7 +14,8 @@ std::string help_text() {
 
 Usage:
   efg run SCENE.yaml [-o OUTDIR]   run a scene; results go to OUTDIR (default: the current folder)
-  efg check SCENE.yaml             validate the scene and its mesh, print the resolved scene
+  efg check SCENE.yaml [-o OUTDIR] validate the scene, its mesh and its output paths (nothing is
+                                   written), print the resolved scene
   efg mesh SCENE.yaml OUT.exo      write the scene's background mesh (generated or read) as Exodus II
   efg study SCENE.yaml [-o OUTDIR] [--levels N] [--factor F] [--sweep KEY=V1,V2 ...]
                                    refinement series (and sweeps of scene keys, e.g.
@@ -94,8 +95,8 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
         usage_error("--threads expects a positive number of threads per rank, found '" + value +
                     "'");
     } else if (a == "-o" || a == "--output") {
-      if (cl.command != "run" && cl.command != "study")
-        usage_error("option " + a + " belongs to 'efg run' and 'efg study'");
+      if (cl.command != "run" && cl.command != "study" && cl.command != "check")
+        usage_error("option " + a + " belongs to 'efg run', 'efg check' and 'efg study'");
       if (i + 1 >= args.size()) usage_error("option " + a + " needs a folder");
       cl.output_dir = args[++i];
     } else if (!a.empty() && a[0] == '-') {

@@ -14,6 +14,8 @@
 #include "core/Threads.hpp"
 #include "core/Version.hpp"
 #include "run/Model.hpp"
+#include "run/OutputPaths.hpp"
+#include "run/RunChecks.hpp"
 #include "run/Simulation.hpp"
 #include "scene/SceneEcho.hpp"
 
@@ -61,12 +63,12 @@ void log_discretization(const Model& model, const CommPtr& comm) {
 void run_command(const CommPtr& comm, const CommandLine& cl) {
   const auto started = std::chrono::steady_clock::now();
   const Model model = build_model(comm, cl.scene);
+  check_run_inputs(comm, model.scene, model.mesh, cl.output_dir);
   log_model(model, comm);
   for (const auto& w : thread_warnings(cl.threads)) Log::warning(w);
   log_discretization(model, comm);
-  const std::filesystem::path path = std::filesystem::path(cl.output_dir) / model.scene.output.file;
-  if (comm->getRank() == 0 && path.has_parent_path())
-    std::filesystem::create_directories(path.parent_path());
+  const std::filesystem::path path =
+      prepare_output_paths(comm, model.scene, cl.output_dir, /*create=*/true);
   const double setup =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   const auto outcome = run_stages(comm, model, path.string(), setup);

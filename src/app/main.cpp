@@ -4,6 +4,7 @@
 
 #include <cstdlib>
 #include <iostream>
+#include <new>
 #include <string>
 #include <vector>
 
@@ -54,6 +55,10 @@ Outcome dispatch(const efg::CommPtr& comm, const std::vector<std::string>& args)
     return failed(ExitCode::verification, "efg: verification failed: ", e.what());
   } catch (const efg::NumericalError& e) {
     return failed(ExitCode::numerical, "efg: numerical failure: ", e.what());
+  } catch (const std::bad_alloc&) {
+    return failed(ExitCode::other, "efg: error: ",
+                  "out of memory: the model needs more memory than this process can have "
+                  "(coarsen the mesh, or run on more ranks or machines)");
   } catch (const std::exception& e) {
     return failed(ExitCode::other, "efg: error: ", e.what());
   }

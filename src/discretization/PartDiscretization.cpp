@@ -33,18 +33,4 @@ PartDiscretization discretize_part(const BackgroundMesh& mesh, const PartSpec& p
   return d;
 }
 
-void check_parts_do_not_share_nodes(const BackgroundMesh& mesh,
-                                    const std::vector<PartSpec>& parts) {
-  std::vector<int> part_of(mesh.node_count(), -1);
-  for (std::size_t p = 0; p < parts.size(); ++p)
-    for (auto node : nodes_of_blocks(mesh, parts[p].blocks)) {
-      auto& owner = part_of[static_cast<std::size_t>(node)];
-      if (owner >= 0 && owner != static_cast<int>(p))
-        throw InputError("parts '" + parts[static_cast<std::size_t>(owner)].name + "' and '" +
-                         parts[p].name + "' share mesh node " + std::to_string(node + 1) +
-                         "; meshfree parts must not share nodes (give each part its own nodes)");
-      owner = static_cast<int>(p);
-    }
-}
-
 }  // namespace efg

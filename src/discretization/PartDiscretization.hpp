@@ -24,8 +24,4 @@ struct PartDiscretization {
 PartDiscretization discretize_part(const BackgroundMesh& mesh, const PartSpec& part,
                                    const NodePartition& partition);
 
-/// Throws InputError when a mesh node belongs to the blocks of two parts (meshfree parts do not
-/// share particles).
-void check_parts_do_not_share_nodes(const BackgroundMesh& mesh, const std::vector<PartSpec>& parts);
-
 }  // namespace efg

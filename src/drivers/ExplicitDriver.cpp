@@ -117,7 +117,7 @@ void ExplicitDriver::account_energy(RunState& state, const Vector& delta_d) cons
       0.5 * (reproducible_dot(f_wall_old_, delta_d) + reproducible_dot(f_wall_, delta_d));
 }
 
-ExplicitSummary ExplicitDriver::run(RunState& state, const StateOutput& output) {
+ExplicitSummary ExplicitDriver::run(RunState& state, const StateOutput& output, bool record_start) {
   const auto& scene = ops_.model().scene;
   const auto& comm = *mass_.getMap()->getComm();
   const double start = state.time, end = stage_.end_time, span = end - start;
@@ -166,6 +166,7 @@ ExplicitSummary ExplicitDriver::run(RunState& state, const StateOutput& output) 
   }
   state.dt = dt;
   refuse_endless(span, dt, dt_crit);
+  if (record_start) output(state);
 
   Progress progress("stage '" + stage_.name + "'", span);
   ExplicitSummary summary;

@@ -31,8 +31,9 @@ class ExplicitDriver {
  public:
   ExplicitDriver(const ModelOperators& ops, const StageSpec& stage);
 
-  /// Advances the state from state.time to the stage's end time.
-  ExplicitSummary run(RunState& state, const StateOutput& output);
+  /// Advances the state from state.time to the stage's end time. With `record_start`, the start
+  /// state is written first, once its energies are known (a run's first record).
+  ExplicitSummary run(RunState& state, const StateOutput& output, bool record_start = false);
 
   const Vector& mass() const { return mass_; }
   /// a = M^-1 (f_ext(t) - f_int(d) + f_wall(d)); returns the wall forces. Exposed for tests.

@@ -5,6 +5,9 @@
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
+#include <string>
+
+#include "core/Errors.hpp"
 
 namespace efg {
 namespace {
@@ -18,10 +21,18 @@ struct NameArray {
   std::vector<char*> pointers;
 };
 
-void require_finite(const std::vector<double>& values, const std::string& name) {
-  for (double v : values)
-    if (!std::isfinite(v))
-      throw std::logic_error("refusing to write a non-finite value to output field '" + name + "'");
+// A non-finite result is numerical trouble (an overflowed state), never written silently.
+void require_finite(const std::vector<double>& values, const std::string& name, double time,
+                    const char* index_kind) {
+  for (std::size_t i = 0; i < values.size(); ++i)
+    if (!std::isfinite(values[i]))
+      throw NumericalError("the results hold a non-finite value (" + std::to_string(values[i]) +
+                           ") in output field '" + name + "'" +
+                           (index_kind
+                                ? std::string(" at ") + index_kind + " " + std::to_string(i + 1)
+                                : std::string()) +
+                           ", t = " + std::to_string(time) +
+                           ": the state overflowed or became undefined; nothing of it is written");
 }
 
 }  // namespace
@@ -148,13 +159,13 @@ void ExodusWriter::write_record(double time, const std::vector<std::vector<doubl
   file_->check(ex_put_time(id, step, &time), "writing a time value");
   for (std::size_t v = 0; v < nodal.size(); ++v) {
     if (nodal[v].size() != nodes_) throw std::logic_error("nodal field of wrong length");
-    require_finite(nodal[v], layout_.nodal[v]);
+    require_finite(nodal[v], layout_.nodal[v], time, "node");
     file_->check(ex_put_var(id, step, EX_NODAL, static_cast<int>(v + 1), 1,
                             static_cast<std::int64_t>(nodes_), nodal[v].data()),
                  "writing a nodal variable");
   }
   for (std::size_t v = 0; v < element.size(); ++v) {
-    require_finite(element[v], layout_.element[v]);
+    require_finite(element[v], layout_.element[v], time, "cell");
     std::size_t offset = 0;
     for (const auto& [block_id, count] : blocks_) {
       if (offset + count > element[v].size()) throw std::logic_error("element field too short");
@@ -165,7 +176,8 @@ void ExodusWriter::write_record(double time, const std::vector<std::vector<doubl
     }
   }
   if (!global.empty()) {
-    require_finite(global, "global");
+    for (std::size_t g = 0; g < global.size(); ++g)
+      require_finite({global[g]}, layout_.global[g], time, nullptr);
     file_->check(ex_put_var(id, step, EX_GLOBAL, 1, 0, static_cast<std::int64_t>(global.size()),
                             global.data()),
                  "writing global variables");

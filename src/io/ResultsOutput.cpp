@@ -5,6 +5,8 @@
 
 #include <stdexcept>
 
+#include "parallel/Collective.hpp"
+
 namespace efg {
 
 ResultsOutput::ResultsOutput(const CommPtr& comm, const std::string& path,
@@ -40,22 +42,27 @@ void ResultsOutput::write(double time, const MultiVector& nodal,
                           const std::vector<double>& global) {
   MultiVector gathered(root_map_, nodal.getNumVectors());
   gathered.doImport(nodal, *gather_, Tpetra::INSERT);
-  if (comm_->getRank() != 0) return;
-  std::vector<std::vector<double>> columns(nodal.getNumVectors(), std::vector<double>(nodes_));
-  auto view = gathered.getLocalViewHost(Tpetra::Access::ReadOnly);
-  for (std::size_t c = 0; c < columns.size(); ++c)
-    for (std::size_t n = 0; n < nodes_; ++n) columns[c][n] = view(n, c);
-  writer_->write_record(time, columns, {}, global);
+  // Rank 0 writes; a refused record (a non-finite value) or a failed write is learned by all.
+  run_collectively(comm_, [&] {
+    if (comm_->getRank() != 0) return;
+    std::vector<std::vector<double>> columns(nodal.getNumVectors(), std::vector<double>(nodes_));
+    auto view = gathered.getLocalViewHost(Tpetra::Access::ReadOnly);
+    for (std::size_t c = 0; c < columns.size(); ++c)
+      for (std::size_t n = 0; n < nodes_; ++n) columns[c][n] = view(n, c);
+    writer_->write_record(time, columns, {}, global);
+  });
 }
 
 void ResultsOutput::close() {
-  if (writer_) writer_->close();
-  comm_->barrier();
+  run_collectively(comm_, [&] {
+    if (writer_) writer_->close();
+  });
 }
 
 void ResultsOutput::close_partial() {
-  if (writer_) writer_->close(true);
-  comm_->barrier();
+  run_collectively(comm_, [&] {
+    if (writer_) writer_->close(true);
+  });
 }
 
 }  // namespace efg

@@ -86,6 +86,16 @@ BackgroundMesh generate_mesh(const GeneratorSpec& s) {
     lat.n[du] = s.cells[du] + 1;
   }
 
+  // A mesh this generator cannot hold is bad input, not a bad_alloc: efg indexes particles with
+  // 32-bit ints, and each particle of an EFG model needs a few kilobytes.
+  const double count = static_cast<double>(lat.n[0]) * lat.n[1] * lat.n[2];
+  if (count > kMaxGeneratedNodes) {
+    std::ostringstream o;
+    o << "mesh generator: " << describe(s) << " has " << count << " nodes; at most "
+      << kMaxGeneratedNodes << " are supported (lower cells)";
+    throw InputError(o.str());
+  }
+
   BackgroundMesh mesh;
   mesh.dimension = dim;
   mesh.source = "generated " + describe(s);

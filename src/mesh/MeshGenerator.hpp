@@ -25,6 +25,9 @@ struct GeneratorSpec {
 
 /// Builds the mesh. Node sets and side sets are named xmin, xmax, ymin, ymax (zmin, zmax in 3D);
 /// node set "all" holds every node. Throws InputError on an invalid spec.
+/// Most nodes a generated mesh may have: 3 dofs per node stay within 32-bit dof indices.
+constexpr double kMaxGeneratedNodes = 2e8;
+
 BackgroundMesh generate_mesh(const GeneratorSpec& spec);
 
 /// A one-line description ("box 10x4x4 hex8 on [0,10]x[0,1]x[0,1], perturbation 0.2 seed 7").

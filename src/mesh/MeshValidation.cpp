@@ -27,6 +27,16 @@ double bounding_box_measure(int dim, const std::vector<double>& x) {
   return measure;
 }
 
+template <class Named>
+void require_unique_names(const BackgroundMesh& mesh, const std::vector<Named>& items,
+                          const char* what) {
+  for (std::size_t i = 0; i < items.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      if (items[i].name == items[j].name)
+        fail(mesh, "has two " + std::string(what) + " named '" + items[i].name +
+                       "'; expected unique names (the scene refers to them by name)");
+}
+
 }  // namespace
 
 void validate_mesh(const BackgroundMesh& mesh) {
@@ -38,6 +48,11 @@ void validate_mesh(const BackgroundMesh& mesh) {
   if (mesh.blocks.empty()) fail(mesh, "has no element blocks");
   for (double x : mesh.coordinates)
     if (!std::isfinite(x)) fail(mesh, "has a non-finite nodal coordinate");
+
+  // Scenes refer to blocks and sets by name: two of one kind with the same name are ambiguous.
+  require_unique_names(mesh, mesh.blocks, "element blocks");
+  require_unique_names(mesh, mesh.node_sets, "node sets");
+  require_unique_names(mesh, mesh.side_sets, "side sets");
 
   for (const auto& block : mesh.blocks) {
     if (cell_dimension(block.type) != mesh.dimension)

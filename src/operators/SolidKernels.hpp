@@ -211,4 +211,26 @@ struct PointEnergy {
   }
 };
 
+/// Kinematic measures of point q for the small-strain validity check: det(I + H) (<= 0 means
+/// particles passed through each other) and the strain magnitude |sym H| (Frobenius norm).
+template <int Dim, class DisplacementView>
+struct PointKinematics {
+  DevicePoints p;
+  DisplacementView u;
+  DeviceView<double**> out;  // points x 2
+
+  KOKKOS_INLINE_FUNCTION void operator()(const int q) const {
+    double H[Dim][Dim], F[Dim][Dim], ee = 0;
+    displacement_gradient<Dim>(p, u, q, H);
+    for (int i = 0; i < Dim; ++i)
+      for (int j = 0; j < Dim; ++j) {
+        F[i][j] = H[i][j] + (i == j ? 1.0 : 0.0);
+        const double e = 0.5 * (H[i][j] + H[j][i]);
+        ee += e * e;
+      }
+    out(q, 0) = physics::determinant<Dim>(F);
+    out(q, 1) = sqrt(ee);
+  }
+};
+
 }  // namespace efg

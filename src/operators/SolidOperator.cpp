@@ -2,6 +2,7 @@
 
 #include <Teuchos_TimeMonitor.hpp>
 
+#include <algorithm>
 #include <sstream>
 #include <type_traits>
 
@@ -94,9 +95,8 @@ void SolidOperator::add_point_couplings(CouplingGraph& graph) const {
   }
 }
 
-void SolidOperator::report_inversion(const PartData& part, int point) const {
+std::string SolidOperator::point_location(const PartData& part, int point) const {
   std::ostringstream o;
-  o << "part '" << part.name << "': det F <= 0 (inverted material) at ";
   if (part.node[static_cast<std::size_t>(point)] >= 0)
     o << "the integration point of particle " << part.node[static_cast<std::size_t>(point)] + 1;
   else
@@ -105,7 +105,12 @@ void SolidOperator::report_inversion(const PartData& part, int point) const {
   for (int d = 0; d < dim_; ++d)
     o << (d ? ", " : "") << part.x[static_cast<std::size_t>(point * dim_ + d)];
   o << ")";
-  throw NumericalError(o.str());
+  return o.str();
+}
+
+void SolidOperator::report_inversion(const PartData& part, int point) const {
+  throw NumericalError("part '" + part.name + "': det F <= 0 (inverted material) at " +
+                       point_location(part, point));
 }
 
 template <class Pass1, class Gather>
@@ -174,6 +179,36 @@ void SolidOperator::add_tangent(const Vector& d_overlap, FEMatrix& K) const {
         using Kernel = NodalTangentKernel<decltype(dim)::value, decltype(local)>;
         Kokkos::parallel_for("efg::tangent", nodes, Kernel{p.device, p.tangent, local});
       });
+}
+
+double SolidOperator::check_small_strain(const Vector& d_overlap, double time) const {
+  const auto u = column(d_overlap);
+  double largest = 0;
+  for (const auto& p : parts_) {
+    if (p.device.material.kind != physics::MaterialKind::linear_elastic) continue;
+    DeviceView<double**> out("efg::kinematics", p.points, 2);
+    const auto points = Kokkos::RangePolicy<ExecSpace>(0, static_cast<int>(p.points));
+    if (dim_ == 2)
+      Kokkos::parallel_for("efg::kinematics", points,
+                           PointKinematics<2, decltype(u)>{p.device, u, out});
+    else
+      Kokkos::parallel_for("efg::kinematics", points,
+                           PointKinematics<3, decltype(u)>{p.device, u, out});
+    const auto host = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), out);
+    for (std::size_t q = 0; q < p.points; ++q) {
+      if (!(host(q, 0) > 0)) {
+        std::ostringstream o;
+        o << "part '" << p.name
+          << "': particles passed through each other: det(I + grad u) = " << host(q, 0)
+          << " <= 0 at " << point_location(p, static_cast<int>(q)) << ", t = " << time
+          << "; a small-strain formulation cannot represent this motion (use model neo_hookean "
+             "with formulation total_lagrangian)";
+        throw NumericalError(o.str());
+      }
+      largest = std::max(largest, host(q, 1));
+    }
+  }
+  return largest;
 }
 
 double SolidOperator::strain_energy(const Vector& d_overlap) const {

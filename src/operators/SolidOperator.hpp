@@ -34,6 +34,10 @@ class SolidOperator {
   void add_internal_force(const Vector& d_overlap, Vector& f_overlap) const;
   /// Adds K(d) to a matrix in assembly mode (overlap rows, overlap-dof columns).
   void add_tangent(const Vector& d_overlap, FEMatrix& K) const;
+  /// The small-strain validity check of this rank's small-strain points: throws NumericalError
+  /// naming the point when det(I + grad u) <= 0 (particles passed through each other, which a
+  /// small-strain formulation cannot represent) at `time`; returns the largest |sym H|.
+  double check_small_strain(const Vector& d_overlap, double time) const;
   /// Strain energy of this rank's points (sum over ranks for the total).
   double strain_energy(const Vector& d_overlap) const;
 
@@ -56,6 +60,7 @@ class SolidOperator {
     std::vector<LocalIndex> node;  // the particle of each point (SCNI, nodal), -1 for Gauss
   };
   void report_inversion(const PartData& part, int point) const;
+  std::string point_location(const PartData& part, int point) const;
   /// For every part: pass1(dimension tag, point policy, part, inverted), inverted points
   /// reported, then gather(dimension tag, node policy, part).
   template <class Pass1, class Gather>

@@ -65,7 +65,6 @@ Model build_model(const CommPtr& comm, Scene scene) {
     model.partition = partition_nodes(comm, model.mesh);
   }
   run_collectively(comm, [&] {
-    check_parts_do_not_share_nodes(model.mesh, model.scene.parts);
     for (const auto& part : model.scene.parts)
       model.parts.push_back(discretize_part(model.mesh, part, model.partition));
   });

@@ -12,23 +12,27 @@ std::string short_name(const std::string& prefix, const std::string& name,
 }
 }  // namespace
 
-RunHistory::RunHistory(const Model& model) : model_(model) {
-  names_ = {"time_step", "kinetic_energy", "internal_energy",      "external_work",
-            "wall_work", "total_energy",   "energy_balance_error", "strain_energy"};
+std::vector<std::string> history_names(const Scene& scene, int dimension) {
+  std::vector<std::string> names = {
+      "time_step", "kinetic_energy", "internal_energy",      "external_work",
+      "wall_work", "total_energy",   "energy_balance_error", "strain_energy"};
   const std::string axes = "xyz";
-  const auto dim = static_cast<std::size_t>(model.mesh.dimension);
-  for (const auto& w : model.scene.rigid_walls)
-    names_.push_back(short_name("wall_", w.name, "_force"));
-  for (const auto& bc : model.scene.boundary_conditions)
+  const auto dim = static_cast<std::size_t>(dimension);
+  for (const auto& w : scene.rigid_walls) names.push_back(short_name("wall_", w.name, "_force"));
+  for (const auto& bc : scene.boundary_conditions)
     for (std::size_t d = 0; d < dim; ++d)
-      names_.push_back(short_name("R_", bc.name, std::string("_") + axes[d]));
-  for (const auto& set : model.scene.output.history_node_sets) {
+      names.push_back(short_name("R_", bc.name, std::string("_") + axes[d]));
+  for (const auto& set : scene.output.history_node_sets) {
     for (std::size_t d = 0; d < dim; ++d)
-      names_.push_back(short_name("u_", set, std::string("_") + axes[d]));
+      names.push_back(short_name("u_", set, std::string("_") + axes[d]));
     for (std::size_t d = 0; d < dim; ++d)
-      names_.push_back(short_name("v_", set, std::string("_") + axes[d]));
+      names.push_back(short_name("v_", set, std::string("_") + axes[d]));
   }
+  return names;
 }
+
+RunHistory::RunHistory(const Model& model)
+    : model_(model), names_(history_names(model.scene, model.mesh.dimension)) {}
 
 std::string RunHistory::csv_header() const {
   std::string header = "time";

@@ -12,6 +12,9 @@
 
 namespace efg {
 
+/// The global quantity names a scene's records carry, in record order (at most 32 characters).
+std::vector<std::string> history_names(const Scene& scene, int dimension);
+
 class RunHistory {
  public:
   explicit RunHistory(const Model& model);

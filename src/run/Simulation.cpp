@@ -6,6 +6,7 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iomanip>
 #include <memory>
 #include <optional>
@@ -24,6 +25,10 @@
 #include "verification/ErrorNorms.hpp"
 
 namespace efg {
+namespace {
+/// Strain magnitude |sym grad u| beyond which a small-strain part is warned about.
+constexpr double kSmallStrainLimit = 0.2;
+}  // namespace
 
 RunOutcome run_stages(const CommPtr& comm, const Model& model, const std::string& path,
                       double setup_seconds) {
@@ -57,9 +62,26 @@ RunOutcome run_stages(const CommPtr& comm, const Model& model, const std::string
   int records = 0;
   std::vector<double> last_globals;
 
+  // Small-strain parts: particles passing through each other stop the run before the record is
+  // written; strains beyond what the formulation represents are announced once.
+  bool strain_warned = false;
+  auto check_kinematics = [&](double time) {
+    double mine = 0, largest = 0;
+    run_collectively(comm, [&] { mine = ops->solid().check_small_strain(d_overlap, time); });
+    Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, mine, Teuchos::outArg(largest));
+    if (largest > kSmallStrainLimit && !strain_warned) {
+      strain_warned = true;
+      Log::warning("strains of " + std::to_string(100 * largest) + " % at t = " +
+                   std::to_string(time) + " in a small-strain (linear_elastic) part: beyond " +
+                   std::to_string(static_cast<int>(100 * kSmallStrainLimit)) +
+                   " % its results are no longer a good approximation; use model neo_hookean "
+                   "with formulation total_lagrangian");
+    }
+  };
   auto write = [&](const RunState& s) {
     Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewCounter("efg: output"));
     ops->to_overlap(s.d, d_overlap);
+    check_kinematics(s.time);
     ops->to_overlap(s.v, v_overlap);
     ops->to_overlap(s.a, a_overlap);
     const auto reactions = problem ? problem->reactions(s.d) : std::vector<std::array<double, 3>>();
@@ -81,13 +103,36 @@ RunOutcome run_stages(const CommPtr& comm, const Model& model, const std::string
     ++records;
   };
 
-  write(state);
   const double first_end = model.scene.stages.empty() ? 1.0 : model.scene.stages.front().end_time;
   std::vector<ImplicitStageReport> implicit_reports;
+  auto keep_partial = [&] {
+    // The records up to the failure, the last good state included, stay in the .part files:
+    // a failed run never replaces an earlier result or history of the same name.
+    output.close_partial();
+    if (csv) csv->close();
+    Log::info("results up to the failure: " + path + ".part" +
+              (csv_final.empty() ? std::string() : " and " + csv_final + ".part"));
+  };
+  auto guarded = [&](const std::function<void()>& work) {
+    try {
+      work();
+    } catch (const NumericalError&) {
+      keep_partial();
+      throw;
+    } catch (const PeerFailure&) {  // the failing rank holds the message; all keep the .part
+      keep_partial();
+      throw;
+    }
+  };
+  // The first record: an explicit first stage writes it itself, once the start energies are
+  // known (written here it would show a kinetic energy of 0 with a nonzero initial velocity).
+  const bool explicit_first =
+      !model.scene.stages.empty() && model.scene.stages.front().driver == "explicit";
+  if (!explicit_first) guarded([&] { write(state); });
   for (const auto& stage : model.scene.stages) {
     Log::info("stage '" + stage.name + "' (" + stage.driver +
               "), t = " + std::to_string(state.time) + " to " + std::to_string(stage.end_time));
-    try {
+    guarded([&] {
       if (stage.driver == "implicit") {
         state.v.putScalar(0.0);
         state.a.putScalar(0.0);
@@ -104,22 +149,14 @@ RunOutcome run_stages(const CommPtr& comm, const Model& model, const std::string
       } else {
         std::unique_ptr<ExplicitDriver> driver;
         run_collectively(comm, [&] { driver = std::make_unique<ExplicitDriver>(*ops, stage); });
-        const auto s = driver->run(state, write);
+        const auto s = driver->run(state, write, &stage == &model.scene.stages.front());
         std::ostringstream o;
         o << "stage '" << stage.name << "' done: " << s.steps << " steps, dt " << s.smallest_dt
           << " to " << s.largest_dt << ", worst energy balance error "
           << 100 * s.worst_balance_error << " %";
         Log::info(o.str());
       }
-    } catch (const NumericalError&) {
-      // The records up to the failure, the last good state included, stay in the .part files:
-      // a failed run never replaces an earlier result or history of the same name.
-      output.close_partial();
-      if (csv) csv->close();
-      Log::info("results up to the failure: " + path + ".part" +
-                (csv_final.empty() ? std::string() : " and " + csv_final + ".part"));
-      throw;
-    }
+    });
     state.time = stage.end_time;
   }
   std::optional<ErrorNorms> errors;

@@ -1,5 +1,6 @@
 #include "scene/SceneMeshChecks.hpp"
 
+#include <algorithm>
 #include <map>
 
 #include "core/Errors.hpp"
@@ -78,6 +79,7 @@ class Checker {
       const auto path = "boundary_conditions[" + std::to_string(i) + "]";
       require_name(d["boundary_conditions"][i]["node_set"], path + ".node_set", bc.node_set,
                    "node set", node_sets);
+      require_nodes(d["boundary_conditions"][i]["node_set"], path + ".node_set", bc.node_set);
       if (m_.dimension == 2 && (bc.components[2] || bc.from_exact[2]))
         fail(bc.components[2] ? d["boundary_conditions"][i]["z"]
                               : d["boundary_conditions"][i]["from_exact_solution"],
@@ -89,8 +91,10 @@ class Checker {
       const auto& ld = d["loads"][i];
       if (load.type == "traction" || load.type == "pressure")
         require_name(ld["side_set"], path + ".side_set", load.set, "side set", side_sets);
-      if (load.type == "nodal_force")
+      if (load.type == "nodal_force") {
         require_name(ld["node_set"], path + ".node_set", load.set, "node set", node_sets);
+        require_nodes(ld["node_set"], path + ".node_set", load.set);
+      }
       if (load.type != "pressure" && !load.from_exact)
         require_dimension(ld["value"], path + ".value", load.value.size());
     }
@@ -106,6 +110,8 @@ class Checker {
       if (!w.node_set.empty())
         require_name(wd["node_set"], path + ".node_set", w.node_set, "node set", node_sets);
     }
+    check_conflicting_conditions();
+    check_parts_do_not_share_nodes();
     for (std::size_t i = 0; i < s_.output.history_node_sets.size(); ++i)
       require_name(d["output"]["history_node_sets"][i],
                    "output.history_node_sets[" + std::to_string(i) + "]",
@@ -115,11 +121,85 @@ class Checker {
       const auto& ic = d["initial_conditions"][i];
       require_name(ic["node_set"], path + ".node_set", s_.initial_conditions[i].node_set,
                    "node set", node_sets);
+      require_nodes(ic["node_set"], path + ".node_set", s_.initial_conditions[i].node_set);
       require_dimension(ic["value"], path + ".value", s_.initial_conditions[i].value.size());
     }
   }
 
  private:
+  // Each part discretizes its own particles (its own shape functions); a node in two parts would
+  // be one dof with two unrelated, non-interpolating approximations around it, so a bonded
+  // multi-material interface is not supported yet: say so where the second part names the block.
+  void check_parts_do_not_share_nodes() const {
+    std::vector<int> part_of(m_.node_count(), -1);
+    for (std::size_t p = 0; p < s_.parts.size(); ++p)
+      for (std::size_t b = 0; b < s_.parts[p].blocks.size(); ++b) {
+        const auto& block = *std::find_if(m_.blocks.begin(), m_.blocks.end(), [&](const auto& x) {
+          return x.name == s_.parts[p].blocks[b];
+        });
+        for (auto node : block.connectivity) {
+          auto& owner = part_of[static_cast<std::size_t>(node)];
+          if (owner >= 0 && owner != static_cast<int>(p)) {
+            const auto& blocks = s_.document["parts"][p]["blocks"];
+            fail(blocks.IsSequence() ? blocks[b] : blocks,
+                 "parts[" + std::to_string(p) + "].blocks[" + std::to_string(b) + "]",
+                 "part '" + s_.parts[p].name + "' shares mesh node " + std::to_string(node + 1) +
+                     " with part '" + s_.parts[static_cast<std::size_t>(owner)].name +
+                     "'; bonded parts that share nodes are not supported yet: expected each "
+                     "part to have its own nodes (or put both blocks in one part of one "
+                     "material)");
+          }
+          owner = static_cast<int>(p);
+        }
+      }
+  }
+
+  // A condition, load or initial value on an empty set would silently do nothing.
+  void require_nodes(const YAML::Node& at, const std::string& path, const std::string& name) const {
+    const auto* set = m_.find_node_set(name);
+    if (set && set->nodes.empty())
+      fail(at, path, "node set '" + name + "' is empty; expected a set with nodes");
+  }
+
+  static bool same_prescription(const BoundaryConditionSpec& a, const BoundaryConditionSpec& b,
+                                std::size_t c) {
+    return a.type == b.type && a.components[c] == b.components[c] &&
+           a.from_exact[c] == b.from_exact[c] && a.curve == b.curve;
+  }
+
+  // Two conditions prescribing one dof differently: one of them would silently win.
+  void check_conflicting_conditions() const {
+    const auto& bcs = s_.boundary_conditions;
+    const auto dim = static_cast<std::size_t>(m_.dimension);
+    for (std::size_t j = 0; j < bcs.size(); ++j)
+      for (std::size_t i = 0; i < j; ++i)
+        for (std::size_t c = 0; c < dim; ++c) {
+          const bool both = (bcs[i].components[c] || bcs[i].from_exact[c]) &&
+                            (bcs[j].components[c] || bcs[j].from_exact[c]);
+          if (!both || same_prescription(bcs[i], bcs[j], c)) continue;
+          const auto shared = first_shared_node(bcs[i].node_set, bcs[j].node_set);
+          if (shared < 0) continue;
+          const char axis = static_cast<char>('x' + c);
+          fail(s_.document["boundary_conditions"][j],
+               "boundary_conditions[" + std::to_string(j) + "]",
+               "condition '" + bcs[j].name + "' and condition '" + bcs[i].name +
+                   "' prescribe component " + axis + " of node " + std::to_string(shared + 1) +
+                   " differently (node sets '" + bcs[j].node_set + "' and '" + bcs[i].node_set +
+                   "' share it); expected one prescription per component of a node");
+        }
+  }
+
+  LocalIndex first_shared_node(const std::string& a, const std::string& b) const {
+    const auto* sa = m_.find_node_set(a);
+    const auto* sb = m_.find_node_set(b);
+    std::vector<char> in(m_.node_count(), 0);
+    for (auto n : sa->nodes) in[static_cast<std::size_t>(n)] = 1;
+    LocalIndex first = -1;
+    for (auto n : sb->nodes)
+      if (in[static_cast<std::size_t>(n)] && (first < 0 || n < first)) first = n;
+    return first;
+  }
+
   const Scene& s_;
   const BackgroundMesh& m_;
 };

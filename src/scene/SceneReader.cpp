@@ -63,6 +63,7 @@ class SceneBuilder {
     s_.output.fields = as_vector<std::string>(r["output"]["fields"]);
     s_.output.history = opt_string(r["output"], "history");
     s_.output.history_node_sets = as_vector<std::string>(r["output"]["history_node_sets"]);
+    check_output_files(d["output"]);
     for (const auto& w : r["rigid_walls"])
       s_.rigid_walls.push_back({w["name"].as<std::string>(), as_vector<double>(w["point"]),
                                 as_vector<double>(w["normal"]), opt_string(w, "node_set"),
@@ -290,8 +291,20 @@ class SceneBuilder {
     stage.end_time = st["end_time"].as<double>();
     if (st["output_interval"]) stage.output_interval = st["output_interval"].as<double>();
     stage.settings = st;
+    const std::string path = "stages[" + std::to_string(i) + "]";
+    if (!s_.stages.empty() && !(stage.end_time > s_.stages.back().end_time))
+      fail(doc["end_time"], path + ".end_time",
+           "expected an end time after the previous stage's (" +
+               std::to_string(s_.stages.back().end_time) + "), found " + st["end_time"].Scalar() +
+               "; stages run one after another on one time axis");
     if (stage.driver == "implicit") {
       check_linear_solver(st, doc, i);
+      for (std::size_t b = 0; b < s_.boundary_conditions.size(); ++b)
+        if (s_.boundary_conditions[b].type == "velocity")
+          fail(d_bc(b), "boundary_conditions[" + std::to_string(b) + "].type",
+               "a velocity condition, but stage '" + stage.name +
+                   "' is implicit (static), where velocities do not exist; expected type: "
+                   "displacement (with a curve for a motion over time)");
       bool held = false;
       for (const auto& bc : s_.boundary_conditions) held = held || bc.type == "displacement";
       if (!held)
@@ -307,6 +320,44 @@ class SceneBuilder {
                "an explicit stage needs a density for every material; material '" +
                    s_.parts[p].material + "' has none");
     s_.stages.push_back(stage);
+  }
+
+  // Output files live inside the output folder (-o): a relative file path that names a file and
+  // does not climb out of it. The history CSV sits beside the results and is another file.
+  void check_output_file(const YAML::Node& at, const std::string& path,
+                         const std::string& given) const {
+    const fs::path p(given);
+    const auto normal = p.lexically_normal();
+    std::string why;
+    if (given.empty())
+      why = "an empty file name";
+    else if (given.back() == '/' || !p.has_filename() || p.filename() == "." ||
+             p.filename() == "..")
+      why = "'" + given + "' names a folder";
+    else if (p.is_absolute())
+      why = "'" + given + "' is an absolute path";
+    else if (!normal.empty() && *normal.begin() == "..")
+      why = "'" + given + "' leaves the output folder";
+    if (!why.empty())
+      fail(at, path,
+           "expected a file name relative to the output folder (-o), such as results.e; found " +
+               why);
+  }
+
+  void check_output_files(const YAML::Node& doc) const {
+    const YAML::Node none;
+    check_output_file(doc && doc["file"] ? doc["file"] : none, "output.file", s_.output.file);
+    if (s_.output.history.empty() && !(doc && doc["history"])) return;
+    const YAML::Node at = doc["history"];
+    check_output_file(at, "output.history", s_.output.history);
+    const auto results = fs::path(s_.output.file).lexically_normal();
+    const auto history = (results.parent_path() / s_.output.history).lexically_normal();
+    if (history == results)
+      fail(at, "output.history",
+           "'" + s_.output.history +
+               "' is also output.file; expected a different file name "
+               "for the history CSV (for example " +
+               s_.name + ".csv)");
   }
 
   // The static part of the linear solver choice (solvers/LinearSolverPlan.cpp resolves the rest
@@ -332,6 +383,11 @@ class SceneBuilder {
                prec["solver"].as<std::string>() + "'");
   }
 
+  YAML::Node d_bc(std::size_t b) const {
+    const YAML::Node bc = s_.document["boundary_conditions"][b];
+    return bc["type"] ? bc["type"] : bc;
+  }
+
   Scene& s_;
 };
 
@@ -342,6 +398,24 @@ const MaterialSpec* Scene::find_material(const std::string& material_name) const
     if (m.name == material_name) return &m;
   return nullptr;
 }
+
+namespace {
+// YAML aliases share nodes, so a small file can expand to billions of them ("billion laughs");
+// every later pass walks the expanded tree. Counted with an early stop, before anything walks it.
+bool larger_than(const YAML::Node& node, std::size_t& budget) {
+  if (budget == 0) return true;
+  --budget;
+  if (node.IsMap()) {
+    for (const auto& kv : node)
+      if (larger_than(kv.first, budget) || larger_than(kv.second, budget)) return true;
+  } else if (node.IsSequence()) {
+    for (const auto& item : node)
+      if (larger_than(item, budget)) return true;
+  }
+  return false;
+}
+constexpr std::size_t kMaxSceneNodes = 1000000;
+}  // namespace
 
 std::string read_scene_text(const std::string& file) {
   std::ifstream in(file);
@@ -360,11 +434,20 @@ Scene parse_scene(const std::string& text, const std::string& file) {
   scene.directory = p.has_parent_path() ? p.parent_path().string() : ".";
   scene.name = p.stem().string();
   try {
-    scene.document = YAML::Load(text);
+    const auto documents = YAML::LoadAll(text);
+    if (documents.size() > 1)
+      throw InputError(schema::located_message(
+          file, documents[1], "(top level)",
+          "a second YAML document (after '---'); expected one scene per file"));
+    scene.document = documents.empty() ? YAML::Node() : documents.front();
   } catch (const YAML::ParserException& e) {
     throw InputError(file + ":" + std::to_string(e.mark.line + 1) + ":" +
                      std::to_string(e.mark.column + 1) + ": YAML syntax error: " + e.msg);
   }
+  std::size_t budget = kMaxSceneNodes;
+  if (larger_than(scene.document, budget))
+    throw InputError(file + ": the scene expands to more than " + std::to_string(kMaxSceneNodes) +
+                     " YAML nodes (through aliases '*name'?); expected a scene of plain values");
   if (!scene.document.IsMap())
     throw InputError(
         file + ": expected a YAML map of scene sections (mesh, parts, materials, ...), found " +

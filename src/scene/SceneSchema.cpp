@@ -313,10 +313,11 @@ SpecPtr output_spec() {
                     .choices({"displacement", "velocity", "acceleration", "stress", "strain",
                               "von_mises", "nodal_volume", "owner_rank"}),
                 "[displacement, nodal_volume, owner_rank]")
-      .optional("history", string("CSV file, relative to the output folder, of the global "
-                                  "quantities (energies, wall forces, "
-                                  "reactions) and the node sets' mean displacement and velocity at "
-                                  "every record; none when omitted."))
+      .optional("history",
+                string("CSV file, beside the results file (relative to its folder), of the global "
+                       "quantities (energies, wall forces, "
+                       "reactions) and the node sets' mean displacement and velocity at "
+                       "every record; none when omitted."))
       .optional(
           "history_node_sets",
           string_list("Node sets whose mean displacement and velocity go to the history file."),

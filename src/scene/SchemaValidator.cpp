@@ -15,8 +15,10 @@ std::string located_message(const std::string& file, const YAML::Node& node,
                             const std::string& path, const std::string& message) {
   std::ostringstream o;
   o << file;
-  const auto mark = node.Mark();
-  if (mark.line >= 0) o << ":" << mark.line + 1 << ":" << mark.column + 1;
+  if (node.IsDefined()) {  // a key the document lacks has no line to point at
+    const auto mark = node.Mark();
+    if (mark.line >= 0) o << ":" << mark.line + 1 << ":" << mark.column + 1;
+  }
   o << ": " << (path.empty() ? "(top level)" : path) << ": " << message;
   return o.str();
 }
@@ -132,6 +134,11 @@ class Validator {
     const bool below = spec.min && (spec.min_exclusive ? value <= *spec.min : value < *spec.min);
     const bool above = spec.max && (spec.max_exclusive ? value >= *spec.max : value > *spec.max);
     if (below || above) fail(node, path, expected + ", found " + node.Scalar());
+    // Integers are read as 32-bit ints unless the key sets its own bound (counts, seeds, ...).
+    constexpr double kIntMax = 2147483647.0;
+    if (integral && !spec.max && (value > kIntMax || value < -kIntMax - 1))
+      fail(node, path,
+           expected + " that fits in 32 bits (at most 2147483647), found " + node.Scalar());
     return value;
   }
 

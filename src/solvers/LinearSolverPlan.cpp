@@ -121,6 +121,18 @@ LinearSolverPlan plan_linear_solver(const std::string& solver, std::int64_t dire
     case Plan::Preconditioner::none:
       break;
   }
+  // Parameters of a default method go with it: a user who picks another smoother or Ifpack2
+  // type must not inherit ILU's fill level (Ifpack2 rejects it; MueLu's Chebyshev crashed on it).
+  const auto replaced = [&](const char* key) {
+    return preconditioner.isParameter(key) &&
+           preconditioner.get<std::string>(key) != plan.settings.get<std::string>(key);
+  };
+  if (plan.preconditioner == Plan::Preconditioner::multigrid) {
+    if (replaced("smoother: type")) plan.settings.remove("smoother: params");
+    if (replaced("coarse: type")) plan.settings.remove("coarse: params");
+  }
+  if (plan.preconditioner == Plan::Preconditioner::ifpack2 && replaced("Prec Type"))
+    plan.settings.remove("fact: iluk level-of-fill");
   for (auto it = preconditioner.begin(); it != preconditioner.end(); ++it)
     if (preconditioner.name(it) != "Type")
       plan.settings.setEntry(preconditioner.name(it), preconditioner.entry(it));

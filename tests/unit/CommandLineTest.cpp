@@ -51,7 +51,7 @@ TEST(CommandLine, Mistakes) {
   EXPECT_THROW(parse_command_line({"run", "a.yaml", "b.yaml"}), InputError);
   EXPECT_THROW(parse_command_line({"run", "a.yaml", "-o"}), InputError);
   EXPECT_THROW(parse_command_line({"run", "a.yaml", "--fast"}), InputError);
-  EXPECT_THROW(parse_command_line({"check", "a.yaml", "-o", "x"}), InputError);
+  EXPECT_THROW(parse_command_line({"mesh", "a.yaml", "b.exo", "-o", "x"}), InputError);
   EXPECT_THROW(parse_command_line({"mesh", "a.yaml"}), InputError);
   EXPECT_THROW(parse_command_line({"study", "a.yaml", "--levels", "many"}), InputError);
   EXPECT_THROW(parse_command_line({"study", "a.yaml", "--sweep", "basis"}), InputError);
