@@ -166,7 +166,12 @@ ExplicitSummary ExplicitDriver::run(RunState& state, const StateOutput& output, 
   }
   state.dt = dt;
   refuse_endless(span, dt, dt_crit);
-  if (record_start) output(state);
+  state.reactions_from_driver = true;
+  auto record = [&] {
+    state.reactions = motion_.reactions(f_support_);
+    output(state);
+  };
+  if (record_start) record();
 
   Progress progress("stage '" + stage_.name + "'", span);
   ExplicitSummary summary;
@@ -236,8 +241,8 @@ ExplicitSummary ExplicitDriver::run(RunState& state, const StateOutput& output, 
       failed.time = failed_time;
       report_non_finite(failed, summary.steps);
     }
-    const bool record = state.time >= next_output - 1e-12 * span;
-    if (record || allow_unstable) {
+    const bool due = state.time >= next_output - 1e-12 * span;
+    if (due || allow_unstable) {
       energies();
       summary.worst_balance_error = std::max(summary.worst_balance_error, state.balance_error());
       reference_energy =
@@ -254,11 +259,11 @@ ExplicitSummary ExplicitDriver::run(RunState& state, const StateOutput& output, 
         throw NumericalError(why.str());
       }
     }
-    if (record) {
+    if (due) {
       if (state.balance_error() > 0.01)
         Log::warning("energy balance error " + std::to_string(100 * state.balance_error()) +
                      " % at t = " + std::to_string(state.time));
-      output(state);
+      record();
       next_output = std::min(end, next_output + interval);
     }
     progress.update(state.time - start);

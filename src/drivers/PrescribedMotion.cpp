@@ -1,10 +1,17 @@
 #include "drivers/PrescribedMotion.hpp"
 
+#include <Teuchos_CommHelpers.hpp>
+
+#include <set>
+
 namespace efg {
 
-PrescribedMotion::PrescribedMotion(const Model& model) {
+PrescribedMotion::PrescribedMotion(const Model& model)
+    : conditions_(model.scene.boundary_conditions.size()) {
   const int dim = model.mesh.dimension;
-  for (const auto& bc : model.scene.boundary_conditions)
+  std::set<int> taken;
+  for (std::size_t b = 0; b < conditions_; ++b) {
+    const auto& bc = model.scene.boundary_conditions[b];
     for (auto node : model.mesh.find_node_set(bc.node_set)->nodes) {
       if (model.partition.owner[static_cast<std::size_t>(node)] != model.partition.rank) continue;
       for (int i = 0; i < dim; ++i) {
@@ -12,9 +19,26 @@ PrescribedMotion::PrescribedMotion(const Model& model) {
         if (!c) continue;  // values from an exact solution are for static verification
         const int row =
             model.maps.owned_dofs->getLocalElement(static_cast<GlobalOrdinal>(node) * dim + i);
-        dofs_.push_back({row, bc.type == "velocity", *c, bc.curve});
+        if (taken.insert(row).second)
+          dofs_.push_back({row, b, i, bc.type == "velocity", *c, bc.curve});
       }
     }
+  }
+}
+
+std::vector<std::array<double, 3>> PrescribedMotion::reactions(const Vector& R) const {
+  std::vector<double> local(3 * conditions_, 0.0), global(3 * conditions_, 0.0);
+  const auto r = R.getLocalViewHost(Tpetra::Access::ReadOnly);
+  for (const auto& c : dofs_)
+    local[3 * c.condition + static_cast<std::size_t>(c.direction)] +=
+        r(static_cast<std::size_t>(c.row), 0);
+  if (!local.empty())
+    Teuchos::reduceAll(*R.getMap()->getComm(), Teuchos::REDUCE_SUM,
+                       static_cast<int>(local.size()), local.data(), global.data());
+  std::vector<std::array<double, 3>> out(conditions_);
+  for (std::size_t c = 0; c < conditions_; ++c)
+    out[c] = {global[3 * c], global[3 * c + 1], global[3 * c + 2]};
+  return out;
 }
 
 void PrescribedMotion::constrain_velocity(const LoadFactor& start, const LoadFactor& mid,

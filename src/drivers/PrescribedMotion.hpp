@@ -7,6 +7,7 @@
 // agree.
 #pragma once
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -32,15 +33,22 @@ class PrescribedMotion {
   /// constrained entries (a_free: the acceleration before constrain_end), 0 elsewhere. Its work
   /// R . dd is external work: a crush driven by prescribed motion puts its energy in that way.
   void support_force(const Vector& mass, const Vector& a_free, Vector& R) const;
+  /// The support force summed per boundary condition and direction (collective): the reaction
+  /// columns R_<condition>_<axis> of an explicit run, with the implicit drivers' sign (the force
+  /// the support applies to the body). A dof named by several conditions counts for the first.
+  std::vector<std::array<double, 3>> reactions(const Vector& R) const;
 
  private:
   struct Dof {
     int row;
+    std::size_t condition;
+    int direction;
     bool velocity;
     double value;
     std::string curve;
   };
   std::vector<Dof> dofs_;
+  std::size_t conditions_ = 0;
 };
 
 }  // namespace efg

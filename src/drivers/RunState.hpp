@@ -4,6 +4,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -22,6 +23,10 @@ struct RunState {
   double kinetic = 0, internal = 0, external_work = 0, wall_work = 0, initial_energy = 0;
   bool energy_started = false;
   std::vector<double> wall_forces;
+  /// Reactions per boundary condition when the driver computes them (explicit: the support
+  /// forces of the prescribed motions); otherwise the static residual gives them.
+  std::vector<std::array<double, 3>> reactions;
+  bool reactions_from_driver = false;
 
   /// |E_kin + E_int - E_0 - W_ext - W_wall| relative to the largest energy involved.
   double balance_error() const {

@@ -84,7 +84,9 @@ RunOutcome run_stages(const CommPtr& comm, const Model& model, const std::string
     check_kinematics(s.time);
     ops->to_overlap(s.v, v_overlap);
     ops->to_overlap(s.a, a_overlap);
-    const auto reactions = problem ? problem->reactions(s.d) : std::vector<std::array<double, 3>>();
+    const auto reactions = s.reactions_from_driver ? s.reactions
+                           : problem               ? problem->reactions(s.d)
+                                                   : std::vector<std::array<double, 3>>();
     const auto globals = history.values(*ops, s, d_overlap, v_overlap, reactions);
     const auto values = state_columns(model, ops->solid(), d_overlap, &v_overlap, &a_overlap);
     ResultsOutput::MultiVector nodal(model.maps.owned_nodes, columns.size());
@@ -136,6 +138,7 @@ RunOutcome run_stages(const CommPtr& comm, const Model& model, const std::string
       if (stage.driver == "implicit") {
         state.v.putScalar(0.0);
         state.a.putScalar(0.0);
+        state.reactions_from_driver = false;
         ImplicitDriver driver(*problem, stage, state.time, first_end);
         const auto s = driver.run(state.d, [&](double t, const Vector&) {
           state.time = t;
