@@ -23,5 +23,8 @@ export CCACHE_BASEDIR="${CCACHE_BASEDIR:-$here}"
 if [ ! -f "$build/build.ninja" ] || [ ${#extra[@]} -gt 0 ]; then
   cmake -S "$here" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE="${EFG_BUILD_TYPE:-Release}" "${extra[@]}" >/dev/null
 fi
-cmake --build "$build" --parallel "$jobs" | grep -v "^ninja: no work to do" || true
+# pipefail: a failed compile must fail this script (the filter alone would hide it and leave a
+# stale efg behind for the tests).
+set -o pipefail
+cmake --build "$build" --parallel "$jobs" | { grep -v "^ninja: no work to do" || true; }
 test -x "$build/efg"

@@ -5,11 +5,15 @@
 #include <stdexcept>
 
 #include "core/Errors.hpp"
+#include "io/NetcdfHeaderCheck.hpp"
 
 namespace efg::exodus {
 
 File File::open_read(const std::string& path) {
   ex_opts(0);  // errors are reported by efg, not printed by the library
+  const auto problem = classic_header_problem(path);
+  if (!problem.empty())
+    throw InputError("mesh file '" + path + "': not a valid Exodus II (netCDF) file: " + problem);
   int cpu_ws = sizeof(double), io_ws = 0;
   float version = 0;
   const int id = ex_open(path.c_str(), EX_READ, &cpu_ws, &io_ws, &version);

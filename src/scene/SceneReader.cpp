@@ -415,6 +415,32 @@ bool larger_than(const YAML::Node& node, std::size_t& budget) {
   return false;
 }
 constexpr std::size_t kMaxSceneNodes = 1000000;
+
+// The line (1-based) of a document marker ('---' or '...' in column 1) that has scene content
+// before it, or 0. YAML::Load reads the first document only and YAML::LoadAll loops forever on
+// some malformed text (yaml-cpp issue 1040, a stray ','), so the text is scanned instead.
+int second_document_line(const std::string& text) {
+  std::istringstream in(text);
+  std::string line;
+  bool content = false;
+  int marker_after_content = 0;
+  for (int number = 1; std::getline(in, line); ++number) {
+    const bool marker = (line.rfind("---", 0) == 0 || line.rfind("...", 0) == 0) &&
+                        (line.size() == 3 || line[3] == ' ' || line[3] == '\t' || line[3] == '\r');
+    const auto first = line.find_first_not_of(" \t\r");
+    const bool has_text = first != std::string::npos && line[first] != '#' && line[first] != '%';
+    if (marker) {
+      if (content && !marker_after_content) marker_after_content = number;
+      if (line.size() > 4 && line.find_first_not_of(" \t\r", 3) != std::string::npos &&
+          marker_after_content)
+        return marker_after_content;  // '--- value' after the scene
+    } else if (has_text) {
+      if (marker_after_content) return marker_after_content;
+      content = true;
+    }
+  }
+  return 0;
+}
 }  // namespace
 
 std::string read_scene_text(const std::string& file) {
@@ -434,12 +460,11 @@ Scene parse_scene(const std::string& text, const std::string& file) {
   scene.directory = p.has_parent_path() ? p.parent_path().string() : ".";
   scene.name = p.stem().string();
   try {
-    const auto documents = YAML::LoadAll(text);
-    if (documents.size() > 1)
-      throw InputError(schema::located_message(
-          file, documents[1], "(top level)",
-          "a second YAML document (after '---'); expected one scene per file"));
-    scene.document = documents.empty() ? YAML::Node() : documents.front();
+    if (const int line = second_document_line(text))
+      throw InputError(file + ":" + std::to_string(line) +
+                       ": (top level): a second YAML document (after '---' or '...'); expected "
+                       "one scene per file");
+    scene.document = YAML::Load(text);
   } catch (const YAML::ParserException& e) {
     throw InputError(file + ":" + std::to_string(e.mark.line + 1) + ":" +
                      std::to_string(e.mark.column + 1) + ": YAML syntax error: " + e.msg);

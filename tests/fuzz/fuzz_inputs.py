@@ -1,0 +1,200 @@
+#!/usr/bin/env python3
+"""A scripted mutation fuzzer for efg's input readers (issue 14): scene files (YAML syntax, schema,
+cross-references, solver maps) and Exodus meshes. Each case mutates a seed file, runs
+`efg check` on it (and `efg run` on some that pass, on a tiny model), and requires a clean outcome:
+exit 0, 2 (bad input) or, for runs, 3 (numerical failure) / 4 (verification), no signal, no
+timeout, and no raw library exception (exit 1). Deterministic for a given --seed.
+
+usage: fuzz_inputs.py EFG WORKDIR [--cases N] [--seed S] [--timeout SECONDS]
+Prints each failing case and leaves it in WORKDIR/failures; exit 1 when any case failed.
+"""
+import argparse
+import os
+import random
+import shutil
+import subprocess
+import sys
+from concurrent.futures import ThreadPoolExecutor
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(os.path.dirname(HERE))
+
+# Values that have broken readers before: huge, tiny, non-finite, wrong types, empty, odd text.
+NASTY = ["0", "-1", "1e300", "-1e300", "1e-300", "nan", ".nan", ".inf", "-.inf", "2147483648",
+         "9223372036854775808", "3e9", "''", "~", "[]", "{}", "[1, 2, 3, 4]", "[[1]]", "true",
+         "'0x10'", "!!binary aGk=", "&a x", "*a", "\"\\u0000\"", "1_000", "0.1e", "--1", "+5",
+         "hex8", "tet4", "quad4", "xmin", "all", "block_1", "implicit", "explicit", "direct",
+         "MueLu", "Ifpack2", "none", "penalty", "nitsche", "neo_hookean", "a" * 300]
+TOKENS = [": ", "- ", "[", "]", "{", "}", ",", "#", "\t", "\n", "---", "...", "&x ", "*x", "? ",
+          "|", ">", "%YAML 1.2\n", "\"", "'", "!!str ", "<<: "]
+
+
+def mutate_scene(text, rng):
+    lines = text.split("\n")
+    for _ in range(rng.randint(1, 3)):
+        kind = rng.randrange(7)
+        i = rng.randrange(len(lines))
+        line = lines[i]
+        if kind == 0 and ":" in line:  # replace a value
+            key = line[: line.index(":") + 1]
+            lines[i] = key + " " + rng.choice(NASTY)
+        elif kind == 1:  # delete a line
+            del lines[i]
+        elif kind == 2:  # duplicate a line
+            lines.insert(i, line)
+        elif kind == 3 and line:  # insert a syntax token
+            j = rng.randrange(len(line) + 1)
+            lines[i] = line[:j] + rng.choice(TOKENS) + line[j:]
+        elif kind == 4:  # replace a number inside flow lists
+            words = line.split(",")
+            if len(words) > 1:
+                k = rng.randrange(len(words))
+                words[k] = " " + rng.choice(NASTY)
+                lines[i] = ",".join(words)
+        elif kind == 5 and line:  # flip a character
+            j = rng.randrange(len(line))
+            lines[i] = line[:j] + chr(rng.randrange(32, 127)) + line[j + 1:]
+        else:  # swap two lines
+            k = rng.randrange(len(lines))
+            lines[i], lines[k] = lines[k], lines[i]
+        if not lines:
+            lines = [""]
+    return "\n".join(lines)
+
+
+def mutate_bytes(data, rng):
+    data = bytearray(data)
+    kind = rng.randrange(3)
+    if kind == 0:  # flip bytes
+        for _ in range(rng.randint(1, 8)):
+            data[rng.randrange(len(data))] = rng.randrange(256)
+    elif kind == 1:  # truncate
+        data = data[: rng.randrange(len(data))]
+    else:  # overwrite a run with 0xff or 0x00
+        at = rng.randrange(len(data))
+        data[at : at + 16] = bytes([rng.choice([0, 255])]) * 16
+    return bytes(data)
+
+
+def seeds():
+    scenes = []
+    for folder in ["input", "tests/scenes", "tests/scenes/solvers", "tests/scenes/impact"]:
+        path = os.path.join(ROOT, folder)
+        for name in sorted(os.listdir(path)):
+            if name.endswith(".yaml"):
+                scenes.append(os.path.join(path, name))
+    return scenes
+
+
+def run(cmd, cwd, timeout):
+    try:
+        p = subprocess.run(cmd, cwd=cwd, capture_output=True, text=True, timeout=timeout,
+                           errors="replace")
+        return p.returncode, p.stdout + p.stderr
+    except subprocess.TimeoutExpired:
+        return "timeout", ""
+
+
+def verdict(code, log, allowed):
+    if code == "timeout":
+        return "hang (timeout)"
+    if code < 0:
+        return "crash (signal %d)" % -code
+    if code not in allowed:
+        return "exit %d: %s" % (code, log.strip().splitlines()[-1] if log.strip() else "")
+    return None
+
+
+def one_case(args, index, scene_seeds, mesh_bytes):
+    rng = random.Random(args.seed * 1000003 + index)
+    case = os.path.join(args.workdir, "case%05d" % index)
+    os.makedirs(case, exist_ok=True)
+    if rng.random() < 0.25:  # a mutated Exodus mesh behind a valid scene
+        with open(os.path.join(case, "mesh.e"), "wb") as f:
+            f.write(mutate_bytes(mesh_bytes, rng))
+        text = MESH_SCENE
+        what = "exodus"
+    else:
+        with open(rng.choice(scene_seeds)) as f:
+            text = mutate_scene(f.read(), rng)
+        what = "scene"
+    scene = os.path.join(case, "scene.yaml")
+    with open(scene, "w") as f:
+        f.write(text)
+    code, log = run([args.efg, "check", "scene.yaml"], case, args.timeout)
+    problem = verdict(code, log, (0, 2))
+    # A scene that passes check and is small must also run cleanly (tiny meshes only).
+    if problem is None and code == 0 and what == "scene" and rng.random() < 0.3 and small(text):
+        code, log = run([args.efg, "run", "scene.yaml", "-o", "out"], case, args.timeout)
+        problem = verdict(code, log, (0, 2, 3, 4))
+        what += "+run"
+    if problem is None:
+        shutil.rmtree(case, ignore_errors=True)
+        return None
+    failed = os.path.join(args.workdir, "failures", os.path.basename(case))
+    shutil.rmtree(failed, ignore_errors=True)
+    shutil.move(case, failed)
+    return "%s (%s): %s [%s]" % (os.path.basename(case), what, problem, failed)
+
+
+def small(text):
+    # Runs only on meshes of at most a few hundred cells: the fuzzer looks for crashes, not work.
+    import re
+    for m in re.finditer(r"cells:\s*\[([^\]]*)\]", text):
+        total = 1
+        for w in m.group(1).split(","):
+            try:
+                total *= int(w)
+            except ValueError:
+                return False
+        if total > 400:
+            return False
+    return "end_time" not in text or "1e" not in text
+
+
+MESH_SCENE = """mesh:
+  file: mesh.e
+parts:
+  - {name: p, blocks: [block_1], material: m}
+materials:
+  - {name: m, model: linear_elastic, youngs_modulus: 100.0, poissons_ratio: 0.3}
+boundary_conditions:
+  - {name: clamp, type: displacement, node_set: xmin, x: 0, y: 0, z: 0}
+stages:
+  - {name: load, driver: implicit, end_time: 1}
+"""
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("efg")
+    ap.add_argument("workdir")
+    ap.add_argument("--cases", type=int, default=300)
+    ap.add_argument("--seed", type=int, default=1)
+    ap.add_argument("--timeout", type=float, default=30)
+    args = ap.parse_args()
+    args.efg = os.path.abspath(args.efg)
+    shutil.rmtree(args.workdir, ignore_errors=True)
+    os.makedirs(args.workdir)
+    # The mesh seed: efg writes one for a small generated box.
+    with open(os.path.join(args.workdir, "box.yaml"), "w") as f:
+        f.write(MESH_SCENE.replace("file: mesh.e",
+                                   "generate: {element: hex8, lower: [0, 0, 0], upper: [2, 1, 1], "
+                                   "cells: [4, 2, 2]}"))
+    subprocess.run([args.efg, "mesh", "box.yaml", "mesh.e"], cwd=args.workdir, check=True,
+                   capture_output=True)
+    with open(os.path.join(args.workdir, "mesh.e"), "rb") as f:
+        mesh_bytes = f.read()
+    scene_seeds = seeds()
+    with ThreadPoolExecutor(max_workers=2) as pool:
+        results = list(pool.map(lambda i: one_case(args, i, scene_seeds, mesh_bytes),
+                                range(args.cases)))
+    failures = [r for r in results if r]
+    for r in failures:
+        print("FAILED " + r)
+    print("%d cases (seed %d), %d failures" % (args.cases, args.seed, len(failures)))
+    sys.exit(1 if failures else 0)
+
+
+if __name__ == "__main__":
+    main()
