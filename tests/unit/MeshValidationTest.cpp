@@ -63,5 +63,21 @@ TEST(MeshValidation, GeneratedMeshesAreValid) {
     EXPECT_EQ(error_of(generate_mesh(test::box_spec(t, 3, 0.3))), "");
 }
 
+// Issue 14, item 9: scenes name sets and blocks, so duplicates are ambiguous input.
+TEST(MeshValidation, DuplicateSetNames) {
+  auto mesh = generate_mesh(test::box_spec(CellType::hex8, 1));
+  mesh.node_sets[1].name = mesh.node_sets[0].name;
+  EXPECT_NE(error_of(mesh).find("has two node sets named 'xmin'"), std::string::npos)
+      << error_of(mesh);
+  mesh = generate_mesh(test::box_spec(CellType::hex8, 1));
+  mesh.side_sets[2].name = mesh.side_sets[0].name;
+  EXPECT_NE(error_of(mesh).find("has two side sets named"), std::string::npos) << error_of(mesh);
+  mesh = generate_mesh(test::box_spec(CellType::hex8, 1));
+  mesh.blocks.push_back(mesh.blocks[0]);
+  mesh.blocks.back().id = 2;
+  EXPECT_NE(error_of(mesh).find("has two element blocks named 'block_1'"), std::string::npos)
+      << error_of(mesh);
+}
+
 }  // namespace
 }  // namespace efg
