@@ -34,6 +34,7 @@ void check_command(const CommPtr& comm, const CommandLine& cl) {
   const auto scene = load_scene(comm, cl.scene);
   const auto mesh = load_mesh(comm, scene);
   check_run_inputs(comm, scene, mesh, cl.output_dir);
+  if (!scene.stages.empty()) check_model_setup(comm, build_model(comm, scene));
   YAML::Emitter out;
   out << compact_for_echo(scene.resolved);
   Log::info("# " + cl.scene + ": valid. Resolved scene (defaults filled in):");

@@ -117,6 +117,26 @@ void ExplicitDriver::account_energy(RunState& state, const Vector& delta_d) cons
       0.5 * (reproducible_dot(f_wall_old_, delta_d) + reproducible_dot(f_wall_, delta_d));
 }
 
+ExplicitDriver::StepPlan ExplicitDriver::plan_steps(const Vector& d, double start) {
+  const double scale = stage_.settings["dt_scale"].as<double>();
+  const bool fixed = static_cast<bool>(stage_.settings["dt"]);
+  const double fixed_dt = fixed ? stage_.settings["dt"].as<double>() : 0.0;
+  StepPlan plan;
+  plan.dt_crit = stable_.estimate(d);
+  plan.dt = fixed ? fixed_dt : scale * plan.dt_crit;
+  std::ostringstream o;
+  o << "stage '" << stage_.name << "': stable time step " << plan.dt_crit << " (largest frequency "
+    << stable_.largest_frequency() << " rad/time), dt = " << plan.dt;
+  Log::info(o.str());
+  if (fixed && fixed_dt > plan.dt_crit && !stage_.settings["allow_unstable_dt"].as<bool>())
+    throw NumericalError("stage '" + stage_.name + "': dt = " + std::to_string(fixed_dt) +
+                         " exceeds the stable time step " + std::to_string(plan.dt_crit) +
+                         " at step 0, t = " + std::to_string(start) +
+                         "; lower dt, or set allow_unstable_dt: true to run it anyway");
+  refuse_endless(stage_.end_time - start, plan.dt, plan.dt_crit);
+  return plan;
+}
+
 ExplicitSummary ExplicitDriver::run(RunState& state, const StateOutput& output, bool record_start) {
   const auto& scene = ops_.model().scene;
   const auto& comm = *mass_.getMap()->getComm();
@@ -124,7 +144,6 @@ ExplicitSummary ExplicitDriver::run(RunState& state, const StateOutput& output, 
   const double interval = stage_.output_interval.value_or(span / 20);
   const double scale = stage_.settings["dt_scale"].as<double>();
   const bool fixed = static_cast<bool>(stage_.settings["dt"]);
-  const double fixed_dt = fixed ? stage_.settings["dt"].as<double>() : 0.0;
   const bool allow_unstable = stage_.settings["allow_unstable_dt"].as<bool>();
   const long long refresh = stage_.settings["dt_update_interval"].as<long long>();
   Vector delta(mass_.getMap()), v_half(mass_.getMap()), previous_d(mass_.getMap()),
@@ -143,17 +162,8 @@ ExplicitSummary ExplicitDriver::run(RunState& state, const StateOutput& output, 
     Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, mine, Teuchos::outArg(state.internal));
   };
 
-  double dt_crit = stable_.estimate(state.d);
-  double dt = fixed ? fixed_dt : scale * dt_crit;
-  std::ostringstream o;
-  o << "stage '" << stage_.name << "': stable time step " << dt_crit << " (largest frequency "
-    << stable_.largest_frequency() << " rad/time), dt = " << dt;
-  Log::info(o.str());
-  if (fixed && fixed_dt > dt_crit && !allow_unstable)
-    throw NumericalError("stage '" + stage_.name + "': dt = " + std::to_string(fixed_dt) +
-                         " exceeds the stable time step " + std::to_string(dt_crit) +
-                         " at step 0, t = " + std::to_string(start) +
-                         "; lower dt, or set allow_unstable_dt: true to run it anyway");
+  const auto plan = plan_steps(state.d, start);
+  double dt_crit = plan.dt_crit, dt = plan.dt;
 
   state.wall_forces = accelerate(state.time, dt);
   motion_.support_force(mass_, state.a, f_support_);
@@ -165,7 +175,6 @@ ExplicitSummary ExplicitDriver::run(RunState& state, const StateOutput& output, 
     state.energy_started = true;
   }
   state.dt = dt;
-  refuse_endless(span, dt, dt_crit);
   state.reactions_from_driver = true;
   auto record = [&] {
     state.reactions = motion_.reactions(f_support_);

@@ -35,6 +35,14 @@ class ExplicitDriver {
   /// state is written first, once its energies are known (a run's first record).
   ExplicitSummary run(RunState& state, const StateOutput& output, bool record_start = false);
 
+  /// The stage's time step from state d at time `start`: dt_crit (StableTimeStep) and the dt
+  /// used. Refuses (before any step, also for `efg check`) a fixed dt above dt_crit without
+  /// allow_unstable_dt (NumericalError) and a stage needing more than 1e10 steps (InputError).
+  struct StepPlan {
+    double dt_crit = 0, dt = 0;
+  };
+  StepPlan plan_steps(const Vector& d, double start);
+
   const Vector& mass() const { return mass_; }
   /// a = M^-1 (f_ext(t) - f_int(d) + f_wall(d)); returns the wall forces. Exposed for tests.
   std::vector<double> acceleration(double time, double dt, const Vector& d, Vector& a);

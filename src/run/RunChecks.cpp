@@ -1,10 +1,13 @@
 #include "run/RunChecks.hpp"
 
 #include <algorithm>
+#include <memory>
 #include <set>
 
 #include "core/Errors.hpp"
+#include "drivers/ExplicitDriver.hpp"
 #include "drivers/SolverSettingsCheck.hpp"
+#include "parallel/Collective.hpp"
 #include "run/OutputPaths.hpp"
 #include "run/RunHistory.hpp"
 #include "scene/SchemaValidator.hpp"
@@ -63,6 +66,21 @@ void check_run_inputs(const CommPtr& comm, const Scene& scene, const BackgroundM
     if (scene.stages[i].driver == "implicit")
       check_solver_settings(scene.stages[i].settings, scene.document["stages"][i], scene.file,
                             "stages[" + std::to_string(i) + "]", dofs, mesh.dimension);
+}
+
+void check_model_setup(const CommPtr& comm, const Model& model) {
+  std::shared_ptr<ModelOperators> ops;
+  run_collectively(comm, [&] { ops = std::make_shared<ModelOperators>(model); });
+  double start = 0;
+  for (const auto& stage : model.scene.stages) {
+    if (stage.driver == "explicit") {
+      std::unique_ptr<ExplicitDriver> driver;
+      run_collectively(comm, [&] { driver = std::make_unique<ExplicitDriver>(*ops, stage); });
+      const Vector d(model.maps.owned_dofs);  // the start state of a first stage
+      driver->plan_steps(d, start);
+    }
+    start = stage.end_time;
+  }
 }
 
 }  // namespace efg

@@ -8,6 +8,7 @@
 
 #include "mesh/BackgroundMesh.hpp"
 #include "parallel/Comm.hpp"
+#include "run/Model.hpp"
 #include "scene/Scene.hpp"
 
 namespace efg {
@@ -15,5 +16,10 @@ namespace efg {
 /// Throws InputError (file, line, key path) on every rank; creates and writes nothing.
 void check_run_inputs(const CommPtr& comm, const Scene& scene, const BackgroundMesh& mesh,
                       const std::string& output_dir);
+
+/// For `efg check`: what `run` finds once the model is built and before its first step, from the
+/// same code: the operators (conditions, loads, walls) and each explicit stage's time-step plan
+/// (a fixed dt above the stable one, a stage needing more than 1e10 steps).
+void check_model_setup(const CommPtr& comm, const Model& model);
 
 }  // namespace efg

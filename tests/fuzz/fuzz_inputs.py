@@ -2,8 +2,8 @@
 """A scripted mutation fuzzer for efg's input readers (issue 14): scene files (YAML syntax, schema,
 cross-references, solver maps) and Exodus meshes. Each case mutates a seed file, runs
 `efg check` on it (and `efg run` on some that pass, on a tiny model), and requires a clean outcome:
-exit 0, 2 (bad input) or, for runs, 3 (numerical failure) / 4 (verification), no signal, no
-timeout, and no raw library exception (exit 1). Deterministic for a given --seed.
+exit 0, 2 (bad input), 3 (numerical failure: check builds the model and plans explicit steps too)
+or, for runs, 4 (verification); no signal, no timeout, no raw library exception (exit 1). Deterministic for a given --seed.
 
 usage: fuzz_inputs.py EFG WORKDIR [--cases N] [--seed S] [--timeout SECONDS]
 Prints each failing case and leaves it in WORKDIR/failures; exit 1 when any case failed.
@@ -122,7 +122,7 @@ def one_case(args, index, scene_seeds, mesh_bytes):
     with open(scene, "w") as f:
         f.write(text)
     code, log = run([args.efg, "check", "scene.yaml"], case, args.timeout)
-    problem = verdict(code, log, (0, 2))
+    problem = verdict(code, log, (0, 2, 3))
     # A scene that passes check and is small must also run cleanly (tiny meshes only).
     if problem is None and code == 0 and what == "scene" and rng.random() < 0.3 and small(text):
         code, log = run([args.efg, "run", "scene.yaml", "-o", "out"], case, args.timeout)
