@@ -80,6 +80,7 @@ class SceneBuilder {
              "boundary_conditions[" + std::to_string(i) + "].from_exact_solution",
              "needs verification.exact_solution, which the scene does not name");
     }
+    check_nitsche_is_small_strain();
     for (std::size_t i = 0; i < s_.loads.size(); ++i)
       if (s_.loads[i].from_exact && s_.exact_solution.empty())
         fail(d["loads"][i]["from_exact_solution"],
@@ -381,6 +382,25 @@ class SceneBuilder {
            "expected KLU2 (the one Amesos2 solver of this Trilinos build that factors these "
            "systems; Tacho crashed), found '" +
                prec["solver"].as<std::string>() + "'");
+  }
+
+  // Nitsche's consistency terms use the stress on the boundary; their tangent here omits the
+  // derivative of the material tangent (docs/boundary_conditions.md), exact for small strain
+  // only: a finite-strain part would lose Newton's quadratic convergence, so it is refused.
+  void check_nitsche_is_small_strain() const {
+    const PartSpec* finite = nullptr;
+    for (const auto& p : s_.parts)
+      if (p.section.formulation == Formulation::total_lagrangian) finite = &p;
+    if (!finite) return;
+    for (std::size_t b = 0; b < s_.boundary_conditions.size(); ++b)
+      if (s_.boundary_conditions[b].method == "nitsche") {
+        const YAML::Node bc = s_.document["boundary_conditions"][b];
+        fail(bc["method"] ? bc["method"] : bc,
+             "boundary_conditions[" + std::to_string(b) + "].method",
+             "method nitsche is available for small-strain parts only (its tangent lacks the "
+             "finite-strain term), but part '" + finite->name +
+                 "' is total_lagrangian; expected method penalty or transformation");
+      }
   }
 
   YAML::Node d_bc(std::size_t b) const {
