@@ -6,11 +6,11 @@ set(EFG_TRILINOS_PREFIX "" CACHE PATH "Trilinos install prefix (empty: Debian's 
 find_package(MPI REQUIRED COMPONENTS CXX)
 if(EFG_TRILINOS_PREFIX)
   find_package(Trilinos 13.2 REQUIRED
-    COMPONENTS Teuchos Tpetra Belos Ifpack2 MueLu NOX Stratimikos Thyra Amesos2 Zoltan2
+    COMPONENTS Teuchos Tpetra Belos Ifpack2 MueLu NOX Stratimikos Thyra Amesos2 Zoltan2 Anasazi
     PATHS ${EFG_TRILINOS_PREFIX} NO_DEFAULT_PATH)
 else()
   find_package(Trilinos 13.2 REQUIRED
-    COMPONENTS Teuchos Tpetra Belos Ifpack2 MueLu NOX Stratimikos Thyra Amesos2 Zoltan2)
+    COMPONENTS Teuchos Tpetra Belos Ifpack2 MueLu NOX Stratimikos Thyra Amesos2 Zoltan2 Anasazi)
 endif()
 # Which Kokkos backends this Trilinos has (Debian's: Serial only).
 find_file(EFG_KOKKOS_CONFIG KokkosCore_config.h PATHS ${Trilinos_INCLUDE_DIRS} NO_DEFAULT_PATH)

@@ -3,6 +3,7 @@
 #include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_TimeMonitor.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -14,6 +15,13 @@
 #include "parallel/ReproducibleSum.hpp"
 
 namespace efg {
+namespace {
+double largest_wall_penalty(const Scene& scene) {
+  double p = 0;
+  for (const auto& w : scene.rigid_walls) p = std::max(p, w.penalty);
+  return p;
+}
+}  // namespace
 
 ExplicitDriver::ExplicitDriver(const ModelOperators& ops, const StageSpec& stage)
     : ops_(ops),
@@ -22,7 +30,7 @@ ExplicitDriver::ExplicitDriver(const ModelOperators& ops, const StageSpec& stage
       inverse_mass_(mass_.getMap()),
       walls_(ops, mass_),
       motion_(ops.model()),
-      stable_(ops, mass_),
+      stable_(ops, mass_, largest_wall_penalty(ops.model().scene)),
       f_ext_(mass_.getMap()),
       f_ext_old_(mass_.getMap()),
       f_wall_(mass_.getMap()),

@@ -3,12 +3,14 @@
 // input/bar_wall_impact.yaml), plus the one-internal-force check between the two drivers.
 #include <gtest/gtest.h>
 
+#include <Teuchos_LAPACK.hpp>
 #include <Tpetra_Core.hpp>
 
 #include <algorithm>
 #include <cmath>
 
 #include "drivers/ExplicitDriver.hpp"
+#include "drivers/StableTimeStep.hpp"
 #include "drivers/StaticProblem.hpp"
 #include "io/ExodusReader.hpp"
 #include "run/Simulation.hpp"
@@ -102,6 +104,77 @@ stages:
   a.update(1.0, residual, 1.0);  // -f_int + f_int
   EXPECT_LT(a.normInf(), 1e-12 * residual.normInf());
   EXPECT_GT(residual.normInf(), 0.0);
+}
+
+// The stable time step against a dense eigen-solve (issue 13, item 3): K assembled by the implicit
+// path (its own kernels), the lumped mass, and LAPACK's symmetric eigenvalues of
+// M^-1/2 K M^-1/2 give the exact dt_crit = 2 / sqrt(lambda_max). The estimate must not exceed it
+// (a dt above it is unstable) and must be within 3 % of it (not wastefully small).
+double dense_critical_step(const Model& model, const std::shared_ptr<ModelOperators>& ops,
+                           const Vector& d, const Vector& mass) {
+  StaticProblem problem(ops);
+  auto K = problem.create_matrix();
+  problem.jacobian(d, *K);
+  const auto n = static_cast<int>(model.maps.owned_dofs->getNodeNumElements());
+  std::vector<double> A(static_cast<std::size_t>(n * n), 0.0), w(static_cast<std::size_t>(n));
+  const auto m = mass.getLocalViewHost(Tpetra::Access::ReadOnly);
+  const auto local = K->getLocalMatrixHost();
+  for (int r = 0; r < n; ++r)
+    for (auto k = local.graph.row_map(r); k < local.graph.row_map(r + 1); ++k) {
+      const int c = local.graph.entries(k);
+      const double a = local.values(k) / std::sqrt(m(static_cast<std::size_t>(r), 0) *
+                                                   m(static_cast<std::size_t>(c), 0));
+      A[static_cast<std::size_t>(r * n + c)] += 0.5 * a;  // symmetric part
+      A[static_cast<std::size_t>(c * n + r)] += 0.5 * a;
+    }
+  Teuchos::LAPACK<int, double> lapack;
+  int info = 0, lwork = 4 * n;
+  std::vector<double> work(static_cast<std::size_t>(lwork));
+  lapack.SYEV('N', 'U', n, A.data(), n, w.data(), work.data(), lwork, &info);
+  EXPECT_EQ(info, 0);
+  return 2.0 / std::sqrt(*std::max_element(w.begin(), w.end()));
+}
+
+void expect_bound(const std::string& text, double amplitude) {
+  const auto comm = Tpetra::getDefaultComm();
+  const auto model = build_model(comm, parse_scene(text, "dense.yaml"));
+  auto ops = std::make_shared<ModelOperators>(model);
+  ExplicitDriver driver(*ops, model.scene.stages.front());
+  Vector d(model.maps.owned_dofs);
+  d.randomize(-amplitude, amplitude);
+  const double exact = dense_critical_step(model, ops, d, driver.mass());
+  StableTimeStep stable(*ops, driver.mass());
+  const double estimate = stable.estimate(d);
+  EXPECT_LE(estimate, exact * (1 + 1e-9)) << "estimate " << estimate << ", exact " << exact;
+  EXPECT_GE(estimate, 0.97 * exact) << "estimate " << estimate << ", exact " << exact;
+  // A rigid wall of penalty p adds p / dt^2 to omega^2: stable while dt^2 omega^2 + p <= 4.
+  StableTimeStep walled(*ops, driver.mass(), 1.0);
+  EXPECT_NEAR(walled.estimate(d) / estimate, std::sqrt(0.75), 1e-6);
+}
+
+TEST(Explicit, StableTimeStepNeverExceedsTheDenseEigenvalueBound) {
+  expect_bound(R"(
+mesh:
+  generate: {element: quad4, lower: [0, 0], upper: [3, 1], cells: [9, 3], perturbation: 0.2}
+parts:
+  - {name: plate, blocks: [block_1], material: m, plane: stress}
+materials:
+  - {name: m, model: linear_elastic, density: 2.0, youngs_modulus: 70.0, poissons_ratio: 0.3}
+stages:
+  - {name: go, driver: explicit, end_time: 1.0}
+)",
+               0.0);
+  expect_bound(R"(
+mesh:
+  generate: {element: hex8, lower: [0, 0, 0], upper: [2, 1, 1], cells: [4, 2, 2], perturbation: 0.2}
+parts:
+  - {name: block, blocks: [block_1], material: rubber, section: {formulation: total_lagrangian}}
+materials:
+  - {name: rubber, model: neo_hookean, density: 1.0, youngs_modulus: 10.0, poissons_ratio: 0.45}
+stages:
+  - {name: go, driver: explicit, end_time: 1.0}
+)",
+               0.05);
 }
 
 }  // namespace
