@@ -12,7 +12,7 @@
 #include <cstring>
 
 #include "ExplicitStep.hpp"
-#include "core/RunSummary.hpp"
+#include "run/RunSummary.hpp"
 #include "operators/ModelOperators.hpp"
 #include "scene/SceneReader.hpp"
 

@@ -14,8 +14,8 @@
 
 #include <math.h>  // log, sqrt: callable in host and device code
 
-#include "core/Inline.hpp"
-#include "core/Tensor.hpp"
+#include "tensor/Inline.hpp"
+#include "tensor/Tensor.hpp"
 
 namespace efg::physics {
 

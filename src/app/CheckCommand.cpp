@@ -7,7 +7,7 @@
 #include "core/Log.hpp"
 #include "io/ExodusWriter.hpp"
 #include "mesh/NodalVolume.hpp"
-#include "run/Model.hpp"
+#include "model/Model.hpp"
 #include "run/RunChecks.hpp"
 #include "scene/SceneEcho.hpp"
 #include "scene/SceneSchema.hpp"

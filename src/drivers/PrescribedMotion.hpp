@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "operators/SolidOperator.hpp"
-#include "run/Curves.hpp"
-#include "run/Model.hpp"
+#include "model/Curves.hpp"
+#include "model/Model.hpp"
 
 namespace efg {
 

@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "operators/SolidOperator.hpp"
-#include "run/Curves.hpp"
-#include "verification/ExactSolutions.hpp"
+#include "model/Curves.hpp"
+#include "model/ExactSolutions.hpp"
 
 namespace efg {
 

@@ -11,7 +11,7 @@
 
 #include "operators/CouplingGraph.hpp"
 #include "operators/SolidKernels.hpp"
-#include "run/Model.hpp"
+#include "model/Model.hpp"
 
 namespace efg {
 

@@ -4,7 +4,7 @@
 #pragma once
 
 #include "drivers/RunState.hpp"
-#include "run/Model.hpp"
+#include "model/Model.hpp"
 
 namespace efg {
 

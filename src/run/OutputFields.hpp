@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "operators/SolidOperator.hpp"
-#include "run/Model.hpp"
+#include "model/Model.hpp"
 
 namespace efg {
 

@@ -8,7 +8,7 @@
 
 #include "mesh/BackgroundMesh.hpp"
 #include "parallel/Comm.hpp"
-#include "run/Model.hpp"
+#include "model/Model.hpp"
 #include "scene/Scene.hpp"
 
 namespace efg {

@@ -10,7 +10,7 @@
 
 #include "core/DeviceArrays.hpp"
 #include "core/Errors.hpp"
-#include "core/RunSummary.hpp"
+#include "run/RunSummary.hpp"
 #include "core/Threads.hpp"
 #include "core/Version.hpp"
 

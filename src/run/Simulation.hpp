@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "run/Model.hpp"
+#include "model/Model.hpp"
 #include "verification/ErrorNorms.hpp"
 
 namespace efg {

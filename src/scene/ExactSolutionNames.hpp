@@ -1,5 +1,5 @@
 // The exact solutions a scene may name (verification.exact_solution). One list: the schema offers
-// these choices and verification/ExactSolutions.cpp implements each (a unit test checks that the
+// these choices and model/ExactSolutions.cpp implements each (a unit test checks that the
 // implemented set is exactly this one, so that nothing is offered without an implementation).
 #pragma once
 

@@ -6,7 +6,8 @@
 // norm of the linear elasticity tensor).
 #pragma once
 
-#include "drivers/StaticProblem.hpp"
+#include "model/ExactSolutions.hpp"
+#include "operators/SolidOperator.hpp"
 
 namespace efg {
 

@@ -11,7 +11,7 @@
 #include "scene/SceneReader.hpp"
 #include "scene/SceneSchema.hpp"
 #include "scene/SchemaMarkdown.hpp"
-#include "verification/ExactSolutions.hpp"
+#include "model/ExactSolutions.hpp"
 
 namespace efg {
 namespace {

@@ -1,7 +1,7 @@
 // Small dense tensor helpers for Dim x Dim arrays (Dim = 2 or 3).
 #pragma once
 
-#include "core/Inline.hpp"
+#include "tensor/Inline.hpp"
 
 namespace efg::physics {
 

@@ -1,4 +1,4 @@
-#include "run/Model.hpp"
+#include "model/Model.hpp"
 
 #include <set>
 

@@ -1,4 +1,4 @@
-#include "verification/ExactSolutions.hpp"
+#include "model/ExactSolutions.hpp"
 
 #include <map>
 #include <stdexcept>

@@ -1,4 +1,4 @@
-#include "run/Curves.hpp"
+#include "model/Curves.hpp"
 
 #include <algorithm>
 #include <stdexcept>

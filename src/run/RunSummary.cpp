@@ -1,4 +1,4 @@
-#include "core/RunSummary.hpp"
+#include "run/RunSummary.hpp"
 
 #include <sys/resource.h>
 #include <Teuchos_CommHelpers.hpp>
