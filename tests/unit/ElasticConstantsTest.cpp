@@ -13,6 +13,17 @@ TEST(ElasticConstants, RoundTripToYoungsModulusAndPoisson) {
   EXPECT_NEAR(c.kappa, c.lambda + 2 * c.mu / 3, 1e-7);
 }
 
+TEST(ElasticConstants, HandComputedValues) {
+  // E = 10, nu = 0.3: mu = 10 / 2.6 = 3.846153846..., lambda = 3 / 0.52 = 5.769230769...,
+  // kappa = E / (3 (1 - 2 nu)) = 10 / 1.2 = 8.333...
+  const auto c = elastic_constants(10.0, 0.3);
+  EXPECT_NEAR(c.mu, 3.8461538461538463, 1e-14);
+  EXPECT_NEAR(c.lambda, 5.7692307692307692, 1e-14);
+  EXPECT_NEAR(c.kappa, 8.3333333333333333, 1e-14);
+  // Plane stress: lambda* = E nu / (1 - nu^2) = 3 / 0.91.
+  EXPECT_NEAR(plane_stress_constants(10.0, 0.3).lambda, 3.2967032967032967, 1e-14);
+}
+
 TEST(ElasticConstants, PlaneStressGivesZeroOutOfPlaneStress) {
   // Uniaxial in-plane strain state of a plane stress sheet: sigma_xx = E eps / (1 - nu^2) for
   // eps_yy = 0, eps_xx = eps.
