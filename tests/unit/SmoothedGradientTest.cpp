@@ -122,5 +122,45 @@ TEST(SmoothedGradient, NodalDomainsOfARegularGridAreItsDualCells) {
   }
 }
 
+// The facet quadrature itself (issue 13, item 10): 2 Gauss points per half segment integrate a
+// quadratic along each facet exactly. On a regular grid of spacing h an interior node's domain is
+// the dual cell [x - h/2, x + h/2] x [y - h/2, y + h/2], so for f = x y^2 the divergence theorem
+// gives by hand: boundary integral of f n_x = integral of y^2 over the cell = h (y^2 h + h^3/12).
+// Points moved to +-1/4 of the half segment integrate y^2 wrongly and fail this.
+TEST(SmoothedGradient, FacetPointsIntegrateAQuadraticExactly) {
+  const auto mesh = generate_mesh(test::box_spec(CellType::quad4, 4));  // h = 0.25
+  const auto points = smoothing_points(mesh, {mesh.blocks[0].name});
+  std::vector<double> integral(mesh.node_count(), 0.0);
+  for (const auto& p : points) {
+    const double f = p.x[0] * p.x[1] * p.x[1];
+    integral[static_cast<std::size_t>(p.plus)] += f * p.weighted_normal[0];
+    if (p.minus >= 0) integral[static_cast<std::size_t>(p.minus)] -= f * p.weighted_normal[0];
+  }
+  const double h = 0.25;
+  int interior = 0;
+  for (std::size_t n = 0; n < mesh.node_count(); ++n) {
+    const double x = mesh.coordinates[2 * n], y = mesh.coordinates[2 * n + 1];
+    if (x < 1e-12 || x > 2 - 1e-12 || y < 1e-12 || y > 1 - 1e-12) continue;
+    ++interior;
+    EXPECT_NEAR(integral[n], h * (y * y * h + h * h * h / 12), 1e-15)
+        << "node at " << x << ", " << y;
+  }
+  EXPECT_EQ(interior, 7 * 3);
+}
+
+// The boundary rule of one side: the same exactness for a cubic along a side from (0, 0) to
+// (2, 0): integral of x^3 = 4, of x^2 = 8/3.
+TEST(SmoothedGradient, SidePointsIntegrateACubicExactly) {
+  const auto points = side_smoothing_points({{{0, 0, 0}}, {{2, 0, 0}}}, {0, 1}, 2);
+  double cubic = 0, square = 0;
+  for (const auto& p : points) {
+    const double w = std::hypot(p.weighted_normal[0], p.weighted_normal[1]);
+    cubic += w * p.x[0] * p.x[0] * p.x[0];
+    square += w * p.x[0] * p.x[0];
+  }
+  EXPECT_NEAR(cubic, 4.0, 1e-14);
+  EXPECT_NEAR(square, 8.0 / 3.0, 1e-14);
+}
+
 }  // namespace
 }  // namespace efg
