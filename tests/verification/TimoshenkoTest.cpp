@@ -5,11 +5,15 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 
 #include "core/Log.hpp"
+#include "io/ExodusWriter.hpp"
+#include "mesh/MeshGenerator.hpp"
 #include "support/BeamScene.hpp"
 #include "support/StaticSolve.hpp"
+#include "support/TestMeshes.hpp"
 #include "verification/ErrorNorms.hpp"
 
 namespace efg {
@@ -68,6 +72,52 @@ TEST(TimoshenkoReaction, ClampReactionBalancesTheTipLoad) {
     const auto r = s.problem->reactions(*s.d)[0];
     EXPECT_NEAR(r[1], -1000.0, 1.0) << method;  // the support holds the 1000 shear load
     EXPECT_NEAR(r[0], 0.0, 1.0) << method;
+  }
+}
+
+// The clamp split into its upper and lower halves (issue 13, item 8: the total reaction only
+// balances the load, whatever the modulus or the clamp's stress field). The exact bending stress
+// at the clamp, sigma_xx(0, y) = -P L y / I, puts a horizontal force of P L D^2 / (8 I) =
+// 1.5 P L / D = 6000 on each half, opposite in sign; the shear halves add up to P = 1000.
+TEST(TimoshenkoReaction, ClampHalvesCarryTheExactBendingForces) {
+  GeneratorSpec spec;
+  spec.element = CellType::quad4;
+  spec.dimension = 2;
+  spec.lower = {0, -6, 0};
+  spec.upper = {48, 6, 0};
+  spec.cells = {64, 16, 1};
+  auto mesh = generate_mesh(spec);
+  NodeSet top{"clamp_top", 101, {}}, bottom{"clamp_bottom", 102, {}};
+  for (auto n : mesh.find_node_set("xmin")->nodes)
+    (mesh.coordinates[2 * static_cast<std::size_t>(n) + 1] > 1e-9 ? top : bottom)
+        .nodes.push_back(n);
+  mesh.node_sets.push_back(top);
+  mesh.node_sets.push_back(bottom);
+  const auto path = test::scratch_dir("clamp_halves") + "/beam.e";
+  ExodusWriter(path, mesh, OutputLayout{}, "beam with clamp halves").close();
+  for (const char* method : {"transformation", "nitsche", "penalty"}) {
+    std::ostringstream scene;
+    scene << "mesh: {file: " << path << "}\n"
+          << "parts:\n  - {name: beam, blocks: [block_1], material: m, plane: stress, section: "
+             "{dilation: 2.0}}\n"
+          << "materials:\n  - {name: m, model: linear_elastic, youngs_modulus: 3.0e7, "
+             "poissons_ratio: 0.3}\n"
+          << "boundary_conditions:\n";
+    for (const char* half : {"clamp_top", "clamp_bottom"})
+      scene << "  - {name: " << half << ", type: displacement, node_set: " << half
+            << ", from_exact_solution: [x, y], method: " << method << "}\n";
+    scene << "loads:\n  - {name: tip, type: traction, side_set: xmax, from_exact_solution: true}\n"
+          << "stages:\n  - {name: load, driver: implicit, end_time: 1}\n"
+          << "verification:\n  exact_solution: timoshenko_beam\n  parameters: {length: 48, "
+             "depth: 12, load: 1000}\n";
+    auto s = test::solve_static(scene.str(), "halves.yaml");
+    const auto r = s.problem->reactions(*s.d);
+    ASSERT_EQ(r.size(), 2u);
+    std::printf("%s: upper half (%.2f, %.2f), lower half (%.2f, %.2f)\n", method, r[0][0], r[0][1],
+                r[1][0], r[1][1]);
+    EXPECT_NEAR(std::abs(r[0][0]), 6000.0, 0.02 * 6000.0) << method;
+    EXPECT_NEAR(r[0][0] + r[1][0], 0.0, 0.005 * 6000.0) << method;
+    EXPECT_NEAR(r[0][1] + r[1][1], -1000.0, 1.0) << method;
   }
 }
 
