@@ -1,0 +1,99 @@
+#include "run/RunRecorder.hpp"
+
+#include <Teuchos_CommHelpers.hpp>
+#include <Teuchos_TimeMonitor.hpp>
+
+#include <filesystem>
+#include <iomanip>
+
+#include "core/Log.hpp"
+#include "parallel/Collective.hpp"
+#include "run/OutputFields.hpp"
+
+namespace efg {
+namespace {
+/// Strain magnitude |sym grad u| beyond which a small-strain part is warned about.
+constexpr double kSmallStrainLimit = 0.2;
+}  // namespace
+
+RunRecorder::RunRecorder(const CommPtr& comm, const Model& model, const ModelOperators& ops,
+                         StaticProblem* problem, const std::string& path)
+    : comm_(comm),
+      model_(model),
+      ops_(ops),
+      problem_(problem),
+      path_(path),
+      columns_(output_columns(model.scene.output.fields, model.mesh.dimension)),
+      history_(model),
+      output_(comm, path, model.mesh, model.maps.owned_nodes,
+              OutputLayout{columns_, {}, history_.names()},
+              model.scene.title.empty() ? model.scene.name : model.scene.title),
+      d_overlap_(model.maps.overlap_dofs),
+      v_overlap_(model.maps.overlap_dofs),
+      a_overlap_(model.maps.overlap_dofs) {
+  if (!model.scene.output.history.empty() && comm->getRank() == 0) {
+    csv_final_ = (std::filesystem::path(path).parent_path() / model.scene.output.history).string();
+    csv_ = std::make_unique<std::ofstream>(csv_final_ + ".part");  // renamed on success
+    *csv_ << history_.csv_header() << "\n";
+  }
+}
+
+// Small-strain parts: particles passing through each other stop the run before the record is
+// written; strains beyond what the formulation represents are announced once.
+void RunRecorder::check_kinematics(double time) {
+  double mine = 0, largest = 0;
+  run_collectively(comm_, [&] { mine = ops_.solid().check_small_strain(d_overlap_, time); });
+  Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MAX, mine, Teuchos::outArg(largest));
+  if (largest > kSmallStrainLimit && !strain_warned_) {
+    strain_warned_ = true;
+    Log::warning("strains of " + std::to_string(100 * largest) + " % at t = " +
+                 std::to_string(time) + " in a small-strain (linear_elastic) part: beyond " +
+                 std::to_string(static_cast<int>(100 * kSmallStrainLimit)) +
+                 " % its results are no longer a good approximation; use model neo_hookean "
+                 "with formulation total_lagrangian");
+  }
+}
+
+void RunRecorder::write(const RunState& s) {
+  Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewCounter("efg: output"));
+  ops_.to_overlap(s.d, d_overlap_);
+  check_kinematics(s.time);
+  ops_.to_overlap(s.v, v_overlap_);
+  ops_.to_overlap(s.a, a_overlap_);
+  const auto reactions = s.reactions_from_driver ? s.reactions
+                         : problem_              ? problem_->reactions(s.d)
+                                                 : std::vector<std::array<double, 3>>();
+  const auto globals = history_.values(ops_, s, d_overlap_, v_overlap_, reactions);
+  const auto values = state_columns(model_, ops_.solid(), d_overlap_, &v_overlap_, &a_overlap_);
+  ResultsOutput::MultiVector nodal(model_.maps.owned_nodes, columns_.size());
+  {
+    auto view = nodal.getLocalViewHost(Tpetra::Access::OverwriteAll);
+    for (std::size_t c = 0; c < values.size(); ++c)
+      for (std::size_t i = 0; i < values[c].size(); ++i) view(i, c) = values[c][i];
+  }
+  output_.write(s.time, nodal, globals);
+  last_globals_ = globals;
+  if (csv_) {
+    *csv_ << std::setprecision(12) << s.time;
+    for (double g : globals) *csv_ << "," << g;
+    *csv_ << "\n" << std::flush;
+  }
+  ++records_;
+}
+
+void RunRecorder::keep_partial() {
+  output_.close_partial();
+  if (csv_) csv_->close();
+  Log::info("results up to the failure: " + path_ + ".part" +
+            (csv_final_.empty() ? std::string() : " and " + csv_final_ + ".part"));
+}
+
+void RunRecorder::close() {
+  output_.close();
+  if (csv_) {
+    csv_->close();
+    std::filesystem::rename(csv_final_ + ".part", csv_final_);
+  }
+}
+
+}  // namespace efg
