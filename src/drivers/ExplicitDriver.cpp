@@ -39,7 +39,12 @@ ExplicitDriver::ExplicitDriver(const ModelOperators& ops, const StageSpec& stage
       wall_overlap_(ops.model().maps.overlap_dofs),
       d_overlap_(ops.model().maps.overlap_dofs),
       f_support_(mass_.getMap()),
-      f_support_old_(mass_.getMap()) {
+      f_support_old_(mass_.getMap()),
+      delta_(mass_.getMap()),
+      v_half_(mass_.getMap()),
+      previous_d_(mass_.getMap()),
+      previous_v_(mass_.getMap()),
+      previous_a_(mass_.getMap()) {
   inverse_mass_.reciprocal(mass_);
 }
 
@@ -145,45 +150,102 @@ ExplicitDriver::StepPlan ExplicitDriver::plan_steps(const Vector& d, double star
   return plan;
 }
 
-ExplicitSummary ExplicitDriver::run(RunState& state, const StateOutput& output, bool record_start) {
-  const auto& scene = ops_.model().scene;
-  const auto& comm = *mass_.getMap()->getComm();
-  const double start = state.time, end = stage_.end_time, span = end - start;
-  const double interval = stage_.output_interval.value_or(span / 20);
-  const double scale = stage_.settings["dt_scale"].as<double>();
-  const bool fixed = static_cast<bool>(stage_.settings["dt"]);
-  const bool allow_unstable = stage_.settings["allow_unstable_dt"].as<bool>();
-  const long long refresh = stage_.settings["dt_update_interval"].as<long long>();
-  Vector delta(mass_.getMap()), v_half(mass_.getMap()), previous_d(mass_.getMap()),
-      previous_v(mass_.getMap()), previous_a(mass_.getMap());
+void ExplicitDriver::energies(RunState& state) {
+  Vector mv(mass_.getMap());
+  mv.elementWiseMultiply(1.0, mass_, state.v, 0.0);
+  state.kinetic = 0.5 * reproducible_dot(mv, state.v);
+  ops_.to_overlap(state.d, d_overlap_);
+  const double mine = ops_.solid().strain_energy(d_overlap_);
+  Teuchos::reduceAll(*mass_.getMap()->getComm(), Teuchos::REDUCE_SUM, mine,
+                     Teuchos::outArg(state.internal));
+}
 
-  auto accelerate = [&](double time, double dt) {
-    return acceleration(time, dt, state.d, state.a);
-  };
-  auto energies = [&] {
-    state.kinetic = 0;
-    Vector mv(mass_.getMap());
-    mv.elementWiseMultiply(1.0, mass_, state.v, 0.0);
-    state.kinetic = 0.5 * reproducible_dot(mv, state.v);
-    ops_.to_overlap(state.d, d_overlap_);
-    const double mine = ops_.solid().strain_energy(d_overlap_);
-    Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, mine, Teuchos::outArg(state.internal));
-  };
-
-  const auto plan = plan_steps(state.d, start);
-  double dt_crit = plan.dt_crit, dt = plan.dt;
-
-  state.wall_forces = accelerate(state.time, dt);
+void ExplicitDriver::start(RunState& state, double dt) {
+  state.wall_forces = acceleration(state.time, dt, state.d, state.a);
   motion_.support_force(mass_, state.a, f_support_);
   const Vector v_start(state.v, Teuchos::Copy);
-  motion_.constrain_end(curve_factor(scene, state.time, 1.0), v_start, state.v, state.a);
-  energies();
+  motion_.constrain_end(curve_factor(ops_.model().scene, state.time, 1.0), v_start, state.v,
+                        state.a);
+  energies(state);
   if (!state.energy_started) {
     state.initial_energy = state.kinetic + state.internal;
     state.energy_started = true;
   }
   state.dt = dt;
   state.reactions_from_driver = true;
+}
+
+void ExplicitDriver::restore_previous(RunState& state) const {
+  Tpetra::deep_copy(state.d, previous_d_);
+  Tpetra::deep_copy(state.v, previous_v_);
+  Tpetra::deep_copy(state.a, previous_a_);
+}
+
+void ExplicitDriver::advance(RunState& state, double step_dt, long long step,
+                             const StateOutput& output) {
+  const auto& scene = ops_.model().scene;
+  const auto begin = curve_factor(scene, state.time, 1.0);
+  const auto mid = curve_factor(scene, state.time + 0.5 * step_dt, 1.0);
+  const auto at_end = curve_factor(scene, state.time + step_dt, 1.0);
+  Tpetra::deep_copy(previous_d_, state.d);
+  Tpetra::deep_copy(previous_v_, state.v);
+  Tpetra::deep_copy(previous_a_, state.a);
+  Tpetra::deep_copy(v_half_, state.v);
+  v_half_.update(0.5 * step_dt, state.a, 1.0);
+  motion_.constrain_velocity(begin, mid, at_end, step_dt, v_half_);
+  delta_.update(step_dt, v_half_, 0.0);
+  state.d.update(1.0, delta_, 1.0);
+  Tpetra::deep_copy(f_ext_old_, f_ext_);
+  Tpetra::deep_copy(f_wall_old_, f_wall_);
+  Tpetra::deep_copy(f_support_old_, f_support_);
+  // An inverted point (det F <= 0) may show on one rank only: agree on it collectively, write
+  // the last good state, and name the point, step and time.
+  try {
+    run_collectively(mass_.getMap()->getComm(), [&] {
+      state.wall_forces = acceleration(state.time + step_dt, step_dt, state.d, state.a);
+    });
+  } catch (const std::exception& e) {
+    const bool here = dynamic_cast<const NumericalError*>(&e) != nullptr;
+    const std::string what = e.what();
+    restore_previous(state);
+    output(state);
+    if (!here) throw;
+    std::ostringstream why;
+    why << "stage '" << stage_.name << "': " << what << " at step " << step
+        << ", t = " << state.time + step_dt << "; the last good state is in the results";
+    throw NumericalError(why.str());
+  }
+  Tpetra::deep_copy(state.v, v_half_);
+  state.v.update(0.5 * step_dt, state.a, 1.0);
+  motion_.support_force(mass_, state.a, f_support_);
+  motion_.constrain_end(at_end, v_half_, state.v, state.a);
+  state.time += step_dt;
+  state.dt = step_dt;
+  account_energy(state, delta_);
+  if (!finite(state)) {
+    // Write the last good state, then name the particle, step and time.
+    RunState failed(state.d.getMap());
+    Tpetra::deep_copy(failed.d, state.d);
+    Tpetra::deep_copy(failed.v, state.v);
+    failed.time = state.time;
+    restore_previous(state);
+    state.time -= step_dt;
+    output(state);
+    report_non_finite(failed, step);
+  }
+}
+
+ExplicitSummary ExplicitDriver::run(RunState& state, const StateOutput& output, bool record_start) {
+  const double start_time = state.time, end = stage_.end_time, span = end - start_time;
+  const double interval = stage_.output_interval.value_or(span / 20);
+  const double scale = stage_.settings["dt_scale"].as<double>();
+  const bool fixed = static_cast<bool>(stage_.settings["dt"]);
+  const bool allow_unstable = stage_.settings["allow_unstable_dt"].as<bool>();
+  const long long refresh = stage_.settings["dt_update_interval"].as<long long>();
+
+  const auto plan = plan_steps(state.d, start_time);
+  double dt_crit = plan.dt_crit, dt = plan.dt;
+  start(state, dt);
   auto record = [&] {
     state.reactions = motion_.reactions(f_support_);
     output(state);
@@ -193,7 +255,7 @@ ExplicitSummary ExplicitDriver::run(RunState& state, const StateOutput& output, 
   Progress progress("stage '" + stage_.name + "'", span);
   ExplicitSummary summary;
   summary.smallest_dt = summary.largest_dt = dt;
-  double next_output = std::min(end, start + interval);
+  double next_output = std::min(end, start_time + interval);
   double reference_energy = std::max(state.initial_energy, 1e-300);
   Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewCounter("efg: explicit time steps"));
   while (state.time < end - 1e-12 * span) {
@@ -202,65 +264,13 @@ ExplicitSummary ExplicitDriver::run(RunState& state, const StateOutput& output, 
       dt = scale * dt_crit;
     }
     const double step_dt = std::min(dt, end - state.time);
-    const auto begin = curve_factor(scene, state.time, 1.0);
-    const auto mid = curve_factor(scene, state.time + 0.5 * step_dt, 1.0);
-    const auto at_end = curve_factor(scene, state.time + step_dt, 1.0);
-    Tpetra::deep_copy(previous_d, state.d);
-    Tpetra::deep_copy(previous_v, state.v);
-    Tpetra::deep_copy(previous_a, state.a);
-    Tpetra::deep_copy(v_half, state.v);
-    v_half.update(0.5 * step_dt, state.a, 1.0);
-    motion_.constrain_velocity(begin, mid, at_end, step_dt, v_half);
-    delta.update(step_dt, v_half, 0.0);
-    state.d.update(1.0, delta, 1.0);
-    Tpetra::deep_copy(f_ext_old_, f_ext_);
-    Tpetra::deep_copy(f_wall_old_, f_wall_);
-    Tpetra::deep_copy(f_support_old_, f_support_);
-    // An inverted point (det F <= 0) may show on one rank only: agree on it collectively, write
-    // the last good state, and name the point, step and time.
-    try {
-      run_collectively(mass_.getMap()->getComm(),
-                       [&] { state.wall_forces = accelerate(state.time + step_dt, step_dt); });
-    } catch (const std::exception& e) {
-      const bool here = dynamic_cast<const NumericalError*>(&e) != nullptr;
-      const std::string what = e.what();
-      Tpetra::deep_copy(state.d, previous_d);
-      Tpetra::deep_copy(state.v, previous_v);
-      Tpetra::deep_copy(state.a, previous_a);
-      output(state);
-      if (!here) throw;
-      std::ostringstream why;
-      why << "stage '" << stage_.name << "': " << what << " at step " << summary.steps + 1
-          << ", t = " << state.time + step_dt << "; the last good state is in the results";
-      throw NumericalError(why.str());
-    }
-    Tpetra::deep_copy(state.v, v_half);
-    state.v.update(0.5 * step_dt, state.a, 1.0);
-    motion_.support_force(mass_, state.a, f_support_);
-    motion_.constrain_end(at_end, v_half, state.v, state.a);
-    state.time += step_dt;
-    state.dt = step_dt;
+    advance(state, step_dt, summary.steps + 1, output);
     ++summary.steps;
     summary.smallest_dt = std::min(summary.smallest_dt, step_dt);
     summary.largest_dt = std::max(summary.largest_dt, step_dt);
-    account_energy(state, delta);
-    if (!finite(state)) {
-      // Write the last good state, then name the particle, step and time.
-      RunState failed(state.d.getMap());
-      Tpetra::deep_copy(failed.d, state.d);
-      Tpetra::deep_copy(failed.v, state.v);
-      const double failed_time = state.time;
-      Tpetra::deep_copy(state.d, previous_d);
-      Tpetra::deep_copy(state.v, previous_v);
-      Tpetra::deep_copy(state.a, previous_a);
-      state.time -= step_dt;
-      output(state);
-      failed.time = failed_time;
-      report_non_finite(failed, summary.steps);
-    }
     const bool due = state.time >= next_output - 1e-12 * span;
     if (due || allow_unstable) {
-      energies();
+      energies(state);
       summary.worst_balance_error = std::max(summary.worst_balance_error, state.balance_error());
       reference_energy =
           std::max({reference_energy, state.initial_energy + std::abs(state.external_work) +
@@ -283,7 +293,7 @@ ExplicitSummary ExplicitDriver::run(RunState& state, const StateOutput& output, 
       record();
       next_output = std::min(end, next_output + interval);
     }
-    progress.update(state.time - start);
+    progress.update(state.time - start_time);
   }
   progress.finish();
   return summary;

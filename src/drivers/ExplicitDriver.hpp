@@ -51,6 +51,13 @@ class ExplicitDriver {
   bool finite(const RunState& state) const;  // collective
   [[noreturn]] void report_non_finite(const RunState& state, long long step) const;
   void account_energy(RunState& state, const Vector& delta_d) const;
+  /// E_kin and E_int of the state.
+  void energies(RunState& state);
+  /// Accelerations, support forces and energies of the start state.
+  void start(RunState& state, double dt);
+  /// One velocity-Verlet step (step numbers the messages); on failure writes the last good state.
+  void advance(RunState& state, double step_dt, long long step, const StateOutput& output);
+  void restore_previous(RunState& state) const;
 
   const ModelOperators& ops_;
   const StageSpec& stage_;
@@ -62,6 +69,7 @@ class ExplicitDriver {
   void refuse_endless(double span, double dt, double dt_crit) const;
   static constexpr double kMaxSteps = 1e10;  ///< a stage needing more steps is refused
   Vector f_support_, f_support_old_;  ///< forces of the prescribed motions (their work is external)
+  Vector delta_, v_half_, previous_d_, previous_v_, previous_a_;  ///< one step's scratch
 };
 
 }  // namespace efg
