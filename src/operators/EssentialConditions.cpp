@@ -29,6 +29,23 @@ double spacing_of(const PartDiscretization& d, std::size_t particle) {
   return h;
 }
 
+// h of a boundary side: its longest edge between consecutive side nodes.
+double side_size(const BackgroundMesh& mesh, const std::vector<LocalIndex>& nodes) {
+  const auto udim = static_cast<std::size_t>(mesh.dimension);
+  double h = 0;
+  for (std::size_t a = 0; a < nodes.size(); ++a) {
+    double d2 = 0;
+    for (std::size_t k = 0; k < udim; ++k) {
+      const double dx =
+          mesh.coordinates[static_cast<std::size_t>(nodes[a]) * udim + k] -
+          mesh.coordinates[static_cast<std::size_t>(nodes[(a + 1) % nodes.size()]) * udim + k];
+      d2 += dx * dx;
+    }
+    h = std::max(h, std::sqrt(d2));
+  }
+  return h;
+}
+
 }  // namespace
 
 EssentialConditions::EssentialConditions(const Model& model, const SolidOperator& op,
@@ -36,143 +53,140 @@ EssentialConditions::EssentialConditions(const Model& model, const SolidOperator
     : dim_(model.mesh.dimension),
       conditions_(model.scene.boundary_conditions.size()),
       overlap_dofs_(model.maps.overlap_dofs) {
-  const auto& mesh = model.mesh;
-  const auto udim = static_cast<std::size_t>(dim_);
-  const int rank = model.partition.rank;
   double largest_modulus = 0;
   for (const auto& m : model.scene.materials)
     largest_modulus = std::max(largest_modulus, m.constants.at("youngs_modulus"));
-  const auto owned_rows = model.maps.owned_dofs;
   for (std::size_t c = 0; c < model.scene.boundary_conditions.size(); ++c) {
     const auto& bc = model.scene.boundary_conditions[c];
     if (bc.type != "displacement") continue;  // velocity conditions belong to the explicit driver
-    const int method = method_of(bc.method);
-    const double alpha = bc.penalty.value_or(method == 1 ? 100.0 : 1e4);
-    const auto& set = mesh.find_node_set(bc.node_set)->nodes;
-    std::vector<char> in_set(mesh.node_count(), 0);
-    for (auto n : set) in_set[static_cast<std::size_t>(n)] = 1;
-    std::array<bool, 3> mask{};
-    for (std::size_t k = 0; k < 3; ++k) mask[k] = bc.components[k].has_value() || bc.from_exact[k];
-    auto prescribed = [&](const double* X, std::size_t k) {
+    Setup setup;
+    setup.index = c;
+    setup.bc = &bc;
+    setup.method = method_of(bc.method);
+    setup.beta_factor = bc.penalty.value_or(setup.method == 1 ? 100.0 : 1e4) * largest_modulus;
+    setup.modulus = largest_modulus;
+    for (std::size_t k = 0; k < 3; ++k)
+      setup.mask[k] = bc.components[k].has_value() || bc.from_exact[k];
+    setup.prescribed = [&bc, exact](const double* X, std::size_t k) {
       if (!bc.from_exact[k]) return bc.components[k].value_or(0.0);
       double u[3] = {0, 0, 0};
       exact->displacement(X, u);
       return u[k];
     };
-
-    // Collocated nodes (transformation).
-    if (method == 0)
-      for (auto node : set) {
-        if (model.partition.owner[static_cast<std::size_t>(node)] != rank) continue;
-        bool found = false;
-        for (std::size_t p = 0; p < model.parts.size() && !found; ++p) {
-          const auto& d = model.parts[p];
-          const auto end =
-              d.cloud.mesh_node.begin() + static_cast<std::ptrdiff_t>(d.cloud.owned_count);
-          const auto it = std::find(d.cloud.mesh_node.begin(), end, node);
-          if (it == end) continue;
-          found = true;
-          const auto row = static_cast<std::size_t>(it - d.cloud.mesh_node.begin());
-          const double s = largest_modulus * std::pow(spacing_of(d, row), dim_ - 2) *
-                           (dim_ == 2 ? d.part->thickness : 1.0);
-          for (int i = 0; i < dim_; ++i) {
-            if (!mask[static_cast<std::size_t>(i)]) continue;
-            NodeConstraint nc;
-            nc.condition = c;
-            nc.owned_row = owned_rows->getLocalElement(static_cast<GlobalOrdinal>(node) * dim_ + i);
-            nc.component = i;
-            nc.scale = s;
-            nc.base = prescribed(d.cloud.x(row), static_cast<std::size_t>(i));
-            nc.curve = bc.curve;
-            for (auto k = d.particle_values.offsets[row]; k < d.particle_values.offsets[row + 1];
-                 ++k) {
-              nc.nodes.push_back(
-                  op.overlap_node(p)[static_cast<std::size_t>(d.particle_values.particles[k])]);
-              nc.phi.push_back(d.particle_values.values[k]);
-            }
-            nodes_.push_back(std::move(nc));
-          }
-        }
-        if (!found)
-          throw InputError(model.scene.file + ": boundary condition '" + bc.name + "': node " +
-                           std::to_string(node + 1) + " of node set '" + bc.node_set +
-                           "' is not a particle of any meshfree part");
-      }
-
-    // Boundary points on the sides the node set covers.
-    long long sides_found = 0;
-    for (std::size_t p = 0; p < model.parts.size(); ++p) {
-      const auto& d = model.parts[p];
-      const auto material =
-          solid_material(*model.scene.find_material(d.part->material), *d.part, dim_);
-      const double thickness = dim_ == 2 ? d.part->thickness : 1.0;
-      std::vector<SidePoint> pts;
-      std::vector<double> beta;
-      for (const auto& [cell, side] : boundary_sides(mesh, d.part->blocks)) {
-        const auto nodes = mesh.side_node_indices(cell, side);
-        if (!std::all_of(nodes.begin(), nodes.end(),
-                         [&](LocalIndex n) { return in_set[static_cast<std::size_t>(n)] != 0; }))
-          continue;
-        ++sides_found;
-        if (model.partition
-                .owner[static_cast<std::size_t>(*std::min_element(nodes.begin(), nodes.end()))] !=
-            rank)
-          continue;
-        // h of the side: its longest edge to a neighbouring side node.
-        double h = 0;
-        for (std::size_t a = 0; a < nodes.size(); ++a) {
-          double d2 = 0;
-          for (std::size_t k = 0; k < udim; ++k) {
-            const double dx =
-                mesh.coordinates[static_cast<std::size_t>(nodes[a]) * udim + k] -
-                mesh.coordinates[static_cast<std::size_t>(nodes[(a + 1) % nodes.size()]) * udim +
-                                 k];
-            d2 += dx * dx;
-          }
-          h = std::max(h, std::sqrt(d2));
-        }
-        for (const auto& q : side_quadrature(mesh, cell, side)) {
-          pts.push_back(q);
-          beta.push_back(alpha * largest_modulus / h);
-        }
-      }
-      if (pts.empty()) continue;
-      std::vector<double> x;
-      for (const auto& q : pts)
-        x.insert(x.end(), q.x.begin(), q.x.begin() + static_cast<std::ptrdiff_t>(udim));
-      const auto v =
-          evaluate_shape_functions(d.cloud, x.data(), pts.size(), true, [&](std::size_t q) {
-            return "boundary point " + std::to_string(q) + " of condition '" + bc.name + "'";
-          });
-      for (std::size_t q = 0; q < pts.size(); ++q) {
-        BoundaryPoint b;
-        b.condition = c;
-        for (std::size_t k = 0; k < 3; ++k)
-          b.weighted_normal[k] = pts[q].normal[k] * pts[q].weight * thickness;
-        b.area = pts[q].weight * thickness;
-        b.constrained = mask;
-        for (std::size_t k = 0; k < udim; ++k)
-          if (mask[k]) b.base[k] = prescribed(pts[q].x.data(), k);
-        b.curve = bc.curve;
-        b.method = method;
-        b.beta = beta[q];
-        b.material = material;
-        for (auto k = v.neighbors.offsets[q]; k < v.neighbors.offsets[q + 1]; ++k) {
-          b.nodes.push_back(op.overlap_node(p)[static_cast<std::size_t>(v.neighbors.particles[k])]);
-          b.phi.push_back(v.phi[k]);
-          b.grad.insert(b.grad.end(), v.grad.begin() + static_cast<std::ptrdiff_t>(k * udim),
-                        v.grad.begin() + static_cast<std::ptrdiff_t>((k + 1) * udim));
-        }
-        points_.push_back(std::move(b));
-      }
-    }
-    if (method != 0 && sides_found == 0)
+    if (setup.method == 0) add_collocated_nodes(model, op, setup);
+    const auto sides_found = add_boundary_points(model, op, setup);
+    if (setup.method != 0 && sides_found == 0)
       throw InputError(model.scene.file + ": boundary condition '" + bc.name + "': node set '" +
                        bc.node_set + "' covers no side of a meshfree part, which method " +
                        bc.method +
                        " integrates over; use method transformation for point constraints");
   }
   build_reaction_weights(model);
+}
+
+// Transformation: one collocated constraint per owned node of the set and component.
+void EssentialConditions::add_collocated_nodes(const Model& model, const SolidOperator& op,
+                                               const Setup& setup) {
+  const auto& bc = *setup.bc;
+  const auto owned_rows = model.maps.owned_dofs;
+  for (auto node : model.mesh.find_node_set(bc.node_set)->nodes) {
+    if (model.partition.owner[static_cast<std::size_t>(node)] != model.partition.rank) continue;
+    bool found = false;
+    for (std::size_t p = 0; p < model.parts.size() && !found; ++p) {
+      const auto& d = model.parts[p];
+      const auto end = d.cloud.mesh_node.begin() + static_cast<std::ptrdiff_t>(d.cloud.owned_count);
+      const auto it = std::find(d.cloud.mesh_node.begin(), end, node);
+      if (it == end) continue;
+      found = true;
+      const auto row = static_cast<std::size_t>(it - d.cloud.mesh_node.begin());
+      const double s = setup.modulus * std::pow(spacing_of(d, row), dim_ - 2) *
+                       (dim_ == 2 ? d.part->thickness : 1.0);
+      for (int i = 0; i < dim_; ++i) {
+        if (!setup.mask[static_cast<std::size_t>(i)]) continue;
+        NodeConstraint nc;
+        nc.condition = setup.index;
+        nc.owned_row = owned_rows->getLocalElement(static_cast<GlobalOrdinal>(node) * dim_ + i);
+        nc.component = i;
+        nc.scale = s;
+        nc.base = setup.prescribed(d.cloud.x(row), static_cast<std::size_t>(i));
+        nc.curve = bc.curve;
+        for (auto k = d.particle_values.offsets[row]; k < d.particle_values.offsets[row + 1]; ++k) {
+          nc.nodes.push_back(
+              op.overlap_node(p)[static_cast<std::size_t>(d.particle_values.particles[k])]);
+          nc.phi.push_back(d.particle_values.values[k]);
+        }
+        nodes_.push_back(std::move(nc));
+      }
+    }
+    if (!found)
+      throw InputError(model.scene.file + ": boundary condition '" + bc.name + "': node " +
+                       std::to_string(node + 1) + " of node set '" + bc.node_set +
+                       "' is not a particle of any meshfree part");
+  }
+}
+
+// Boundary points on the part sides the node set covers (all of a side's nodes in the set);
+// returns how many such sides there are over all parts and ranks' cells.
+long long EssentialConditions::add_boundary_points(const Model& model, const SolidOperator& op,
+                                                   const Setup& setup) {
+  const auto& mesh = model.mesh;
+  const auto& bc = *setup.bc;
+  const auto udim = static_cast<std::size_t>(dim_);
+  std::vector<char> in_set(mesh.node_count(), 0);
+  for (auto n : mesh.find_node_set(bc.node_set)->nodes) in_set[static_cast<std::size_t>(n)] = 1;
+  long long sides_found = 0;
+  for (std::size_t p = 0; p < model.parts.size(); ++p) {
+    const auto& d = model.parts[p];
+    const double thickness = dim_ == 2 ? d.part->thickness : 1.0;
+    std::vector<SidePoint> pts;
+    std::vector<double> beta;
+    for (const auto& [cell, side] : boundary_sides(mesh, d.part->blocks)) {
+      const auto nodes = mesh.side_node_indices(cell, side);
+      if (!std::all_of(nodes.begin(), nodes.end(),
+                       [&](LocalIndex n) { return in_set[static_cast<std::size_t>(n)] != 0; }))
+        continue;
+      ++sides_found;
+      const auto first = *std::min_element(nodes.begin(), nodes.end());
+      if (model.partition.owner[static_cast<std::size_t>(first)] != model.partition.rank) continue;
+      const double h = side_size(mesh, nodes);
+      for (const auto& q : side_quadrature(mesh, cell, side)) {
+        pts.push_back(q);
+        beta.push_back(setup.beta_factor / h);
+      }
+    }
+    if (pts.empty()) continue;
+    std::vector<double> x;
+    for (const auto& q : pts)
+      x.insert(x.end(), q.x.begin(), q.x.begin() + static_cast<std::ptrdiff_t>(udim));
+    const auto v =
+        evaluate_shape_functions(d.cloud, x.data(), pts.size(), true, [&](std::size_t q) {
+          return "boundary point " + std::to_string(q) + " of condition '" + bc.name + "'";
+        });
+    const auto material =
+        solid_material(*model.scene.find_material(d.part->material), *d.part, dim_);
+    for (std::size_t q = 0; q < pts.size(); ++q) {
+      BoundaryPoint b;
+      b.condition = setup.index;
+      for (std::size_t k = 0; k < 3; ++k)
+        b.weighted_normal[k] = pts[q].normal[k] * pts[q].weight * thickness;
+      b.area = pts[q].weight * thickness;
+      b.constrained = setup.mask;
+      for (std::size_t k = 0; k < udim; ++k)
+        if (setup.mask[k]) b.base[k] = setup.prescribed(pts[q].x.data(), k);
+      b.curve = bc.curve;
+      b.method = setup.method;
+      b.beta = beta[q];
+      b.material = material;
+      for (auto k = v.neighbors.offsets[q]; k < v.neighbors.offsets[q + 1]; ++k) {
+        b.nodes.push_back(op.overlap_node(p)[static_cast<std::size_t>(v.neighbors.particles[k])]);
+        b.phi.push_back(v.phi[k]);
+        b.grad.insert(b.grad.end(), v.grad.begin() + static_cast<std::ptrdiff_t>(k * udim),
+                      v.grad.begin() + static_cast<std::ptrdiff_t>((k + 1) * udim));
+      }
+      points_.push_back(std::move(b));
+    }
+  }
+  return sides_found;
 }
 
 void EssentialConditions::add_couplings(CouplingGraph& graph) const {

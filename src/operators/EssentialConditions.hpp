@@ -23,12 +23,13 @@
 #pragma once
 
 #include <array>
+#include <functional>
 #include <string>
 #include <vector>
 
-#include "operators/SolidOperator.hpp"
 #include "model/Curves.hpp"
 #include "model/ExactSolutions.hpp"
+#include "operators/SolidOperator.hpp"
 
 namespace efg {
 
@@ -82,6 +83,18 @@ class EssentialConditions {
   double constrained_value(const NodeConstraint& c, const Vector& d_overlap) const;
 
   void build_reaction_weights(const Model& model);
+  /// One displacement condition while it is being set up.
+  struct Setup {
+    std::size_t index = 0;
+    const BoundaryConditionSpec* bc = nullptr;
+    int method = 0;
+    double beta_factor = 0;  ///< alpha E: beta = alpha E / h
+    double modulus = 0;      ///< the largest Young's modulus (row scaling)
+    std::array<bool, 3> mask{};
+    std::function<double(const double*, std::size_t)> prescribed;  ///< u_bar_k(X), unscaled
+  };
+  void add_collocated_nodes(const Model& model, const SolidOperator& op, const Setup& setup);
+  long long add_boundary_points(const Model& model, const SolidOperator& op, const Setup& setup);
 
   int dim_;
   std::size_t conditions_;
