@@ -72,7 +72,10 @@ std::string describe(const GeneratorSpec& s) {
   return o.str();
 }
 
-BackgroundMesh generate_mesh(const GeneratorSpec& s) {
+namespace {
+
+// The node lattice of the spec, after checking that the spec makes a mesh this code can hold.
+Lattice checked_lattice(const GeneratorSpec& s) {
   const int dim = s.dimension;
   if (cell_dimension(s.element) != dim)
     throw InputError("mesh generator: element " + cell_scene_name(s.element) + " does not fit a " +
@@ -85,7 +88,6 @@ BackgroundMesh generate_mesh(const GeneratorSpec& s) {
       throw InputError("mesh generator: upper must exceed lower in every direction");
     lat.n[du] = s.cells[du] + 1;
   }
-
   // A mesh this generator cannot hold is bad input, not a bad_alloc: efg indexes particles with
   // 32-bit ints, and each particle of an EFG model needs a few kilobytes.
   const double count = static_cast<double>(lat.n[0]) * lat.n[1] * lat.n[2];
@@ -95,20 +97,20 @@ BackgroundMesh generate_mesh(const GeneratorSpec& s) {
       << kMaxGeneratedNodes << " are supported (lower cells)";
     throw InputError(o.str());
   }
+  return lat;
+}
 
-  BackgroundMesh mesh;
-  mesh.dimension = dim;
-  mesh.source = "generated " + describe(s);
-  const std::size_t nodes = static_cast<std::size_t>(lat.n[0]) *
-                            static_cast<std::size_t>(lat.n[1]) * static_cast<std::size_t>(lat.n[2]);
-  std::vector<double> xyz(3 * nodes, 0.0);  // 3 components while building, trimmed for 2D
+// Node coordinates, 3 per node (z = 0 in 2D); interior nodes perturbed by the seeded draw.
+std::vector<double> lattice_coordinates(const GeneratorSpec& s, const Lattice& lat,
+                                        std::size_t nodes) {
+  std::vector<double> xyz(3 * nodes, 0.0);
   std::mt19937_64 rng(s.seed);
   for (int k = 0; k < lat.n[2]; ++k)
     for (int j = 0; j < lat.n[1]; ++j)
       for (int i = 0; i < lat.n[0]; ++i) {
         const std::array<int, 3> ijk = {i, j, k};
         const std::size_t node = lat.index(i, j, k);
-        for (int d = 0; d < dim; ++d) {
+        for (int d = 0; d < s.dimension; ++d) {
           const auto du = static_cast<std::size_t>(d);
           const double h = (s.upper[du] - s.lower[du]) / s.cells[du];
           double x = s.lower[du] + h * ijk[du];
@@ -120,19 +122,23 @@ BackgroundMesh generate_mesh(const GeneratorSpec& s) {
           xyz[3 * node + du] = x;
         }
       }
+  return xyz;
+}
 
+ElementBlock lattice_block(const GeneratorSpec& s, const Lattice& lat,
+                           const std::vector<double>& xyz) {
   ElementBlock block;
   block.name = s.block_name;
   block.id = 1;
   block.type = s.element;
-  const int ck = dim == 3 ? s.cells[2] : 1;
+  const int ck = s.dimension == 3 ? s.cells[2] : 1;
   for (int k = 0; k < ck; ++k)
     for (int j = 0; j < s.cells[1]; ++j)
       for (int i = 0; i < s.cells[0]; ++i) {
         auto at = [&](int di, int dj, int dk) {
           return static_cast<LocalIndex>(lat.index(i + di, j + dj, k + dk));
         };
-        if (dim == 2) {
+        if (s.dimension == 2) {
           const LocalIndex q[4] = {at(0, 0, 0), at(1, 0, 0), at(1, 1, 0), at(0, 1, 0)};
           if (s.element == CellType::quad4) {
             block.connectivity.insert(block.connectivity.end(), q, q + 4);
@@ -146,15 +152,13 @@ BackgroundMesh generate_mesh(const GeneratorSpec& s) {
           add_cells_of_hex(v, s.element, xyz.data(), block.connectivity);
         }
       }
+  return block;
+}
 
-  mesh.coordinates.resize(static_cast<std::size_t>(dim) * nodes);
-  for (std::size_t n = 0; n < nodes; ++n)
-    for (int d = 0; d < dim; ++d)
-      mesh.coordinates[static_cast<std::size_t>(dim) * n + static_cast<std::size_t>(d)] =
-          xyz[3 * n + static_cast<std::size_t>(d)];
-  mesh.blocks.push_back(std::move(block));
-
-  // Boundary sets: a node is on plane (d, lo/hi) by its lattice index, exact despite perturbation.
+// Boundary sets xmin..zmax (nodes and sides) and "all": a node is on plane (d, lo/hi) by its
+// lattice index, exact despite perturbation.
+void add_boundary_sets(const GeneratorSpec& s, const Lattice& lat, BackgroundMesh& mesh) {
+  const std::size_t nodes = mesh.node_count();
   const char* axis = "xyz";
   auto lattice_coord = [&](std::size_t node, int d) {
     std::size_t rest = node;
@@ -167,7 +171,7 @@ BackgroundMesh generate_mesh(const GeneratorSpec& s) {
     return static_cast<int>(ijk[static_cast<std::size_t>(d)]);
   };
   std::int64_t set_id = 1;
-  for (int d = 0; d < dim; ++d)
+  for (int d = 0; d < s.dimension; ++d)
     for (int hi = 0; hi < 2; ++hi) {
       const int plane = hi ? s.cells[static_cast<std::size_t>(d)] : 0;
       const std::string name = std::string(1, axis[d]) + (hi ? "max" : "min");
@@ -193,6 +197,26 @@ BackgroundMesh generate_mesh(const GeneratorSpec& s) {
   NodeSet all{"all", set_id, {}};
   for (std::size_t n = 0; n < nodes; ++n) all.nodes.push_back(static_cast<LocalIndex>(n));
   mesh.node_sets.push_back(std::move(all));
+}
+
+}  // namespace
+
+BackgroundMesh generate_mesh(const GeneratorSpec& s) {
+  const Lattice lat = checked_lattice(s);
+  const int dim = s.dimension;
+  BackgroundMesh mesh;
+  mesh.dimension = dim;
+  mesh.source = "generated " + describe(s);
+  const std::size_t nodes = static_cast<std::size_t>(lat.n[0]) *
+                            static_cast<std::size_t>(lat.n[1]) * static_cast<std::size_t>(lat.n[2]);
+  const auto xyz = lattice_coordinates(s, lat, nodes);  // 3 components, trimmed for 2D below
+  mesh.blocks.push_back(lattice_block(s, lat, xyz));
+  mesh.coordinates.resize(static_cast<std::size_t>(dim) * nodes);
+  for (std::size_t n = 0; n < nodes; ++n)
+    for (int d = 0; d < dim; ++d)
+      mesh.coordinates[static_cast<std::size_t>(dim) * n + static_cast<std::size_t>(d)] =
+          xyz[3 * n + static_cast<std::size_t>(d)];
+  add_boundary_sets(s, lat, mesh);
   return mesh;
 }
 
