@@ -11,10 +11,84 @@
 
 namespace efg {
 
+namespace {
+
+// Gauss points (order 5) of the owned cells of a part's blocks, with weights x thickness.
+struct PartQuadrature {
+  std::vector<double> x, w;
+};
+
+PartQuadrature part_quadrature(const Model& model, const PartDiscretization& part) {
+  const auto& mesh = model.mesh;
+  const auto udim = static_cast<std::size_t>(mesh.dimension);
+  const double thickness = mesh.dimension == 2 ? part.part->thickness : 1.0;
+  PartQuadrature out;
+  for (const auto& b : mesh.blocks) {
+    if (std::find(part.part->blocks.begin(), part.part->blocks.end(), b.name) ==
+        part.part->blocks.end())
+      continue;
+    const auto npc = static_cast<std::size_t>(cell_node_count(b.type));
+    const auto rule = reference_rule(b.type, 5);
+    std::vector<double> cx(npc * udim);
+    for (std::size_t c = 0; c < b.cell_count(); ++c) {
+      const auto* node = &b.connectivity[c * npc];
+      if (model.partition.owner[static_cast<std::size_t>(*std::min_element(node, node + npc))] !=
+          model.partition.rank)
+        continue;
+      for (std::size_t a = 0; a < npc; ++a)
+        for (std::size_t k = 0; k < udim; ++k)
+          cx[a * udim + k] = mesh.coordinates[static_cast<std::size_t>(node[a]) * udim + k];
+      for (std::size_t q = 0; q < rule.weight.size(); ++q) {
+        double point[3];
+        const double det = map_to_cell(b.type, cx.data(), &rule.xi[q * udim], point);
+        out.x.insert(out.x.end(), point, point + udim);
+        out.w.push_back(rule.weight[q] * det * thickness);
+      }
+    }
+  }
+  return out;
+}
+
+// Exact gradient by central differences of the exact displacement (smooth, cheap).
+void exact_gradient(const ExactSolution& exact, const double* x, std::size_t udim,
+                    double (&g)[3][3]) {
+  const double h = 1e-6 * (1.0 + std::abs(x[0]));
+  for (std::size_t j = 0; j < udim; ++j) {
+    double xp[3] = {0, 0, 0}, xm[3] = {0, 0, 0}, up[3], um[3];
+    for (std::size_t k = 0; k < udim; ++k) xp[k] = xm[k] = x[k];
+    xp[j] += h;
+    xm[j] -= h;
+    exact.displacement(xp, up);
+    exact.displacement(xm, um);
+    for (std::size_t i = 0; i < udim; ++i) g[i][j] = (up[i] - um[i]) / (2 * h);
+  }
+}
+
+// The largest nodal error |u^h(X_J) - u(X_J)| over the part's owned particles.
+double largest_nodal_error(
+    const PartDiscretization& part, const std::vector<int>& nodes, const ExactSolution& exact,
+    std::size_t udim,
+    const Kokkos::View<const double**, Kokkos::LayoutLeft, Kokkos::HostSpace>& d) {
+  double largest = 0;
+  for (std::size_t j = 0; j < part.cloud.owned_count; ++j) {
+    double uh[3] = {0, 0, 0}, u[3] = {0, 0, 0};
+    for (auto k = part.particle_values.offsets[j]; k < part.particle_values.offsets[j + 1]; ++k) {
+      const auto n = static_cast<std::size_t>(
+          nodes[static_cast<std::size_t>(part.particle_values.particles[k])]);
+      for (std::size_t i = 0; i < udim; ++i)
+        uh[i] += part.particle_values.values[k] * d(n * udim + i, 0);
+    }
+    exact.displacement(part.cloud.x(j), u);
+    for (std::size_t i = 0; i < udim; ++i) largest = std::max(largest, std::abs(uh[i] - u[i]));
+  }
+  return largest;
+}
+
+}  // namespace
+
 ErrorNorms error_norms(const Model& model, const SolidOperator& op, const Vector& d_overlap,
                        const ExactSolution& exact) {
-  const auto& mesh = model.mesh;
-  const int dim = mesh.dimension;
+  const int dim = model.mesh.dimension;
   const auto udim = static_cast<std::size_t>(dim);
   const auto d = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
   // sums: |e|^2, |u|^2, a(e,e), a(u,u)
@@ -22,31 +96,9 @@ ErrorNorms error_norms(const Model& model, const SolidOperator& op, const Vector
   for (std::size_t p = 0; p < model.parts.size(); ++p) {
     const auto& part = model.parts[p];
     const auto m = solid_material(*model.scene.find_material(part.part->material), *part.part, dim);
-    const double thickness = dim == 2 ? part.part->thickness : 1.0;
-    std::vector<double> x, w;
-    for (const auto& b : mesh.blocks) {
-      if (std::find(part.part->blocks.begin(), part.part->blocks.end(), b.name) ==
-          part.part->blocks.end())
-        continue;
-      const auto npc = static_cast<std::size_t>(cell_node_count(b.type));
-      const auto rule = reference_rule(b.type, 5);
-      std::vector<double> cx(npc * udim);
-      for (std::size_t c = 0; c < b.cell_count(); ++c) {
-        const auto* node = &b.connectivity[c * npc];
-        if (model.partition.owner[static_cast<std::size_t>(*std::min_element(node, node + npc))] !=
-            model.partition.rank)
-          continue;
-        for (std::size_t a = 0; a < npc; ++a)
-          for (std::size_t k = 0; k < udim; ++k)
-            cx[a * udim + k] = mesh.coordinates[static_cast<std::size_t>(node[a]) * udim + k];
-        for (std::size_t q = 0; q < rule.weight.size(); ++q) {
-          double point[3];
-          const double det = map_to_cell(b.type, cx.data(), &rule.xi[q * udim], point);
-          x.insert(x.end(), point, point + udim);
-          w.push_back(rule.weight[q] * det * thickness);
-        }
-      }
-    }
+    const auto quadrature = part_quadrature(model, part);
+    const auto& x = quadrature.x;
+    const auto& w = quadrature.w;
     const auto v = evaluate_shape_functions(part.cloud, x.data(), w.size(), true);
     const auto& nodes = op.overlap_node(p);
     // a(e, e) with the elasticity tensor: eps : C : eps = lambda tr(eps)^2 + 2 mu eps : eps.
@@ -71,17 +123,7 @@ ErrorNorms error_norms(const Model& model, const SolidOperator& op, const Vector
       }
       double u[3] = {0, 0, 0}, g[3][3] = {};
       exact.displacement(&x[q * udim], u);
-      // Exact gradient by central differences of the exact displacement (smooth, cheap).
-      const double h = 1e-6 * (1.0 + std::abs(x[q * udim]));
-      for (std::size_t j = 0; j < udim; ++j) {
-        double xp[3] = {0, 0, 0}, xm[3] = {0, 0, 0}, up[3], um[3];
-        for (std::size_t k = 0; k < udim; ++k) xp[k] = xm[k] = x[q * udim + k];
-        xp[j] += h;
-        xm[j] -= h;
-        exact.displacement(xp, up);
-        exact.displacement(xm, um);
-        for (std::size_t i = 0; i < udim; ++i) g[i][j] = (up[i] - um[i]) / (2 * h);
-      }
+      exact_gradient(exact, &x[q * udim], udim, g);
       double e[3][3] = {};
       for (std::size_t i = 0; i < udim; ++i) {
         local[0] += w[q] * (uh[i] - u[i]) * (uh[i] - u[i]);
@@ -91,19 +133,7 @@ ErrorNorms error_norms(const Model& model, const SolidOperator& op, const Vector
       local[2] += w[q] * energy(e);
       local[3] += w[q] * energy(g);
     }
-    // Nodal errors at the owned particles.
-    for (std::size_t j = 0; j < part.cloud.owned_count; ++j) {
-      double uh[3] = {0, 0, 0}, u[3] = {0, 0, 0};
-      for (auto k = part.particle_values.offsets[j]; k < part.particle_values.offsets[j + 1]; ++k) {
-        const auto n = static_cast<std::size_t>(
-            nodes[static_cast<std::size_t>(part.particle_values.particles[k])]);
-        for (std::size_t i = 0; i < udim; ++i)
-          uh[i] += part.particle_values.values[k] * d(n * udim + i, 0);
-      }
-      exact.displacement(part.cloud.x(j), u);
-      for (std::size_t i = 0; i < udim; ++i)
-        max_nodal = std::max(max_nodal, std::abs(uh[i] - u[i]));
-    }
+    max_nodal = std::max(max_nodal, largest_nodal_error(part, nodes, exact, udim, d));
   }
   const auto& comm = *model.maps.owned_dofs->getComm();
   double global[4] = {0, 0, 0, 0}, max_all = 0;
