@@ -40,97 +40,127 @@ int part_of_block(const Scene& scene, const std::string& name) {
   return -1;
 }
 
-ExternalLoads::ExternalLoads(const Model& model, const SolidOperator& op,
-                             const ExactSolution* exact) {
+namespace {
+
+// Point loads gathered per part, then spread to the particles by the shape functions.
+struct PointLoads {
+  explicit PointLoads(std::size_t parts) : x(parts), w(parts), value(parts) {}
+  void add(std::size_t part, const double* point, int dim, const std::array<double, 3>& v,
+           double weight) {
+    x[part].insert(x[part].end(), point, point + dim);
+    value[part].push_back(v);
+    w[part].push_back(weight);
+  }
+  void scatter(const Model& model, const SolidOperator& op, Vector& f_overlap) const {
+    for (std::size_t p = 0; p < x.size(); ++p)
+      add_point_loads(model.parts[p], op.overlap_node(p), x[p], value[p], w[p],
+                      model.mesh.dimension, f_overlap);
+  }
+  std::vector<std::vector<double>> x, w;
+  std::vector<std::vector<std::array<double, 3>>> value;
+};
+
+// Tractions and pressures on a side set, at the SCNI boundary points of its owned sides.
+void add_surface_load(const Model& model, const SolidOperator& op, const LoadSpec& spec,
+                      const ExactSolution* exact, Vector& f_overlap) {
   const auto& mesh = model.mesh;
   const int dim = mesh.dimension;
   const auto udim = static_cast<std::size_t>(dim);
-  const auto rank = model.partition.rank;
+  PointLoads loads(model.parts.size());
+  const auto* set = mesh.find_side_set(spec.set);
+  for (std::size_t i = 0; i < set->cells.size(); ++i) {
+    const auto cell = static_cast<std::size_t>(set->cells[i]);
+    const auto nodes = mesh.side_node_indices(cell, set->sides[i]);
+    const auto first = *std::min_element(nodes.begin(), nodes.end());
+    if (model.partition.owner[static_cast<std::size_t>(first)] != model.partition.rank) continue;
+    const int part = part_of_block(model.scene, mesh.locate_cell(cell).first->name);
+    if (part < 0) continue;
+    const double thickness =
+        dim == 2 ? model.scene.parts[static_cast<std::size_t>(part)].thickness : 1.0;
+    for (const auto& q : side_quadrature(mesh, cell, set->sides[i])) {
+      std::array<double, 3> t{0, 0, 0};
+      if (spec.type == "pressure") {
+        for (std::size_t d = 0; d < 3; ++d) t[d] = -spec.value[0] * q.normal[d];
+      } else if (spec.from_exact) {
+        double P[3][3];
+        exact->nominal_stress(q.x.data(), P);
+        for (std::size_t a = 0; a < 3; ++a)
+          for (std::size_t b = 0; b < 3; ++b) t[a] += P[a][b] * q.normal[b];
+      } else {
+        for (std::size_t d = 0; d < udim; ++d) t[d] = spec.value[d];
+      }
+      loads.add(static_cast<std::size_t>(part), q.x.data(), dim, t, q.weight * thickness);
+    }
+  }
+  loads.scatter(model, op, f_overlap);
+}
+
+// A force on a node set, shared equally by its nodes (at each owned particle of the set).
+void add_nodal_force(const Model& model, const SolidOperator& op, const LoadSpec& spec,
+                     Vector& f_overlap) {
+  const auto udim = static_cast<std::size_t>(model.mesh.dimension);
+  PointLoads loads(model.parts.size());
+  const auto* set = model.mesh.find_node_set(spec.set);
+  const double share = 1.0 / static_cast<double>(set->nodes.size());
+  for (auto node : set->nodes) {
+    if (model.partition.owner[static_cast<std::size_t>(node)] != model.partition.rank) continue;
+    for (std::size_t p = 0; p < model.parts.size(); ++p) {
+      const auto& c = model.parts[p].cloud;
+      const auto end = c.mesh_node.begin() + static_cast<std::ptrdiff_t>(c.owned_count);
+      const auto it = std::find(c.mesh_node.begin(), end, node);
+      if (it == end) continue;
+      std::array<double, 3> force{0, 0, 0};
+      for (std::size_t d = 0; d < udim; ++d) force[d] = spec.value[d];
+      loads.add(p, c.x(static_cast<std::size_t>(it - c.mesh_node.begin())), model.mesh.dimension,
+                force, share);
+    }
+  }
+  loads.scatter(model, op, f_overlap);
+}
+
+// A body force per unit volume over the named parts (all when none), at the integration points.
+void add_body_force(const Model& model, const SolidOperator& op, const LoadSpec& spec,
+                    const ExactSolution* exact, Vector& f_overlap) {
+  const int dim = model.mesh.dimension;
+  const auto udim = static_cast<std::size_t>(dim);
+  auto f = f_overlap.getLocalViewHost(Tpetra::Access::ReadWrite);
+  for (std::size_t p = 0; p < model.parts.size(); ++p) {
+    const auto& part = *model.parts[p].part;
+    if (!spec.parts.empty() &&
+        std::find(spec.parts.begin(), spec.parts.end(), part.name) == spec.parts.end())
+      continue;
+    const auto& ip = model.parts[p].points;
+    const double thickness = dim == 2 ? part.thickness : 1.0;
+    for (std::size_t q = 0; q < ip.size(); ++q) {
+      double b[3] = {0, 0, 0};
+      if (spec.from_exact) {
+        if (exact->body_force) exact->body_force(&ip.x[q * udim], b);
+      } else {
+        for (std::size_t d = 0; d < udim; ++d) b[d] = spec.value[d];
+      }
+      for (auto k = ip.values.offsets[q]; k < ip.values.offsets[q + 1]; ++k) {
+        const auto node = static_cast<std::size_t>(
+            op.overlap_node(p)[static_cast<std::size_t>(ip.values.particles[k])]);
+        for (std::size_t i = 0; i < udim; ++i)
+          f(node * udim + i, 0) += ip.values.values[k] * b[i] * ip.weight[q] * thickness;
+      }
+    }
+  }
+}
+
+}  // namespace
+
+ExternalLoads::ExternalLoads(const Model& model, const SolidOperator& op,
+                             const ExactSolution* exact) {
   Tpetra::Export<> to_owned(model.maps.overlap_dofs, model.maps.owned_dofs);
   for (const auto& spec : model.scene.loads) {
     Vector f_overlap(model.maps.overlap_dofs);
-    const std::size_t parts = model.parts.size();
-    std::vector<std::vector<double>> x(parts), w(parts);
-    std::vector<std::vector<std::array<double, 3>>> val(parts);
-    auto add = [&](std::size_t part, const double* point, const std::array<double, 3>& value,
-                   double weight) {
-      x[part].insert(x[part].end(), point, point + udim);
-      val[part].push_back(value);
-      w[part].push_back(weight);
-    };
-    if (spec.type == "traction" || spec.type == "pressure") {
-      const auto* set = mesh.find_side_set(spec.set);
-      for (std::size_t i = 0; i < set->cells.size(); ++i) {
-        const auto cell = static_cast<std::size_t>(set->cells[i]);
-        const auto nodes = mesh.side_node_indices(cell, set->sides[i]);
-        if (model.partition
-                .owner[static_cast<std::size_t>(*std::min_element(nodes.begin(), nodes.end()))] !=
-            rank)
-          continue;
-        const int part = part_of_block(model.scene, mesh.locate_cell(cell).first->name);
-        if (part < 0) continue;
-        const double thickness =
-            dim == 2 ? model.scene.parts[static_cast<std::size_t>(part)].thickness : 1.0;
-        for (const auto& q : side_quadrature(mesh, cell, set->sides[i])) {
-          std::array<double, 3> t{0, 0, 0};
-          if (spec.type == "pressure") {
-            for (std::size_t d = 0; d < 3; ++d) t[d] = -spec.value[0] * q.normal[d];
-          } else if (spec.from_exact) {
-            double P[3][3];
-            exact->nominal_stress(q.x.data(), P);
-            for (std::size_t a = 0; a < 3; ++a)
-              for (std::size_t b = 0; b < 3; ++b) t[a] += P[a][b] * q.normal[b];
-          } else {
-            for (std::size_t d = 0; d < udim; ++d) t[d] = spec.value[d];
-          }
-          add(static_cast<std::size_t>(part), q.x.data(), t, q.weight * thickness);
-        }
-      }
-      for (std::size_t p = 0; p < parts; ++p)
-        add_point_loads(model.parts[p], op.overlap_node(p), x[p], val[p], w[p], dim, f_overlap);
-    } else if (spec.type == "nodal_force") {
-      const auto* set = mesh.find_node_set(spec.set);
-      const double share = 1.0 / static_cast<double>(set->nodes.size());
-      for (auto node : set->nodes) {
-        if (model.partition.owner[static_cast<std::size_t>(node)] != rank) continue;
-        for (std::size_t p = 0; p < parts; ++p) {
-          const auto& c = model.parts[p].cloud;
-          const auto it =
-              std::find(c.mesh_node.begin(),
-                        c.mesh_node.begin() + static_cast<std::ptrdiff_t>(c.owned_count), node);
-          if (it == c.mesh_node.begin() + static_cast<std::ptrdiff_t>(c.owned_count)) continue;
-          std::array<double, 3> force{0, 0, 0};
-          for (std::size_t d = 0; d < udim; ++d) force[d] = spec.value[d];
-          add(p, c.x(static_cast<std::size_t>(it - c.mesh_node.begin())), force, share);
-        }
-      }
-      for (std::size_t p = 0; p < parts; ++p)
-        add_point_loads(model.parts[p], op.overlap_node(p), x[p], val[p], w[p], dim, f_overlap);
-    } else if (spec.type == "body_force") {
-      auto f = f_overlap.getLocalViewHost(Tpetra::Access::ReadWrite);
-      for (std::size_t p = 0; p < parts; ++p) {
-        const auto& part = *model.parts[p].part;
-        if (!spec.parts.empty() &&
-            std::find(spec.parts.begin(), spec.parts.end(), part.name) == spec.parts.end())
-          continue;
-        const auto& ip = model.parts[p].points;
-        const double thickness = dim == 2 ? part.thickness : 1.0;
-        for (std::size_t q = 0; q < ip.size(); ++q) {
-          double b[3] = {0, 0, 0};
-          if (spec.from_exact) {
-            if (exact->body_force) exact->body_force(&ip.x[q * udim], b);
-          } else {
-            for (std::size_t d = 0; d < udim; ++d) b[d] = spec.value[d];
-          }
-          for (auto k = ip.values.offsets[q]; k < ip.values.offsets[q + 1]; ++k) {
-            const auto node = static_cast<std::size_t>(
-                op.overlap_node(p)[static_cast<std::size_t>(ip.values.particles[k])]);
-            for (std::size_t i = 0; i < udim; ++i)
-              f(node * udim + i, 0) += ip.values.values[k] * b[i] * ip.weight[q] * thickness;
-          }
-        }
-      }
-    }
+    if (spec.type == "traction" || spec.type == "pressure")
+      add_surface_load(model, op, spec, exact, f_overlap);
+    else if (spec.type == "nodal_force")
+      add_nodal_force(model, op, spec, f_overlap);
+    else if (spec.type == "body_force")
+      add_body_force(model, op, spec, exact, f_overlap);
     auto owned = Teuchos::rcp(new Vector(model.maps.owned_dofs));
     owned->doExport(f_overlap, to_owned, Tpetra::ADD);
     loads_.push_back({spec.curve, owned});
