@@ -49,30 +49,10 @@ std::vector<std::string> read_variable_names(const exodus::File& f, ex_entity_ty
 
 }  // namespace
 
-BackgroundMesh read_exodus_mesh(const std::string& path) {
-  auto f = exodus::File::open_read(path);
-  ex_set_max_name_length(f.id(), kNameLength);
-  char title[MAX_LINE_LENGTH + 1] = {};
-  std::int64_t dim = 0, nodes = 0, cells = 0, nblocks = 0, nnode_sets = 0, nside_sets = 0;
-  f.check(ex_get_init(f.id(), title, &dim, &nodes, &cells, &nblocks, &nnode_sets, &nside_sets),
-          "reading the header");
-  if (dim != 2 && dim != 3)
-    throw InputError("mesh file '" + path + "': dimension " + std::to_string(dim) +
-                     " is not supported (expected 2 or 3)");
+namespace {
 
-  BackgroundMesh mesh;
-  mesh.source = path;
-  mesh.dimension = static_cast<int>(dim);
-  std::vector<double> x(static_cast<std::size_t>(nodes)), y(x.size()), z(x.size());
-  f.check(ex_get_coord(f.id(), x.data(), y.data(), dim == 3 ? z.data() : nullptr),
-          "reading coordinates");
-  mesh.coordinates.reserve(static_cast<std::size_t>(dim * nodes));
-  for (std::size_t n = 0; n < x.size(); ++n) {
-    mesh.coordinates.push_back(x[n]);
-    mesh.coordinates.push_back(y[n]);
-    if (dim == 3) mesh.coordinates.push_back(z[n]);
-  }
-
+void read_blocks(const exodus::File& f, const std::string& path, std::int64_t nblocks,
+                 BackgroundMesh& mesh) {
   const auto block_ids = read_ids(f, EX_ELEM_BLOCK, nblocks);
   const auto block_names = read_names(f, EX_ELEM_BLOCK, block_ids.size(), block_ids, "block_");
   for (std::size_t b = 0; b < block_ids.size(); ++b) {
@@ -98,7 +78,9 @@ BackgroundMesh read_exodus_mesh(const std::string& path) {
     for (auto n : conn) block.connectivity.push_back(static_cast<LocalIndex>(n - 1));
     mesh.blocks.push_back(std::move(block));
   }
+}
 
+void read_node_sets(const exodus::File& f, std::int64_t nnode_sets, BackgroundMesh& mesh) {
   const auto ns_ids = read_ids(f, EX_NODE_SET, nnode_sets);
   const auto ns_names = read_names(f, EX_NODE_SET, ns_ids.size(), ns_ids, "nodeset_");
   for (std::size_t s = 0; s < ns_ids.size(); ++s) {
@@ -113,7 +95,9 @@ BackgroundMesh read_exodus_mesh(const std::string& path) {
     for (auto n : entries) set.nodes.push_back(static_cast<LocalIndex>(n - 1));
     mesh.node_sets.push_back(std::move(set));
   }
+}
 
+void read_side_sets(const exodus::File& f, std::int64_t nside_sets, BackgroundMesh& mesh) {
   const auto ss_ids = read_ids(f, EX_SIDE_SET, nside_sets);
   const auto ss_names = read_names(f, EX_SIDE_SET, ss_ids.size(), ss_ids, "sideset_");
   for (std::size_t s = 0; s < ss_ids.size(); ++s) {
@@ -131,6 +115,37 @@ BackgroundMesh read_exodus_mesh(const std::string& path) {
     }
     mesh.side_sets.push_back(std::move(set));
   }
+}
+
+}  // namespace
+
+BackgroundMesh read_exodus_mesh(const std::string& path) {
+  auto f = exodus::File::open_read(path);
+  ex_set_max_name_length(f.id(), kNameLength);
+  char title[MAX_LINE_LENGTH + 1] = {};
+  std::int64_t dim = 0, nodes = 0, cells = 0, nblocks = 0, nnode_sets = 0, nside_sets = 0;
+  f.check(ex_get_init(f.id(), title, &dim, &nodes, &cells, &nblocks, &nnode_sets, &nside_sets),
+          "reading the header");
+  if (dim != 2 && dim != 3)
+    throw InputError("mesh file '" + path + "': dimension " + std::to_string(dim) +
+                     " is not supported (expected 2 or 3)");
+
+  BackgroundMesh mesh;
+  mesh.source = path;
+  mesh.dimension = static_cast<int>(dim);
+  std::vector<double> x(static_cast<std::size_t>(nodes)), y(x.size()), z(x.size());
+  f.check(ex_get_coord(f.id(), x.data(), y.data(), dim == 3 ? z.data() : nullptr),
+          "reading coordinates");
+  mesh.coordinates.reserve(static_cast<std::size_t>(dim * nodes));
+  for (std::size_t n = 0; n < x.size(); ++n) {
+    mesh.coordinates.push_back(x[n]);
+    mesh.coordinates.push_back(y[n]);
+    if (dim == 3) mesh.coordinates.push_back(z[n]);
+  }
+
+  read_blocks(f, path, nblocks, mesh);
+  read_node_sets(f, nnode_sets, mesh);
+  read_side_sets(f, nside_sets, mesh);
   if (static_cast<std::int64_t>(mesh.cell_count()) != cells)
     throw InputError("mesh file '" + path + "': header says " + std::to_string(cells) +
                      " elements but the blocks hold " + std::to_string(mesh.cell_count()));
