@@ -64,6 +64,58 @@ YAML::Node node_at(YAML::Node root, const std::string& key, const std::string& f
   return node;
 }
 
+// The study table's header: the swept keys, the level, errors, and one column per report phase.
+void write_study_header(std::ostream& csv, const std::vector<Sweep>& sweeps) {
+  for (const auto& s : sweeps) csv << s.key << ",";
+  csv << "level,h,dofs,l2_rel_error,energy_rel_error,max_nodal_error";
+  for (const auto& phase : report_phases()) {
+    std::string column = phase;
+    for (auto& c : column)
+      if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+    csv << "," << column << "_seconds";
+  }
+  csv << ",total_seconds\n";
+}
+
+// Cartesian product of the sweeps (one empty combination without sweeps).
+std::vector<std::vector<std::string>> combinations(const std::vector<Sweep>& sweeps) {
+  std::vector<std::vector<std::string>> combos(1);
+  for (const auto& s : sweeps) {
+    std::vector<std::vector<std::string>> next;
+    for (const auto& c : combos)
+      for (const auto& v : s.values) {
+        auto e = c;
+        e.push_back(v);
+        next.push_back(e);
+      }
+    combos = next;
+  }
+  return combos;
+}
+
+// The scene text of one run: the sweep values set, the generated mesh refined by factor^level;
+// `h` receives the largest cell size.
+std::string level_scene(const std::string& text, const std::vector<Sweep>& sweeps,
+                        const std::vector<std::string>& combo, const CommandLine& cl, int level,
+                        double& h) {
+  YAML::Node doc = YAML::Load(text);
+  for (std::size_t i = 0; i < sweeps.size(); ++i)
+    node_at(doc, sweeps[i].key, cl.scene) = YAML::Load(combo[i]);
+  const double scale = std::pow(cl.factor, level);
+  auto cells = doc["mesh"]["generate"]["cells"];
+  h = 0;
+  for (std::size_t d = 0; d < cells.size(); ++d) {
+    const int n = static_cast<int>(std::lround(cells[d].as<int>() * scale));
+    cells[d] = n;
+    h = std::max(h, (doc["mesh"]["generate"]["upper"][d].as<double>() -
+                     doc["mesh"]["generate"]["lower"][d].as<double>()) /
+                        n);
+  }
+  YAML::Emitter out;
+  out << doc;
+  return out.c_str();
+}
+
 }  // namespace
 
 void study_command(const CommPtr& comm, const CommandLine& cl) {
@@ -83,52 +135,19 @@ void study_command(const CommPtr& comm, const CommandLine& cl) {
   std::ofstream csv;
   if (comm->getRank() == 0) {
     csv.open(csv_path);
-    for (const auto& s : sweeps) csv << s.key << ",";
-    csv << "level,h,dofs,l2_rel_error,energy_rel_error,max_nodal_error";
-    for (const auto& phase : report_phases()) {
-      std::string column = phase;
-      for (auto& c : column)
-        if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-      csv << "," << column << "_seconds";
-    }
-    csv << ",total_seconds\n";
+    write_study_header(csv, sweeps);
   }
-  // Cartesian product of the sweeps (one empty combination without sweeps).
-  std::vector<std::vector<std::string>> combos(1);
-  for (const auto& s : sweeps) {
-    std::vector<std::vector<std::string>> next;
-    for (const auto& c : combos)
-      for (const auto& v : s.values) {
-        auto e = c;
-        e.push_back(v);
-        next.push_back(e);
-      }
-    combos = next;
-  }
-  for (const auto& combo : combos)
+  for (const auto& combo : combinations(sweeps))
     for (int level = 0; level < cl.levels; ++level) {
-      YAML::Node doc = YAML::Load(text);
-      for (std::size_t i = 0; i < sweeps.size(); ++i)
-        node_at(doc, sweeps[i].key, cl.scene) = YAML::Load(combo[i]);
-      const double scale = std::pow(cl.factor, level);
-      auto cells = doc["mesh"]["generate"]["cells"];
       double h = 0;
-      for (std::size_t d = 0; d < cells.size(); ++d) {
-        const int n = static_cast<int>(std::lround(cells[d].as<int>() * scale));
-        cells[d] = n;
-        h = std::max(h, (doc["mesh"]["generate"]["upper"][d].as<double>() -
-                         doc["mesh"]["generate"]["lower"][d].as<double>()) /
-                            n);
-      }
-      YAML::Emitter out;
-      out << doc;
+      const auto scene_text = level_scene(text, sweeps, combo, cl, level, h);
       std::string label = base.name;
       for (const auto& v : combo) label += "_" + v;
       label += "_L" + std::to_string(level);
       Log::info("study run " + label);
       Teuchos::TimeMonitor::zeroOutTimers();
       const auto started = std::chrono::steady_clock::now();
-      const Model model = build_model(comm, parse_scene(out.c_str(), cl.scene));
+      const Model model = build_model(comm, parse_scene(scene_text, cl.scene));
       const double setup =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
       const auto path = (dir / (label + ".e")).string();
