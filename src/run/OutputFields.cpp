@@ -65,40 +65,50 @@ std::vector<std::string> output_columns(const std::vector<std::string>& fields, 
   return columns;
 }
 
-std::vector<std::vector<double>> state_columns(const Model& model, const SolidOperator& op,
-                                               const Vector& d_overlap, const Vector* v_overlap,
-                                               const Vector* a_overlap) {
-  const int dim = model.mesh.dimension;
-  const auto udim = static_cast<std::size_t>(dim);
+namespace {
+
+using Tensor = std::array<std::array<double, 3>, 3>;
+
+// Interpolated values at the owned particles (partition order): u, v, a, the displacement
+// gradient H and the part of each particle (-1: in no part).
+struct ParticleValues {
+  explicit ParticleValues(std::size_t n)
+      : u(n, {0, 0, 0}),
+        v(n, {0, 0, 0}),
+        a(n, {0, 0, 0}),
+        h(n, std::array<double, 9>{}),
+        part(n, -1) {}
+  std::vector<std::array<double, 3>> u, v, a;
+  std::vector<std::array<double, 9>> h;
+  std::vector<int> part;
+};
+
+ParticleValues interpolate(const Model& model, const SolidOperator& op, const Vector& d_overlap,
+                           const Vector* v_overlap, const Vector* a_overlap) {
+  const auto udim = static_cast<std::size_t>(model.mesh.dimension);
   const auto& owned = model.partition.owned;
-  const auto volume = lumped_nodal_volumes(model.mesh);
-  // Per owned particle (in partition order): u, H, material.
-  std::vector<std::array<double, 3>> u(owned.size(), {0, 0, 0}), vel(owned.size(), {0, 0, 0}),
-      acc(owned.size(), {0, 0, 0});
-  std::vector<std::array<double, 9>> h(owned.size(), std::array<double, 9>{});
-  std::vector<int> part_of(owned.size(), -1);
+  ParticleValues out(owned.size());
   std::vector<std::size_t> slot(model.mesh.node_count(), 0);
   for (std::size_t i = 0; i < owned.size(); ++i) slot[static_cast<std::size_t>(owned[i])] = i;
   const auto d = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
   using HostView = decltype(d);
   const HostView no_values;
   const auto v = v_overlap ? v_overlap->getLocalViewHost(Tpetra::Access::ReadOnly) : no_values;
-  const auto acc_view =
-      a_overlap ? a_overlap->getLocalViewHost(Tpetra::Access::ReadOnly) : no_values;
+  const auto a = a_overlap ? a_overlap->getLocalViewHost(Tpetra::Access::ReadOnly) : no_values;
   for (std::size_t p = 0; p < model.parts.size(); ++p) {
     const auto& part = model.parts[p];
     const auto& node = op.overlap_node(p);
     for (std::size_t j = 0; j < part.cloud.owned_count; ++j) {
       const auto s = slot[static_cast<std::size_t>(part.cloud.mesh_node[j])];
-      part_of[s] = static_cast<int>(p);
+      out.part[s] = static_cast<int>(p);
       for (auto k = part.particle_values.offsets[j]; k < part.particle_values.offsets[j + 1]; ++k) {
         const auto n = static_cast<std::size_t>(
             node[static_cast<std::size_t>(part.particle_values.particles[k])]);
         for (std::size_t i = 0; i < udim; ++i) {
           const double phi = part.particle_values.values[k];
-          u[s][i] += phi * d(n * udim + i, 0);
-          if (v_overlap) vel[s][i] += phi * v(n * udim + i, 0);
-          if (a_overlap) acc[s][i] += phi * acc_view(n * udim + i, 0);
+          out.u[s][i] += phi * d(n * udim + i, 0);
+          if (v_overlap) out.v[s][i] += phi * v(n * udim + i, 0);
+          if (a_overlap) out.a[s][i] += phi * a(n * udim + i, 0);
         }
       }
       for (auto k = part.particle_gradients.offsets[j]; k < part.particle_gradients.offsets[j + 1];
@@ -107,38 +117,54 @@ std::vector<std::vector<double>> state_columns(const Model& model, const SolidOp
             node[static_cast<std::size_t>(part.particle_gradients.particles[k])]);
         for (std::size_t i = 0; i < udim; ++i)
           for (std::size_t c = 0; c < udim; ++c)
-            h[s][i * 3 + c] += d(n * udim + i, 0) * part.particle_gradients.values[k * udim + c];
+            out.h[s][i * 3 + c] +=
+                d(n * udim + i, 0) * part.particle_gradients.values[k * udim + c];
       }
     }
   }
-  // Strains and stresses once per particle (not once per output column), when asked for.
-  using Tensor = std::array<std::array<double, 3>, 3>;
+  return out;
+}
+
+// Strains and stresses once per particle (not once per output column).
+void particle_tensors(const Model& model, const ParticleValues& values,
+                      std::vector<Tensor>& strains, std::vector<Tensor>& stresses) {
+  const int dim = model.mesh.dimension;
+  std::vector<physics::SolidMaterial> materials;
+  for (const auto& pd : model.parts)
+    materials.push_back(
+        solid_material(*model.scene.find_material(pd.part->material), *pd.part, dim));
+  for (std::size_t s = 0; s < values.part.size(); ++s) {
+    if (values.part[s] < 0) continue;
+    const auto p = static_cast<std::size_t>(values.part[s]);
+    const bool finite = model.parts[p].part->section.formulation == Formulation::total_lagrangian;
+    double strain[3][3] = {}, sigma[3][3] = {};
+    if (dim == 2)
+      particle_state<2>(materials[p], finite, values.h[s].data(), strain, sigma);
+    else
+      particle_state<3>(materials[p], finite, values.h[s].data(), strain, sigma);
+    for (std::size_t i = 0; i < 3; ++i)
+      for (std::size_t j = 0; j < 3; ++j) {
+        strains[s][i][j] = strain[i][j];
+        stresses[s][i][j] = sigma[i][j];
+      }
+  }
+}
+
+}  // namespace
+
+std::vector<std::vector<double>> state_columns(const Model& model, const SolidOperator& op,
+                                               const Vector& d_overlap, const Vector* v_overlap,
+                                               const Vector* a_overlap) {
+  const int dim = model.mesh.dimension;
+  const auto& owned = model.partition.owned;
+  const auto volume = lumped_nodal_volumes(model.mesh);
+  const auto particles = interpolate(model, op, d_overlap, v_overlap, a_overlap);
   std::vector<Tensor> strains(owned.size(), Tensor{}), stresses(owned.size(), Tensor{});
   const auto& fields = model.scene.output.fields;
-  const bool tensors = std::any_of(fields.begin(), fields.end(), [](const std::string& f) {
-    return f == "stress" || f == "strain" || f == "von_mises";
-  });
-  if (tensors) {
-    std::vector<physics::SolidMaterial> materials;
-    for (const auto& pd : model.parts)
-      materials.push_back(
-          solid_material(*model.scene.find_material(pd.part->material), *pd.part, dim));
-    for (std::size_t s = 0; s < owned.size(); ++s) {
-      if (part_of[s] < 0) continue;
-      const auto p = static_cast<std::size_t>(part_of[s]);
-      const bool finite = model.parts[p].part->section.formulation == Formulation::total_lagrangian;
-      double strain[3][3] = {}, sigma[3][3] = {};
-      if (dim == 2)
-        particle_state<2>(materials[p], finite, h[s].data(), strain, sigma);
-      else
-        particle_state<3>(materials[p], finite, h[s].data(), strain, sigma);
-      for (std::size_t i = 0; i < 3; ++i)
-        for (std::size_t j = 0; j < 3; ++j) {
-          strains[s][i][j] = strain[i][j];
-          stresses[s][i][j] = sigma[i][j];
-        }
-    }
-  }
+  if (std::any_of(fields.begin(), fields.end(), [](const std::string& f) {
+        return f == "stress" || f == "strain" || f == "von_mises";
+      }))
+    particle_tensors(model, particles, strains, stresses);
   std::vector<std::vector<double>> columns;
   for (const auto& field : fields) {
     const auto count = field_columns(field, dim).size();
@@ -153,11 +179,11 @@ std::vector<std::vector<double>> state_columns(const Model& model, const SolidOp
             sigma[i][j] = stresses[s][i][j];
           }
         if (field == "displacement")
-          values.push_back(u[s][c]);
+          values.push_back(particles.u[s][c]);
         else if (field == "velocity")
-          values.push_back(vel[s][c]);
+          values.push_back(particles.v[s][c]);
         else if (field == "acceleration")
-          values.push_back(acc[s][c]);
+          values.push_back(particles.a[s][c]);
         else if (field == "stress")
           push_tensor(values, sigma, dim, c);
         else if (field == "strain")
