@@ -9,7 +9,8 @@
 #
 # Choices (../shared/reference/toolchain.md, "Threads and GPUs"):
 #   - packages Kokkos, KokkosKernels, Teuchos, Tpetra, Belos, Ifpack2, Amesos2, Thyra,
-#     Stratimikos, NOX, Zoltan2, MueLu; Epetra explicitly off (Thyra and NOX would pull it in);
+#     Stratimikos, NOX (with its LAPACK group), Zoltan2, MueLu, Anasazi; Epetra explicitly off
+#     (Thyra and NOX would pull it in);
 #   - explicit instantiation for scalar double, local int, global long long, the OpenMP node only
 #     (Tpetra's default node is then Kokkos::Compat::KokkosOpenMPWrapperNode);
 #   - Release, shared libraries, C++17, tests and examples off;
