@@ -1,7 +1,11 @@
 #include "scene/SceneMeshChecks.hpp"
 
+#include <Teuchos_LAPACK.hpp>
+
 #include <algorithm>
+#include <cmath>
 #include <map>
+#include <sstream>
 
 #include "core/Errors.hpp"
 #include "scene/SchemaValidator.hpp"
@@ -112,6 +116,7 @@ class Checker {
     }
     check_conflicting_conditions();
     check_parts_do_not_share_nodes();
+    check_parts_held();
     for (std::size_t i = 0; i < s_.output.history_node_sets.size(); ++i)
       require_name(d["output"]["history_node_sets"][i],
                    "output.history_node_sets[" + std::to_string(i) + "]",
@@ -127,6 +132,113 @@ class Checker {
   }
 
  private:
+  // An implicit stage needs every part held against rigid-body motion by its displacement
+  // conditions, or its stiffness is singular (a consistent load then "solves" with an arbitrary
+  // rigid motion, an inconsistent one fails in the linear solver). The test: the rigid-body
+  // modes (translations, rotations about the part's centroid, coordinates scaled by its size)
+  // restricted to the constrained (node, component) pairs must have full rank.
+  void check_parts_held() const {
+    std::size_t implicit_stage = s_.stages.size();
+    for (std::size_t i = 0; i < s_.stages.size() && implicit_stage == s_.stages.size(); ++i)
+      if (s_.stages[i].driver == "implicit") implicit_stage = i;
+    if (implicit_stage == s_.stages.size()) return;
+    for (std::size_t p = 0; p < s_.parts.size(); ++p) {
+      const auto free = free_rigid_motion(p);
+      if (free.empty()) continue;
+      fail(s_.document["stages"][implicit_stage]["driver"],
+           "stages[" + std::to_string(implicit_stage) + "].driver",
+           "an implicit (static) stage needs part '" + s_.parts[p].name +
+               "' held against rigid-body motion, but its displacement conditions leave it free "
+               "to " +
+               free +
+               " (its stiffness is singular); add displacement conditions that stop it, or use "
+               "driver: explicit");
+    }
+  }
+
+  // "" when part p is held; otherwise the free motion in words.
+  std::string free_rigid_motion(std::size_t p) const {
+    const int dim = m_.dimension;
+    const auto udim = static_cast<std::size_t>(dim);
+    std::vector<char> in_part(m_.node_count(), 0);
+    for (const auto& b : m_.blocks)
+      if (std::find(s_.parts[p].blocks.begin(), s_.parts[p].blocks.end(), b.name) !=
+          s_.parts[p].blocks.end())
+        for (auto n : b.connectivity) in_part[static_cast<std::size_t>(n)] = 1;
+    double centre[3] = {0, 0, 0}, lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
+    double count = 0;
+    for (std::size_t n = 0; n < m_.node_count(); ++n)
+      if (in_part[n]) {
+        count += 1;
+        for (std::size_t k = 0; k < udim; ++k) {
+          const double x = m_.coordinates[n * udim + k];
+          centre[k] += x;
+          lo[k] = std::min(lo[k], x);
+          hi[k] = std::max(hi[k], x);
+        }
+      }
+    if (count == 0) return "";
+    double size = 0;
+    for (std::size_t k = 0; k < udim; ++k) {
+      centre[k] /= count;
+      size = std::max(size, hi[k] - lo[k]);
+    }
+    // Gram matrix of the modes over the constrained pairs: modes are 2 translations + 1 rotation
+    // in 2D, 3 + 3 in 3D; u_rot = omega x r with r the scaled position.
+    const int modes = dim == 2 ? 3 : 6;
+    std::vector<double> gram(static_cast<std::size_t>(modes * modes), 0.0);
+    std::vector<char> constrained(m_.node_count() * udim, 0);
+    for (const auto& bc : s_.boundary_conditions) {
+      if (bc.type != "displacement") continue;
+      for (auto n : m_.find_node_set(bc.node_set)->nodes)
+        for (std::size_t c = 0; c < udim; ++c)
+          if (bc.components[c] || bc.from_exact[c])
+            constrained[static_cast<std::size_t>(n) * udim + c] = 1;
+    }
+    for (std::size_t n = 0; n < m_.node_count(); ++n) {
+      if (!in_part[n]) continue;
+      double r[3] = {0, 0, 0};
+      for (std::size_t k = 0; k < udim; ++k)
+        r[k] = (m_.coordinates[n * udim + k] - centre[k]) / size;
+      for (std::size_t c = 0; c < udim; ++c) {
+        if (!constrained[n * udim + c]) continue;
+        double row[6] = {0, 0, 0, 0, 0, 0};
+        row[c] = 1.0;
+        if (dim == 2) {
+          row[2] = c == 0 ? -r[1] : r[0];  // omega_z x r
+        } else {
+          // (omega x r)_c for omega = e_x, e_y, e_z
+          const double rot[3][3] = {{0, r[2], -r[1]}, {-r[2], 0, r[0]}, {r[1], -r[0], 0}};
+          for (int w = 0; w < 3; ++w) row[3 + w] = rot[c][w];
+        }
+        for (int a = 0; a < modes; ++a)
+          for (int b = 0; b < modes; ++b)
+            gram[static_cast<std::size_t>(a * modes + b)] += row[a] * row[b];
+      }
+    }
+    std::vector<double> eig(static_cast<std::size_t>(modes)),
+        work(static_cast<std::size_t>(4 * modes));
+    int info = 0;
+    Teuchos::LAPACK<int, double>().SYEV('V', 'U', modes, gram.data(), modes, eig.data(),
+                                        work.data(), 4 * modes, &info);
+    // Eigenvalues ascending; a held part has every mode constrained by at least one pair of
+    // order-one weight, so the smallest is far from 0 (0 up to round-off when free).
+    if (info != 0 || eig[0] > 1e-10 * std::max(1.0, eig.back())) return "";
+    const double* v = gram.data();  // first eigenvector: the free motion
+    std::ostringstream o;
+    o.precision(2);
+    const double rotation =
+        dim == 2 ? std::abs(v[2]) : std::sqrt(v[3] * v[3] + v[4] * v[4] + v[5] * v[5]);
+    if (rotation < 1e-6) {
+      o << "translate along (";
+      for (int k = 0; k < dim; ++k) o << (k ? ", " : "") << (std::abs(v[k]) < 1e-12 ? 0.0 : v[k]);
+      o << ")";
+    } else {
+      o << (dim == 2 ? "rotate in its plane" : "rotate") << " (and possibly translate)";
+    }
+    return o.str();
+  }
+
   // Each part discretizes its own particles (its own shape functions); a node in two parts would
   // be one dof with two unrelated, non-interpolating approximations around it, so a bonded
   // multi-material interface is not supported yet: say so where the second part names the block.

@@ -73,5 +73,42 @@ materials:
   EXPECT_NE(error.find("with part 'soft'"), std::string::npos) << error;
 }
 
+// Parts of an implicit stage must be held against rigid-body motion (issue 12): the rigid modes
+// restricted to the constrained dofs need full rank. Rollers on two edges hold a plate; a block
+// resting on z = 0 (z fixed only) can still slide in x and y and spin about z.
+TEST(SceneMeshChecks, ImplicitPartsMustBeHeldAgainstRigidMotion) {
+  const char* plate = R"(mesh:
+  generate: {element: quad4, lower: [0, 0], upper: [2, 1], cells: [4, 2]}
+parts:
+  - {name: p, blocks: [block_1], material: m}
+materials:
+  - {name: m, model: linear_elastic, youngs_modulus: 100, poissons_ratio: 0.25}
+boundary_conditions:
+  - {name: roller_x, type: displacement, node_set: xmin, x: 0}
+  - {name: roller_y, type: displacement, node_set: ymin, y: 0}
+stages:
+  - {name: load, driver: implicit, end_time: 1}
+)";
+  const auto held = parse_scene(plate, "rollers.yaml");
+  EXPECT_EQ(error_of(held, strip(held)), "");
+  const auto block = parse_scene(R"(mesh:
+  generate: {element: hex8, lower: [0, 0, 0], upper: [2, 1, 1], cells: [2, 1, 1]}
+parts:
+  - {name: b, blocks: [block_1], material: m}
+materials:
+  - {name: m, model: linear_elastic, youngs_modulus: 100, poissons_ratio: 0.25}
+boundary_conditions:
+  - {name: floor, type: displacement, node_set: zmin, z: 0}
+stages:
+  - {name: load, driver: implicit, end_time: 1}
+)",
+                                 "floor.yaml");
+  const auto error = error_of(block, strip(block));
+  EXPECT_NE(error.find("floor.yaml:10:26: stages[0].driver: an implicit (static) stage needs part "
+                       "'b' held against rigid-body motion"),
+            std::string::npos)
+      << error;
+}
+
 }  // namespace
 }  // namespace efg
