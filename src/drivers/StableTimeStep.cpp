@@ -20,7 +20,13 @@ using MultiVector = Tpetra::MultiVector<>;
 class ScaledTangent : public Tpetra::Operator<> {
  public:
   ScaledTangent(const ModelOperators& ops, const Vector& inv_sqrt_mass, const Vector& d)
-      : ops_(ops), s_(inv_sqrt_mass), d_(d), f0_(d.getMap()) {
+      : ops_(ops),
+        s_(inv_sqrt_mass),
+        d_(d),
+        f0_(d.getMap()),
+        x_(d.getMap()),
+        probe_(d.getMap()),
+        f_(d.getMap()) {
     ops_.internal_force(d_, f0_);
     d_size_ = std::max(1.0, d_.normInf());
   }
@@ -29,7 +35,9 @@ class ScaledTangent : public Tpetra::Operator<> {
 
   void apply(const MultiVector& X, MultiVector& Y, Teuchos::ETransp, double alpha,
              double beta) const override {
-    Vector x(d_.getMap()), probe(d_.getMap()), f(d_.getMap());
+    auto& x = x_;
+    auto& probe = probe_;
+    auto& f = f_;
     for (std::size_t c = 0; c < X.getNumVectors(); ++c) {
       x.elementWiseMultiply(1.0, s_, *X.getVector(c), 0.0);
       // The step is 1e-7 of d's size over x's size: the product is unit-free, and exact for a
@@ -54,6 +62,7 @@ class ScaledTangent : public Tpetra::Operator<> {
   const Vector& s_;
   const Vector& d_;
   Vector f0_;
+  mutable Vector x_, probe_, f_;  ///< scratch of apply(), allocated once per estimate
   double d_size_ = 1.0;
 };
 
