@@ -44,6 +44,16 @@ add_library(efg_exodus INTERFACE)
 target_include_directories(efg_exodus SYSTEM INTERFACE ${EXODUS_INCLUDE_DIR})
 target_link_libraries(efg_exodus INTERFACE ${EXODUS_LIBRARY})
 
+# UMFPACK (Debian's libsuitesparse-dev): the default sparse direct solver (solvers/SparseLU).
+find_path(UMFPACK_INCLUDE_DIR suitesparse/umfpack.h)
+find_library(UMFPACK_LIBRARY NAMES umfpack)
+if(NOT UMFPACK_INCLUDE_DIR OR NOT UMFPACK_LIBRARY)
+  message(FATAL_ERROR "efg: UMFPACK not found; run scripts/setup.sh (package libsuitesparse-dev)")
+endif()
+add_library(efg_umfpack INTERFACE)
+target_include_directories(efg_umfpack SYSTEM INTERFACE ${UMFPACK_INCLUDE_DIR})
+target_link_libraries(efg_umfpack INTERFACE ${UMFPACK_LIBRARY})
+
 # yaml-cpp as a SYSTEM include as well.
 add_library(efg_yaml INTERFACE)
 get_target_property(_yaml_inc yaml-cpp INTERFACE_INCLUDE_DIRECTORIES)

@@ -378,10 +378,11 @@ class SceneBuilder {
         fail(written["Type"], at + ".Type",
              "'" + type + "' contradicts solver: direct (remove one of them)");
     }
-    if (prec["solver"] && prec["solver"].as<std::string>() != "KLU2")
+    if (prec["solver"] && prec["solver"].as<std::string>() != "UMFPACK" &&
+        prec["solver"].as<std::string>() != "KLU2")
       fail(written["solver"], at + ".solver",
-           "expected KLU2 (the one Amesos2 solver of this Trilinos build that factors these "
-           "systems; Tacho crashed), found '" +
+           "expected UMFPACK (the default) or KLU2 (Amesos2; Tacho crashed in this Trilinos "
+           "build), found '" +
                prec["solver"].as<std::string>() + "'");
   }
 

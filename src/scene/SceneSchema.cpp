@@ -248,7 +248,7 @@ SpecPtr stage_spec() {
                         "auto"),
            optional_key("direct_limit",
                         integer("Largest dof count that solver: auto factors directly; 0: the "
-                                "default (40000 in 2D, 12000 in 3D).")
+                                "default (150000 in 2D, 12000 in 3D).")
                             .at_least(0),
                         "0"),
            optional_key("residual_tolerance",
@@ -265,7 +265,7 @@ SpecPtr stage_spec() {
                         passthrough("Belos parameter list; 'Solver Type' picks the method."), "{}"),
            optional_key("preconditioner",
                         passthrough("'Type': direct, MueLu, Ifpack2 or None; the other keys go "
-                                    "to that package's list (Amesos2 'solver' for direct)."),
+                                    "to that package's list ('solver': UMFPACK or KLU2 for direct)."),
                         "{}")})
       .variant(
           "explicit",

@@ -1,10 +1,10 @@
-// The direct path: the whole Jacobian factored by Amesos2 KLU2 (sparse LU with a fill-reducing
-// ordering; any nonsymmetric matrix). On more than one rank the matrix is gathered onto rank 0
-// and factored there on a one-process communicator, because Amesos2 KLU2 in Trilinos 13.2
-// returns wrong solutions when it is handed a distributed matrix (toolchain.md); right-hand
-// sides are gathered, solved on rank 0 and scattered back. So every rank count gets the same
-// factorization, at the cost of one process's time and memory: the automatic choice uses it
-// only below a size limit (LinearSolverPlan).
+// The direct path: the whole Jacobian factored by a sparse LU: UMFPACK (multifrontal, BLAS 3;
+// the default) or Amesos2 KLU2 (left-looking; kept as an option). The matrix is gathered onto
+// rank 0 and factored there on one process, because Amesos2 KLU2 in Trilinos 13.2 returns wrong
+// solutions when it is handed a distributed matrix (toolchain.md) and UMFPACK is a one-process
+// library; right-hand sides are gathered, solved on rank 0 and scattered back. So every rank
+// count gets the same factorization, at the cost of one process's time and memory: the
+// automatic choice uses it only below a size limit (LinearSolverPlan).
 #include <Amesos2.hpp>
 #include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_DefaultSerialComm.hpp>
@@ -12,16 +12,20 @@
 #include <Tpetra_Import.hpp>
 
 #include <algorithm>
+#include <memory>
 #include <vector>
 
 #include "core/Errors.hpp"
 #include "solvers/MatrixPreconditioner.hpp"
+#include "solvers/SparseLU.hpp"
 
 namespace efg {
 namespace {
 
 using GO = Tpetra::Map<>::global_ordinal_type;
 using LO = Tpetra::Map<>::local_ordinal_type;
+using Matrix = Tpetra::CrsMatrix<>;
+using MultiVector = Tpetra::MultiVector<>;
 
 /// The same global ids as `distributed`, all on rank 0, ascending.
 Teuchos::RCP<const Tpetra::Map<>> root_map(const Tpetra::Map<>& distributed) {
@@ -42,9 +46,120 @@ Teuchos::RCP<const Tpetra::Map<>> root_map(const Tpetra::Map<>& distributed) {
                                         distributed.getComm()));
 }
 
+// What factors the gathered matrix on rank 0 and solves with it there.
+class RootSolver {
+ public:
+  virtual ~RootSolver() = default;
+  /// `whole`: a matrix whose rows are all on this process (rank 0); `root` holds the same ids,
+  /// ascending, and sets the order of rows and columns in the factorization.
+  virtual void factor(const Matrix& whole, const Tpetra::Map<>& root) = 0;
+  /// z = A^-1 x for the vectors of x (on rank 0, root map).
+  virtual void solve(const MultiVector& x, MultiVector& z) const = 0;
+};
+
+// UMFPACK (solvers/SparseLU.hpp) on the rows of a matrix held whole by this process, each row
+// and column placed at its position in `root` (ascending ids), so the factored matrix is the same
+// whatever the row order the matrix came in.
+class UmfpackRootSolver : public RootSolver {
+ public:
+  void factor(const Matrix& whole, const Tpetra::Map<>& root) override {
+    const auto local = whole.getLocalMatrixHost();
+    const auto& rows = *whole.getRowMap();
+    const auto& columns = *whole.getColMap();
+    std::vector<std::int64_t> column_position(columns.getNodeNumElements());
+    for (std::size_t c = 0; c < column_position.size(); ++c)
+      column_position[c] = root.getLocalElement(columns.getGlobalElement(static_cast<LO>(c)));
+    const auto n = static_cast<std::int64_t>(local.numRows());
+    std::vector<std::int64_t> row_position(static_cast<std::size_t>(n));
+    std::vector<std::int64_t> start(static_cast<std::size_t>(n) + 1, 0), index(local.nnz());
+    std::vector<double> value(local.nnz());
+    for (std::int64_t i = 0; i < n; ++i) {
+      row_position[i] = root.getLocalElement(rows.getGlobalElement(static_cast<LO>(i)));
+      start[row_position[i] + 1] =
+          static_cast<std::int64_t>(local.graph.row_map(i + 1) - local.graph.row_map(i));
+    }
+    for (std::int64_t i = 0; i < n; ++i) start[i + 1] += start[i];
+    for (std::int64_t i = 0; i < n; ++i) {
+      auto k = start[row_position[i]];
+      for (auto e = local.graph.row_map(i); e < local.graph.row_map(i + 1); ++e, ++k) {
+        index[k] = column_position[static_cast<std::size_t>(local.graph.entries(e))];
+        value[k] = local.values(e);
+      }
+    }
+    lu_.factor(n, std::move(start), std::move(index), std::move(value));
+  }
+
+  void solve(const MultiVector& x, MultiVector& z) const override {
+    const auto xv = x.getLocalViewHost(Tpetra::Access::ReadOnly);
+    const auto zv = z.getLocalViewHost(Tpetra::Access::OverwriteAll);
+    for (std::size_t j = 0; j < x.getNumVectors(); ++j) lu_.solve(&xv(0, j), &zv(0, j));
+  }
+
+ private:
+  SparseLU lu_;
+};
+
+// Amesos2 (KLU2) on a copy of the gathered rows with a one-process communicator.
+class Amesos2RootSolver : public RootSolver {
+ public:
+  explicit Amesos2RootSolver(std::string name) : name_(std::move(name)) {}
+
+  // The symbolic factorization is kept while the sparsity stays the same.
+  void factor(const Matrix& whole, const Tpetra::Map<>& root) override {
+    const auto gids = root.getNodeElementList();
+    if (serial_map_.is_null())
+      serial_map_ =
+          Teuchos::rcp(new Tpetra::Map<>(root.getGlobalNumElements(), gids, root.getIndexBase(),
+                                         Teuchos::createSerialComm<int>()));
+    const auto rows = static_cast<std::size_t>(whole.getNodeNumRows());
+    const auto widest = whole.getNodeMaxNumRowEntries();
+    auto serial = Teuchos::rcp(new Matrix(serial_map_, widest));
+    typename Matrix::nonconst_global_inds_host_view_type cols("cols", widest);
+    typename Matrix::nonconst_values_host_view_type vals("vals", widest);
+    for (std::size_t i = 0; i < rows; ++i) {
+      std::size_t count = 0;
+      whole.getGlobalRowCopy(gids[i], cols, vals, count);
+      serial->insertGlobalValues(gids[i], static_cast<LO>(count), vals.data(), cols.data());
+    }
+    serial->fillComplete(serial_map_, serial_map_);
+    const bool same_pattern = !solver_.is_null() && !matrix_.is_null() &&
+                              matrix_->getNodeNumEntries() == serial->getNodeNumEntries();
+    matrix_ = serial;
+    if (solver_.is_null()) {
+      solver_ = Amesos2::create<Matrix, MultiVector>(name_, matrix_);
+      solver_->symbolicFactorization();
+    } else {
+      solver_->setA(matrix_, same_pattern ? Amesos2::SYMBFACT : Amesos2::CLEAN);
+      if (!same_pattern) solver_->symbolicFactorization();
+    }
+    solver_->numericFactorization();
+  }
+
+  void solve(const MultiVector& x, MultiVector& z) const override {
+    const auto n = x.getNumVectors();
+    MultiVector x_serial(serial_map_, n), z_serial(serial_map_, n);
+    Kokkos::deep_copy(x_serial.getLocalViewHost(Tpetra::Access::OverwriteAll),
+                      x.getLocalViewHost(Tpetra::Access::ReadOnly));
+    solver_->solve(Teuchos::ptrFromRef(z_serial), Teuchos::ptrFromRef(x_serial));
+    Kokkos::deep_copy(z.getLocalViewHost(Tpetra::Access::OverwriteAll),
+                      z_serial.getLocalViewHost(Tpetra::Access::ReadOnly));
+  }
+
+ private:
+  std::string name_;
+  Teuchos::RCP<const Tpetra::Map<>> serial_map_;
+  Teuchos::RCP<Matrix> matrix_;
+  Teuchos::RCP<Amesos2::Solver<Matrix, MultiVector>> solver_;
+};
+
 class DirectPreconditioner : public MatrixPreconditioner {
  public:
-  explicit DirectPreconditioner(std::string solver) : solver_name_(std::move(solver)) {}
+  explicit DirectPreconditioner(std::string solver) : solver_name_(std::move(solver)) {
+    if (solver_name_ == "UMFPACK")
+      root_solver_ = std::make_unique<UmfpackRootSolver>();
+    else
+      root_solver_ = std::make_unique<Amesos2RootSolver>(solver_name_);
+  }
 
   void compute(const Teuchos::RCP<const Matrix>& K) override {
     Teuchos::Time clock("direct factorization", true);
@@ -53,16 +168,19 @@ class DirectPreconditioner : public MatrixPreconditioner {
       gather_ = Teuchos::rcp(new Tpetra::Import<>(K->getRowMap(), root_));
       scatter_ = Teuchos::rcp(new Tpetra::Import<>(root_, K->getRowMap()));
     }
-    // Gather the rows onto rank 0 ...
-    Matrix gathered(root_, 0);
-    gathered.doImport(*K, *gather_, Tpetra::INSERT);
-    gathered.fillComplete(root_, root_);
-    // ... and copy them into a matrix of rank 0's own (a one-process communicator).
+    // Gather the rows onto rank 0 (one rank: K is whole already) and factor them there.
+    Teuchos::RCP<const Matrix> whole = K;
+    if (root_->getComm()->getSize() > 1) {
+      auto gathered = Teuchos::rcp(new Matrix(root_, 0));
+      gathered->doImport(*K, *gather_, Tpetra::INSERT);
+      gathered->fillComplete(root_, root_);
+      whole = gathered;
+    }
     int failed = 0;
     std::string why;
     if (root_->getComm()->getRank() == 0) {
       try {
-        factor(gathered);
+        root_solver_->factor(*whole, *root_);
       } catch (const std::exception& e) {
         failed = 1;
         why = e.what();
@@ -71,7 +189,7 @@ class DirectPreconditioner : public MatrixPreconditioner {
     Teuchos::broadcast(*root_->getComm(), 0, Teuchos::outArg(failed));
     if (failed)
       throw NumericalError(
-          "the direct solver (Amesos2 " + solver_name_ +
+          "the direct solver (" + solver_name_ +
           ") could not factor the Jacobian: it is singular. Candidates: a body or part that "
           "is not held against rigid motion (missing or too few essential conditions), "
           "particles with no neighbours, a material with zero stiffness" +
@@ -86,60 +204,17 @@ class DirectPreconditioner : public MatrixPreconditioner {
     const auto n = X.getNumVectors();
     MultiVector x_root(root_, n), z_root(root_, n);
     x_root.doImport(X, *gather_, Tpetra::INSERT);
-    if (root_->getComm()->getRank() == 0) {
-      MultiVector x_serial(serial_map_, n), z_serial(serial_map_, n);
-      Kokkos::deep_copy(x_serial.getLocalViewHost(Tpetra::Access::OverwriteAll),
-                        x_root.getLocalViewHost(Tpetra::Access::ReadOnly));
-      solver_->solve(Teuchos::ptrFromRef(z_serial), Teuchos::ptrFromRef(x_serial));
-      Kokkos::deep_copy(z_root.getLocalViewHost(Tpetra::Access::OverwriteAll),
-                        z_serial.getLocalViewHost(Tpetra::Access::ReadOnly));
-    }
+    if (root_->getComm()->getRank() == 0) root_solver_->solve(x_root, z_root);
     MultiVector z(Y.getMap(), n);
     z.doImport(z_root, *scatter_, Tpetra::INSERT);
     Y.update(alpha, z, beta);
   }
 
  private:
-  // Rank 0: copies the gathered rows (global ids) into the one-process matrix and factors it;
-  // the symbolic factorization is kept while the sparsity stays the same.
-  void factor(const Matrix& gathered) {
-    if (serial_map_.is_null()) {
-      auto self = Teuchos::createSerialComm<int>();
-      const auto gids = root_->getNodeElementList();
-      serial_map_ = Teuchos::rcp(
-          new Tpetra::Map<>(root_->getGlobalNumElements(), gids, root_->getIndexBase(), self));
-    }
-    const auto rows = static_cast<std::size_t>(gathered.getNodeNumRows());
-    auto serial = Teuchos::rcp(new Matrix(serial_map_, gathered.getNodeMaxNumRowEntries()));
-    typename Matrix::nonconst_global_inds_host_view_type cols("cols",
-                                                              gathered.getNodeMaxNumRowEntries());
-    typename Matrix::nonconst_values_host_view_type vals("vals",
-                                                         gathered.getNodeMaxNumRowEntries());
-    const auto gids = root_->getNodeElementList();
-    for (std::size_t i = 0; i < rows; ++i) {
-      std::size_t count = 0;
-      gathered.getGlobalRowCopy(gids[i], cols, vals, count);
-      serial->insertGlobalValues(gids[i], static_cast<LO>(count), vals.data(), cols.data());
-    }
-    serial->fillComplete(serial_map_, serial_map_);
-    const bool same_pattern = !solver_.is_null() && !serial_matrix_.is_null() &&
-                              serial_matrix_->getNodeNumEntries() == serial->getNodeNumEntries();
-    serial_matrix_ = serial;
-    if (solver_.is_null()) {
-      solver_ = Amesos2::create<Matrix, MultiVector>(solver_name_, serial_matrix_);
-      solver_->symbolicFactorization();
-    } else {
-      solver_->setA(serial_matrix_, same_pattern ? Amesos2::SYMBFACT : Amesos2::CLEAN);
-      if (!same_pattern) solver_->symbolicFactorization();
-    }
-    solver_->numericFactorization();
-  }
-
   std::string solver_name_;
-  Teuchos::RCP<const Tpetra::Map<>> root_, serial_map_;
+  std::unique_ptr<RootSolver> root_solver_;
+  Teuchos::RCP<const Tpetra::Map<>> root_;
   Teuchos::RCP<Tpetra::Import<>> gather_, scatter_;
-  Teuchos::RCP<Matrix> serial_matrix_;
-  Teuchos::RCP<Amesos2::Solver<Matrix, MultiVector>> solver_;
 };
 
 }  // namespace
@@ -147,7 +222,7 @@ class DirectPreconditioner : public MatrixPreconditioner {
 Teuchos::RCP<MatrixPreconditioner> make_direct_preconditioner(
     const Teuchos::ParameterList& settings) {
   return Teuchos::rcp(new DirectPreconditioner(
-      settings.isParameter("solver") ? settings.get<std::string>("solver") : "KLU2"));
+      settings.isParameter("solver") ? settings.get<std::string>("solver") : "UMFPACK"));
 }
 
 }  // namespace efg

@@ -48,7 +48,7 @@ std::string LinearSolverPlan::describe() const {
   const std::string krylov_name = text(krylov, "Solver Type", "Block GMRES");
   switch (preconditioner) {
     case Preconditioner::direct:
-      return "direct (Amesos2 " + text(settings, "solver", "KLU2") + " LU)";
+      return "direct (" + text(settings, "solver", "UMFPACK") + " LU)";
     case Preconditioner::multigrid:
       return krylov_name + " + MueLu smoothed aggregation with rigid-body modes";
     case Preconditioner::ifpack2:
@@ -59,11 +59,11 @@ std::string LinearSolverPlan::describe() const {
   return krylov_name + " without preconditioner";
 }
 
-// KLU2 factor times measured on this machine (docs/implicit.md): 2D 1.0-3.0 s at 8.5k dofs,
-// 20-68 s at 33k, 173 s at 132k; 3D 0.11 s at 1.6k, 6.6 s at 10k dofs. Above these limits
-// multigrid is faster where it converges.
+// UMFPACK factor times measured on this machine (docs/implicit.md): 2D 0.6 s at 8.5k dofs,
+// 3.3 s at 33k, 22 s at 132k (where multigrid did not converge on the beam); 3D 3.4 s at 9.3k,
+// 35 s at 31k dofs (multigrid: 22 s). Above these limits multigrid is faster where it converges.
 std::int64_t default_direct_limit(int dimension) {
-  return dimension <= 2 ? 40000 : 12000;
+  return dimension <= 2 ? 150000 : 12000;
 }
 
 LinearSolverPlan plan_linear_solver(const std::string& solver, std::int64_t direct_limit,
@@ -109,7 +109,7 @@ LinearSolverPlan plan_linear_solver(const std::string& solver, std::int64_t dire
 
   switch (plan.preconditioner) {
     case Plan::Preconditioner::direct:
-      plan.settings.set("solver", "KLU2");  // Tacho crashed in Debian's 13.2 build (measured)
+      plan.settings.set("solver", "UMFPACK");  // KLU2 2-20x slower here; Tacho crashed (measured)
       break;
     case Plan::Preconditioner::multigrid:
       plan.settings = multigrid_defaults(dimension);
