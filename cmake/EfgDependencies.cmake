@@ -6,7 +6,7 @@ set(EFG_TRILINOS_PREFIX "" CACHE PATH "Trilinos install prefix (empty: Debian's 
 find_package(MPI REQUIRED COMPONENTS CXX)
 if(EFG_TRILINOS_PREFIX)
   find_package(Trilinos 13.2 REQUIRED
-    COMPONENTS Teuchos Tpetra Belos Ifpack2 MueLu NOX Stratimikos Thyra Amesos2 Zoltan2 Anasazi
+    COMPONENTS Teuchos Tpetra Belos Ifpack2 MueLu NOX Stratimikos Thyra Amesos2 Zoltan2 Anasazi Sacado
     PATHS ${EFG_TRILINOS_PREFIX} NO_DEFAULT_PATH)
 else()
   find_package(Trilinos 13.2 REQUIRED

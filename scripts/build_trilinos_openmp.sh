@@ -9,7 +9,7 @@
 #
 # Choices (../shared/reference/toolchain.md, "Threads and GPUs"):
 #   - packages Kokkos, KokkosKernels, Teuchos, Tpetra, Belos, Ifpack2, Amesos2, Thyra,
-#     Stratimikos, NOX (with its LAPACK group), Zoltan2, MueLu, Anasazi; Epetra explicitly off
+#     Stratimikos, NOX (with its LAPACK group), Zoltan2, MueLu, Anasazi, Sacado; Epetra explicitly off
 #     (Thyra and NOX would pull it in);
 #   - explicit instantiation for scalar double, local int, global long long, the OpenMP node only
 #     (Tpetra's default node is then Kokkos::Compat::KokkosOpenMPWrapperNode);
@@ -61,6 +61,7 @@ options=(
   -DTrilinos_ENABLE_Zoltan2=ON
   -DTrilinos_ENABLE_MueLu=ON
   -DTrilinos_ENABLE_Anasazi=ON
+  -DTrilinos_ENABLE_Sacado=ON
   -DAnasazi_ENABLE_Tpetra=ON
   -DNOX_ENABLE_ABSTRACT_IMPLEMENTATION_LAPACK=ON
   -DTrilinos_ENABLE_Epetra=OFF

@@ -1,0 +1,36 @@
+// The consistent tangent A = dP/dH of the J2 update (physics/materials/J2Plasticity.hpp) by
+// forward AD: the update runs once on Sacado SFad<double, Dim * Dim> numbers seeded on the
+// components of H, so A is the derivative of the algorithm itself (the algorithmic tangent of
+// Simo & Taylor, CMAME 48 (1985) 101-118), at round-off accuracy and with no hand-derived
+// fourth-order tensors to keep in step with the law.
+#pragma once
+
+#include <Sacado.hpp>
+
+#include "materials/J2Plasticity.hpp"
+
+namespace efg {
+
+/// P, A[i][j][k][l] = dP_ij / dH_kl, the new state and the Cauchy stress of one J2 step (see
+/// physics::j2_update; false when det F <= 0).
+template <int Dim>
+KOKKOS_INLINE_FUNCTION bool j2_stress_and_tangent(
+    const physics::J2Parameters& p, const double (&H)[Dim][Dim],
+    const double (&old_state)[physics::j2_state::count], double dt, double (&P)[Dim][Dim],
+    double (&A)[Dim][Dim][Dim][Dim], double (&new_state)[physics::j2_state::count],
+    double (&cauchy)[3][3]) {
+  using Fad = Sacado::Fad::SFad<double, Dim * Dim>;
+  Fad h[Dim][Dim], stress[Dim][Dim];
+  for (int k = 0; k < Dim; ++k)
+    for (int l = 0; l < Dim; ++l) h[k][l] = Fad(Dim * Dim, k * Dim + l, H[k][l]);
+  if (!physics::j2_update<Fad, Dim>(p, h, old_state, dt, stress, new_state, cauchy)) return false;
+  for (int i = 0; i < Dim; ++i)
+    for (int j = 0; j < Dim; ++j) {
+      P[i][j] = stress[i][j].val();
+      for (int k = 0; k < Dim; ++k)
+        for (int l = 0; l < Dim; ++l) A[i][j][k][l] = stress[i][j].fastAccessDx(k * Dim + l);
+    }
+  return true;
+}
+
+}  // namespace efg
