@@ -53,11 +53,13 @@ struct J2Parameters {
 
 /// The state of j2_update at one point: `count` doubles.
 namespace j2_state {
-constexpr int count = 8;
+constexpr int count = 10;
 constexpr int cp_inverse = 0;      ///< finite strain: Cp^-1, stored xx yy zz xy yz zx
 constexpr int plastic_strain = 0;  ///< small strain: eps_p, stored xx yy zz xy yz zx
 constexpr int alpha = 6;           ///< effective plastic strain
 constexpr int out_of_plane = 7;    ///< F33 (finite) or eps33 (small); plane stress solves it
+constexpr int dissipation = 8;     ///< plastic work per unit reference volume, sum of tau : d eps_p
+constexpr int elastic_energy = 9;  ///< stored energy 1/2 tau : eps_e per unit reference volume
 }  // namespace j2_state
 
 EFG_PHYSICS_FUNCTION J2Parameters j2_linear_hardening(double lambda, double mu, double yield_stress,
@@ -286,6 +288,17 @@ EFG_PHYSICS_FUNCTION bool j2_update(const J2Parameters& p, const T (&H)[Dim][Dim
   }
   for (int k = 0; k < j2_state::count; ++k) new_state[k] = old_state[k];
   new_state[j2_state::alpha] = alpha;
+  // Energy account: the step's plastic work tau : (dgamma n) (backward Euler, the stress at the
+  // end of the step) and the Hencky stored energy 1/2 tau : eps_e, so that their sum is the
+  // internal energy the explicit driver balances against the external work.
+  double work = 0.0, stored = 0.0;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      work += flow[i][j] * value_of(tau[i][j]);
+      stored += 0.5 * value_of(tau[i][j]) * (value_of(eps[i][j]) - flow[i][j]);
+    }
+  new_state[j2_state::dissipation] = old_state[j2_state::dissipation] + work;
+  new_state[j2_state::elastic_energy] = stored;
   if (thin) new_state[j2_state::out_of_plane] = p.small_strain ? y : exp(y);
   if (p.small_strain) {
     for (int i = 0; i < 3; ++i)

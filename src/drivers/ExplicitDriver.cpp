@@ -198,6 +198,7 @@ void ExplicitDriver::advance(RunState& state, double step_dt, long long step,
   Tpetra::deep_copy(f_ext_old_, f_ext_);
   Tpetra::deep_copy(f_wall_old_, f_wall_);
   Tpetra::deep_copy(f_support_old_, f_support_);
+  ops_.solid().history().set_step_time(step_dt);
   // An inverted point (det F <= 0) may show on one rank only: agree on it collectively, write
   // the last good state, and name the point, step and time.
   try {
@@ -233,6 +234,8 @@ void ExplicitDriver::advance(RunState& state, double step_dt, long long step,
     output(state);
     report_non_finite(failed, step);
   }
+  // The step is accepted: its material history (computed with the force at d_n+1) is kept.
+  ops_.solid().history().commit();
 }
 
 ExplicitSummary ExplicitDriver::run(RunState& state, const StateOutput& output, bool record_start) {

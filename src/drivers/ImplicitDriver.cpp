@@ -36,6 +36,7 @@ StageSummary ImplicitDriver::run(Vector& d, const OutputHook& output) {
     Log::info("  stage '" + stage_.name + "' step " + std::to_string(summary.steps + 1) +
               ": t = " + std::to_string(target));
     Tpetra::deep_copy(saved, d);
+    problem_.solid().history().set_step_time(target - t);
     const auto result = newton.solve(d);
     summary.newton_iterations += result.iterations;
     summary.linear_iterations += result.linear_iterations;
@@ -77,6 +78,9 @@ StageSummary ImplicitDriver::run(Vector& d, const OutputHook& output) {
       Log::warning(why.str() + "; cutting the step to " + std::to_string(dt));
       continue;
     }
+    // Accepted: the history of the converged state becomes the start of the next load step (a
+    // cut-back step above never reaches here and leaves the committed history untouched).
+    problem_.commit_history(d);
     t = target;
     ++summary.steps;
     summary.residual_histories.push_back(result.residual_history);

@@ -33,8 +33,8 @@ std::vector<std::array<double, 3>> PrescribedMotion::reactions(const Vector& R) 
     local[3 * c.condition + static_cast<std::size_t>(c.direction)] +=
         r(static_cast<std::size_t>(c.row), 0);
   if (!local.empty())
-    Teuchos::reduceAll(*R.getMap()->getComm(), Teuchos::REDUCE_SUM,
-                       static_cast<int>(local.size()), local.data(), global.data());
+    Teuchos::reduceAll(*R.getMap()->getComm(), Teuchos::REDUCE_SUM, static_cast<int>(local.size()),
+                       local.data(), global.data());
   std::vector<std::array<double, 3>> out(conditions_);
   for (std::size_t c = 0; c < conditions_; ++c)
     out[c] = {global[3 * c], global[3 * c + 1], global[3 * c + 2]};

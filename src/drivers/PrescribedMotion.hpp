@@ -11,9 +11,9 @@
 #include <string>
 #include <vector>
 
-#include "operators/SolidOperator.hpp"
 #include "model/Curves.hpp"
 #include "model/Model.hpp"
+#include "operators/SolidOperator.hpp"
 
 namespace efg {
 

@@ -24,6 +24,14 @@ StaticProblem::StaticProblem(std::shared_ptr<const ModelOperators> operators)
       if (material.name == part.material && material.model != "linear_elastic") linear_ = false;
 }
 
+void StaticProblem::commit_history(const Vector& d_owned) {
+  auto& history = ops_->solid().history();
+  if (!history.any()) return;
+  Vector f(d_owned.getMap());
+  ops_->internal_force(d_owned, f);
+  history.commit();
+}
+
 void StaticProblem::set_load_factor(const LoadFactor& factor) {
   conditions_.set_factor(factor);
   ops_->loads().assemble(factor, f_ext_);

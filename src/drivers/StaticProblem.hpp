@@ -26,6 +26,10 @@ class StaticProblem {
   void jacobian(const Vector& d_owned, FEMatrix& K);
   Teuchos::RCP<FEMatrix> create_matrix() const { return Teuchos::rcp(new FEMatrix(graph_)); }
 
+  /// Accepts the load step converged at d: the material history computed at d (the internal
+  /// force is evaluated there once more, whatever point the solver evaluated last) is committed.
+  void commit_history(const Vector& d_owned);
+
   /// Reactions of every boundary condition at d (after a converged solve).
   std::vector<std::array<double, 3>> reactions(const Vector& d_owned);
 

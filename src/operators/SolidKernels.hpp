@@ -19,7 +19,7 @@
 
 #include "core/DeviceArrays.hpp"
 #include "discretization/GatherIndex.hpp"
-#include "materials/SolidMaterial.hpp"
+#include "operators/PointMaterial.hpp"
 
 namespace efg {
 
@@ -33,7 +33,7 @@ struct DevicePoints {
   GatherIndex by_node;
   DeviceView<const std::size_t*>
       slot;  ///< position of entry k in by_node order (by_node.entry inverted)
-  physics::SolidMaterial material;
+  PointMaterial material;
 };
 
 template <int Dim, class DisplacementView>
@@ -63,7 +63,7 @@ struct PointTangentKernel {
   KOKKOS_INLINE_FUNCTION void operator()(const int q) const {
     double H[Dim][Dim], P[Dim][Dim], A[Dim][Dim][Dim][Dim];
     displacement_gradient<Dim>(p, u, q, H);
-    if (!physics::stress<Dim>(p.material, H, P, A)) {
+    if (!point_stress<Dim>(p.material, q, H, P, A)) {
       Kokkos::atomic_fetch_min(&inverted(), q);
       return;
     }
@@ -94,7 +94,7 @@ struct PointForceKernel {
   KOKKOS_INLINE_FUNCTION void operator()(const int q) const {
     double H[Dim][Dim], P[Dim][Dim];
     displacement_gradient<Dim>(p, u, q, H);
-    const bool ok = physics::stress<Dim>(p.material, H, P);
+    const bool ok = point_stress<Dim>(p.material, q, H, P);
     if (!ok) Kokkos::atomic_fetch_min(&inverted(), q);
     const double w = p.weight(q);
     for (std::size_t k = p.offsets(q); k < p.offsets(q + 1); ++k) {
@@ -136,7 +136,7 @@ struct SerialForceKernel {
   KOKKOS_INLINE_FUNCTION void operator()(const int q) const {
     double H[Dim][Dim], P[Dim][Dim];
     displacement_gradient<Dim>(p, u, q, H);
-    if (!physics::stress<Dim>(p.material, H, P)) {
+    if (!point_stress<Dim>(p.material, q, H, P)) {
       Kokkos::atomic_fetch_min(&inverted(), q);
       return;
     }
@@ -197,7 +197,7 @@ struct NodalTangentKernel {
   }
 };
 
-/// Strain energy w_q W(H_q) of point q (physics::strain_energy: 0 when inverted), summed by the caller
+/// Internal energy w_q W(H_q) of point q (point_energy: 0 when inverted), summed by the caller
 /// in a thread-count-independent order (parallel/ReproducibleSum.hpp).
 template <int Dim, class DisplacementView>
 struct PointEnergy {
@@ -207,7 +207,25 @@ struct PointEnergy {
   KOKKOS_INLINE_FUNCTION double operator()(const std::size_t q) const {
     double H[Dim][Dim];
     displacement_gradient<Dim>(p, u, static_cast<int>(q), H);
-    return p.weight(q) * physics::strain_energy<Dim>(p.material, H);
+    return p.weight(q) * point_energy<Dim>(p.material, static_cast<int>(q), H);
+  }
+};
+
+/// Output of a path-dependent point q: the Cauchy stress (9 values, row major) at the committed
+/// state and the effective plastic strain (column 9).
+template <int Dim, class DisplacementView>
+struct PointHistoryOutput {
+  DevicePoints p;
+  DisplacementView u;
+  DeviceView<double**> out;  // points x 10
+
+  KOKKOS_INLINE_FUNCTION void operator()(const int q) const {
+    double H[Dim][Dim], sigma[3][3];
+    displacement_gradient<Dim>(p, u, q, H);
+    point_cauchy_stress<Dim>(p.material, q, H, sigma);
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) out(q, i * 3 + j) = sigma[i][j];
+    out(q, 9) = p.material.committed(q, physics::j2_state::alpha);
   }
 };
 

@@ -22,23 +22,7 @@ auto column(Vector& v) {
 
 }  // namespace
 
-physics::SolidMaterial solid_material(const MaterialSpec& material, const PartSpec& part,
-                                      int dimension) {
-  const double e = material.constants.at("youngs_modulus"),
-               nu = material.constants.at("poissons_ratio");
-  const bool plane_stress = dimension == 2 && part.plane_stress;
-  const auto c =
-      plane_stress ? physics::plane_stress_constants(e, nu) : physics::elastic_constants(e, nu);
-  physics::SolidMaterial m;
-  m.kind = material.model == "neo_hookean" ? physics::MaterialKind::neo_hookean
-                                           : physics::MaterialKind::linear_elastic;
-  m.lambda = c.lambda;
-  m.mu = c.mu;
-  m.plane_stress = plane_stress;
-  return m;
-}
-
-SolidOperator::SolidOperator(const Model& model) : dim_(model.mesh.dimension) {
+SolidOperator::SolidOperator(const Model& model) : dim_(model.mesh.dimension), history_(model) {
   const auto& overlap = *model.maps.overlap_nodes;
   overlap_nodes_ = overlap.getNodeNumElements();
   for (const auto& d : model.parts) {
@@ -78,7 +62,11 @@ SolidOperator::SolidOperator(const Model& model) : dim_(model.mesh.dimension) {
         "efg::solid_slots", Kokkos::RangePolicy<ExecSpace>(0, p.slot_count),
         KOKKOS_LAMBDA(const std::size_t e) { slot(entry(e)) = e; });
     p.device.slot = slot;
-    p.device.material = solid_material(*model.scene.find_material(d.part->material), *d.part, dim_);
+    const MaterialLaw law = material_law(model.scene, *d.part, dim_);
+    const auto& states = history_.part(parts_.size());
+    p.device.material =
+        PointMaterial{law.elastic, law.plastic, law.j2, states.committed, states.trial, 0.0};
+    p.small_strain = d.part->section.formulation == Formulation::small_strain;
     p.points = ip.size();
     p.x = ip.x;
     p.node = ip.node;
@@ -143,7 +131,7 @@ void SolidOperator::add_internal_force(const Vector& d_overlap, Vector& f_overla
     for_each_part(
         [&](auto dim, const auto& points, const PartData& p, const auto& inverted) {
           using Kernel = SerialForceKernel<decltype(dim)::value, decltype(u), decltype(f)>;
-          Kokkos::parallel_for("efg::internal_force", points, Kernel{p.device, u, f, inverted});
+          Kokkos::parallel_for("efg::internal_force", points, Kernel{device(p), u, f, inverted});
         },
         [](auto, const auto&, const PartData&) {});
     return;
@@ -154,11 +142,11 @@ void SolidOperator::add_internal_force(const Vector& d_overlap, Vector& f_overla
         if (p.term.extent(0) != p.slot_count)
           p.term = DeviceView<double**>("efg::force terms", p.slot_count, Dim);
         Kokkos::parallel_for("efg::point_force", points,
-                             PointForceKernel<Dim, decltype(u)>{p.device, u, p.term, inverted});
+                             PointForceKernel<Dim, decltype(u)>{device(p), u, p.term, inverted});
       },
       [&](auto dim, const auto& nodes, const PartData& p) {
         using Kernel = NodalForceKernel<decltype(dim)::value, decltype(f)>;
-        Kokkos::parallel_for("efg::internal_force", nodes, Kernel{p.device, p.term, f});
+        Kokkos::parallel_for("efg::internal_force", nodes, Kernel{device(p), p.term, f});
       });
 }
 
@@ -173,11 +161,11 @@ void SolidOperator::add_tangent(const Vector& d_overlap, FEMatrix& K) const {
           p.tangent = DeviceView<double**>("efg::point tangent", p.points, Dim * Dim * Dim * Dim);
         Kokkos::parallel_for(
             "efg::point_tangent", points,
-            PointTangentKernel<Dim, decltype(u)>{p.device, u, p.tangent, inverted});
+            PointTangentKernel<Dim, decltype(u)>{device(p), u, p.tangent, inverted});
       },
       [&](auto dim, const auto& nodes, const PartData& p) {
         using Kernel = NodalTangentKernel<decltype(dim)::value, decltype(local)>;
-        Kokkos::parallel_for("efg::tangent", nodes, Kernel{p.device, p.tangent, local});
+        Kokkos::parallel_for("efg::tangent", nodes, Kernel{device(p), p.tangent, local});
       });
 }
 
@@ -185,15 +173,15 @@ double SolidOperator::check_small_strain(const Vector& d_overlap, double time) c
   const auto u = column(d_overlap);
   double largest = 0;
   for (const auto& p : parts_) {
-    if (p.device.material.kind != physics::MaterialKind::linear_elastic) continue;
+    if (!p.small_strain) continue;
     DeviceView<double**> out("efg::kinematics", p.points, 2);
     const auto points = Kokkos::RangePolicy<ExecSpace>(0, static_cast<int>(p.points));
     if (dim_ == 2)
       Kokkos::parallel_for("efg::kinematics", points,
-                           PointKinematics<2, decltype(u)>{p.device, u, out});
+                           PointKinematics<2, decltype(u)>{device(p), u, out});
     else
       Kokkos::parallel_for("efg::kinematics", points,
-                           PointKinematics<3, decltype(u)>{p.device, u, out});
+                           PointKinematics<3, decltype(u)>{device(p), u, out});
     const auto host = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), out);
     for (std::size_t q = 0; q < p.points; ++q) {
       if (!(host(q, 0) > 0)) {
@@ -211,14 +199,36 @@ double SolidOperator::check_small_strain(const Vector& d_overlap, double time) c
   return largest;
 }
 
+std::vector<SolidOperator::HistoryOutput> SolidOperator::history_output(
+    const Vector& d_overlap) const {
+  const auto u = column(d_overlap);
+  std::vector<HistoryOutput> result(parts_.size());
+  for (std::size_t i = 0; i < parts_.size(); ++i) {
+    const auto& p = parts_[i];
+    if (!p.device.material.plastic) continue;
+    DeviceView<double**> out("efg::history output", p.points, 10);
+    const auto points = Kokkos::RangePolicy<ExecSpace>(0, static_cast<int>(p.points));
+    if (dim_ == 2)
+      Kokkos::parallel_for("efg::history_output", points,
+                           PointHistoryOutput<2, decltype(u)>{device(p), u, out});
+    else
+      Kokkos::parallel_for("efg::history_output", points,
+                           PointHistoryOutput<3, decltype(u)>{device(p), u, out});
+    const auto host = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), out);
+    result[i].node = p.node;
+    result[i].values.assign(host.data(), host.data() + p.points * 10);
+  }
+  return result;
+}
+
 double SolidOperator::strain_energy(const Vector& d_overlap) const {
   const auto u = column(d_overlap);
   double total = 0;
   for (const auto& p : parts_) {
     if (dim_ == 2)
-      total += block_sum(p.points, PointEnergy<2, decltype(u)>{p.device, u});
+      total += block_sum(p.points, PointEnergy<2, decltype(u)>{device(p), u});
     else
-      total += block_sum(p.points, PointEnergy<3, decltype(u)>{p.device, u});
+      total += block_sum(p.points, PointEnergy<3, decltype(u)>{device(p), u});
   }
   return total;
 }

@@ -9,18 +9,16 @@
 
 #include <vector>
 
+#include "model/MaterialLaws.hpp"
+#include "model/MaterialStates.hpp"
+#include "model/Model.hpp"
 #include "operators/CouplingGraph.hpp"
 #include "operators/SolidKernels.hpp"
-#include "model/Model.hpp"
 
 namespace efg {
 
 using Vector = Tpetra::Vector<>;
 using FEMatrix = Tpetra::FECrsMatrix<>;
-
-/// Material constants of a part for the physics kernels (plane stress reduces lambda).
-physics::SolidMaterial solid_material(const MaterialSpec& material, const PartSpec& part,
-                                      int dimension);
 
 class SolidOperator {
  public:
@@ -38,12 +36,24 @@ class SolidOperator {
   /// naming the point when det(I + grad u) <= 0 (particles passed through each other, which a
   /// small-strain formulation cannot represent) at `time`; returns the largest |sym H|.
   double check_small_strain(const Vector& d_overlap, double time) const;
+  /// Per part, for path-dependent parts only (others: empty): per integration point its mesh
+  /// node (SCNI and nodal integration) and 10 values, the Cauchy stress (row major) and the
+  /// effective plastic strain at the committed state.
+  struct HistoryOutput {
+    std::vector<LocalIndex> node;
+    std::vector<double> values;  // points x 10
+  };
+  std::vector<HistoryOutput> history_output(const Vector& d_overlap) const;
   /// Strain energy of this rank's points (sum over ranks for the total).
   double strain_energy(const Vector& d_overlap) const;
 
   /// Overlap node index of every particle of part p (cloud order).
   const std::vector<int>& overlap_node(std::size_t part) const { return parts_[part].overlap_node; }
   int dimension() const { return dim_; }
+
+  /// History of the path-dependent parts: force evaluations write its trial states; the drivers
+  /// commit them when a step is accepted and set the step time (rate-dependent laws).
+  MaterialStates& history() const { return history_; }
 
  private:
   struct PartData {
@@ -58,7 +68,14 @@ class SolidOperator {
     std::string name;
     std::vector<double> x;         // point coordinates, for messages
     std::vector<LocalIndex> node;  // the particle of each point (SCNI, nodal), -1 for Gauss
+    bool small_strain = true;
   };
+  /// The part's device data with the current step time.
+  DevicePoints device(const PartData& p) const {
+    DevicePoints d = p.device;
+    d.material.step_time = history_.step_time();
+    return d;
+  }
   void report_inversion(const PartData& part, int point) const;
   std::string point_location(const PartData& part, int point) const;
   /// For every part: pass1(dimension tag, point policy, part, inverted), inverted points
@@ -67,6 +84,7 @@ class SolidOperator {
   void for_each_part(const Pass1& pass1, const Gather& gather) const;
 
   int dim_;
+  mutable MaterialStates history_;
   std::size_t overlap_nodes_ = 0;
   std::vector<PartData> parts_;
 };

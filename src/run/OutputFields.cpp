@@ -52,7 +52,9 @@ std::vector<std::string> field_columns(const std::string& field, int dimension) 
     return {field + "_xx", field + "_yy", field + "_zz",
             field + "_xy", field + "_yz", field + "_zx"};
   }
-  if (field == "von_mises" || field == "nodal_volume" || field == "owner_rank") return {field};
+  if (field == "von_mises" || field == "plastic_strain" || field == "nodal_volume" ||
+      field == "owner_rank")
+    return {field};
   throw std::logic_error("no output columns for field '" + field + "'");
 }
 
@@ -165,6 +167,21 @@ std::vector<std::vector<double>> state_columns(const Model& model, const SolidOp
         return f == "stress" || f == "strain" || f == "von_mises";
       }))
     particle_tensors(model, particles, strains, stresses);
+  // Path-dependent parts: stress and plastic strain from the committed history of each
+  // particle's integration point (SCNI and nodal integration: one point per particle).
+  std::vector<double> plastic(owned.size(), 0.0);
+  if (op.history().any()) {
+    std::vector<std::size_t> slot(model.mesh.node_count(), owned.size());
+    for (std::size_t i = 0; i < owned.size(); ++i) slot[static_cast<std::size_t>(owned[i])] = i;
+    for (const auto& h : op.history_output(d_overlap))
+      for (std::size_t q = 0; q < h.node.size(); ++q) {
+        const auto s = h.node[q] >= 0 ? slot[static_cast<std::size_t>(h.node[q])] : owned.size();
+        if (s == owned.size()) continue;
+        for (std::size_t i = 0; i < 3; ++i)
+          for (std::size_t j = 0; j < 3; ++j) stresses[s][i][j] = h.values[q * 10 + i * 3 + j];
+        plastic[s] = h.values[q * 10 + 9];
+      }
+  }
   std::vector<std::vector<double>> columns;
   for (const auto& field : fields) {
     const auto count = field_columns(field, dim).size();
@@ -190,6 +207,8 @@ std::vector<std::vector<double>> state_columns(const Model& model, const SolidOp
           push_tensor(values, strain, dim, c);
         else if (field == "von_mises")
           values.push_back(physics::von_mises(sigma));
+        else if (field == "plastic_strain")
+          values.push_back(plastic[s]);
         else if (field == "nodal_volume")
           values.push_back(volume[static_cast<std::size_t>(owned[s])]);
         else if (field == "owner_rank")

@@ -46,6 +46,7 @@ struct MaterialSpec {
   std::string model;
   std::optional<double> density;
   std::map<std::string, double> constants;  ///< model constants by key name
+  std::string hardening_curve;  ///< j2_plasticity: curve of yield stress over plastic strain
 };
 
 struct BoundaryConditionSpec {
@@ -126,6 +127,7 @@ struct Scene {
   YAML::Node resolved;  ///< validated, defaults filled (printed by `efg check`)
 
   const MaterialSpec* find_material(const std::string& name) const;
+  const CurveSpec* find_curve(const std::string& name) const;
 };
 
 }  // namespace efg

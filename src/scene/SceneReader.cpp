@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "core/Errors.hpp"
+#include "scene/PlasticityInput.hpp"
 #include "scene/SceneSchema.hpp"
 #include "scene/SchemaValidator.hpp"
 #include "scene/YamlDocument.hpp"
@@ -60,6 +61,7 @@ class SceneBuilder {
                                        as_vector<double>(ic["value"])});
     for (std::size_t i = 0; i < r["stages"].size(); ++i)
       build_stage(r["stages"][i], d["stages"][i], i);
+    check_plasticity_input(s_);
     s_.output.file = r["output"]["file"] ? r["output"]["file"].as<std::string>() : s_.name + ".e";
     s_.output.fields = as_vector<std::string>(r["output"]["fields"]);
     s_.output.history = opt_string(r["output"], "history");
@@ -139,7 +141,9 @@ class SceneBuilder {
     if (m["density"]) mat.density = m["density"].as<double>();
     for (const auto& kv : m) {
       const auto key = kv.first.as<std::string>();
-      if (key != "name" && key != "model" && key != "density")
+      if (key == "hardening_curve")
+        mat.hardening_curve = kv.second.as<std::string>();
+      else if (key != "name" && key != "model" && key != "density")
         mat.constants[key] = kv.second.as<double>();
     }
     s_.materials.push_back(mat);
@@ -414,6 +418,12 @@ class SceneBuilder {
 };
 
 }  // namespace
+
+const CurveSpec* Scene::find_curve(const std::string& curve_name) const {
+  for (const auto& c : curves)
+    if (c.name == curve_name) return &c;
+  return nullptr;
+}
 
 const MaterialSpec* Scene::find_material(const std::string& material_name) const {
   for (const auto& m : materials)

@@ -106,7 +106,8 @@ SpecPtr material_spec() {
   auto poisson = real("Poisson's ratio.", "-").above(-1.0).below(0.5);
   return map("A material model. Keys after model depend on the model.")
       .required("name", string("Material name, unique."))
-      .required("model", choice("Constitutive model.", {"linear_elastic", "neo_hookean"}))
+      .required("model",
+                choice("Constitutive model.", {"linear_elastic", "neo_hookean", "j2_plasticity"}))
       .optional("density",
                 real("Mass density (needed by explicit stages).", "mass/length^3").above(0))
       .discriminated_by("model")
@@ -119,7 +120,27 @@ SpecPtr material_spec() {
            required_key("poissons_ratio",
                         real("Small-strain Poisson's ratio; kappa = E/(3(1-2nu)).", "-")
                             .above(-1.0)
-                            .below(0.5))});
+                            .below(0.5))})
+      .variant(
+          "j2_plasticity",
+          {required_key("youngs_modulus", youngs), required_key("poissons_ratio", poisson),
+           required_key("yield_stress",
+                        real("Initial yield stress (von Mises).", "stress").above(0)),
+           optional_key("hardening_modulus",
+                        real("Linear isotropic hardening modulus H: sigma_y = yield_stress + H "
+                             "eps_p; 0 (default) is perfect plasticity. Not with "
+                             "hardening_curve.",
+                             "stress")
+                            .at_least(0)),
+           optional_key("hardening_curve",
+                        string("Name of a curve of yield stress (value) over effective plastic "
+                               "strain (time), starting at (0, yield_stress), at most 17 "
+                               "points, not decreasing; extended with its last slope.")),
+           optional_key("rate_c", real("Cowper-Symonds C: sigma_y x (1 + (eps_p rate / C)^(1/p)); "
+                                       "omitted: rate independent.",
+                                       "1/time")
+                                      .above(0)),
+           optional_key("rate_p", real("Cowper-Symonds p (default 1).", "-").above(0))});
 }
 
 std::vector<Key> component_keys(const std::string& what, const std::string& unit) {
@@ -263,10 +284,11 @@ SpecPtr stage_spec() {
                         "{}"),
            optional_key("linear_solver",
                         passthrough("Belos parameter list; 'Solver Type' picks the method."), "{}"),
-           optional_key("preconditioner",
-                        passthrough("'Type': direct, MueLu, Ifpack2 or None; the other keys go "
-                                    "to that package's list ('solver': UMFPACK or KLU2 for direct)."),
-                        "{}")})
+           optional_key(
+               "preconditioner",
+               passthrough("'Type': direct, MueLu, Ifpack2 or None; the other keys go "
+                           "to that package's list ('solver': UMFPACK or KLU2 for direct)."),
+               "{}")})
       .variant(
           "explicit",
           {optional_key("dt_scale",
@@ -311,7 +333,7 @@ SpecPtr output_spec() {
       .optional("fields",
                 string_list("Nodal (particle) fields written at each record.")
                     .choices({"displacement", "velocity", "acceleration", "stress", "strain",
-                              "von_mises", "nodal_volume", "owner_rank"}),
+                              "von_mises", "plastic_strain", "nodal_volume", "owner_rank"}),
                 "[displacement, nodal_volume, owner_rank]")
       .optional("history",
                 string("CSV file, beside the results file (relative to its folder), of the global "

@@ -489,6 +489,30 @@ TEST(J2Plasticity, PlaneStressSolvesTheThicknessStrain) {
   EXPECT_LT(r.state[j2_state::out_of_plane], 0.9);
 }
 
+TEST(J2Plasticity, EnergyAccountOfSimpleShear) {
+  // Small-strain simple shear gamma (eps_xy = gamma / 2), perfect plasticity, by hand: the shear
+  // stress stays at k = sigma_y / sqrt(3) once gamma > k / mu, the plastic shear strain is
+  // gamma - k / mu, so the plastic work is k (gamma - k / mu) and the stored energy k^2 / (2 mu).
+  const double mu = 80.0, lambda = 120.0, sigma_y = 0.3, k = sigma_y / std::sqrt(3.0);
+  J2Parameters p = j2_linear_hardening(lambda, mu, sigma_y, 0.0);
+  p.small_strain = true;
+  double state[j2_state::count], next[j2_state::count], cauchy[3][3];
+  j2_initial_state(p, state);
+  const double gamma_end = 5 * k / mu;
+  for (int step = 1; step <= 10; ++step) {
+    const double gamma = gamma_end * step / 10;
+    const double H[3][3] = {{0, gamma, 0}, {0, 0, 0}, {0, 0, 0}};
+    double P[3][3];
+    ASSERT_TRUE((j2_update<double, 3>(p, H, state, 0.0, P, next, cauchy)));
+    const double shear = std::min(mu * gamma, k);
+    EXPECT_NEAR(P[0][1], shear, 1e-12 * k) << step;
+    EXPECT_NEAR(next[j2_state::elastic_energy], shear * shear / (2 * mu), 1e-12 * k * k / mu);
+    EXPECT_NEAR(next[j2_state::dissipation], k * std::max(0.0, gamma - k / mu),
+                1e-12 * k * gamma_end);
+    for (int c = 0; c < j2_state::count; ++c) state[c] = next[c];
+  }
+}
+
 TEST(J2Plasticity, InvertedPointIsReported) {
   const J2Parameters p = linear(false);
   double state[S], P[2][2], next[S], c[3][3];

@@ -1,0 +1,68 @@
+#include "model/MaterialLaws.hpp"
+
+#include <stdexcept>
+
+#include "materials/ElasticConstants.hpp"
+
+namespace efg {
+
+physics::SolidMaterial solid_material(const MaterialSpec& material, const PartSpec& part,
+                                      int dimension) {
+  const double e = material.constants.at("youngs_modulus"),
+               nu = material.constants.at("poissons_ratio");
+  const bool plane_stress = dimension == 2 && part.plane_stress;
+  const auto c =
+      plane_stress ? physics::plane_stress_constants(e, nu) : physics::elastic_constants(e, nu);
+  physics::SolidMaterial m;
+  m.kind = material.model == "neo_hookean" ? physics::MaterialKind::neo_hookean
+                                           : physics::MaterialKind::linear_elastic;
+  m.lambda = c.lambda;
+  m.mu = c.mu;
+  m.plane_stress = plane_stress;
+  return m;
+}
+
+namespace {
+
+// The scene reader has checked the curve (exists, starts at (0, yield_stress), at most
+// max_curve_points further points, strain increasing, stress not decreasing).
+physics::J2Parameters j2_parameters(const Scene& scene, const MaterialSpec& material,
+                                    const PartSpec& part, int dimension) {
+  const auto& k = material.constants;
+  // The law takes the 3D constants; plane stress is solved inside it (sigma_33 = 0).
+  const auto c = physics::elastic_constants(k.at("youngs_modulus"), k.at("poissons_ratio"));
+  const double yield = k.at("yield_stress");
+  const auto hardening = k.find("hardening_modulus");
+  physics::J2Parameters p = physics::j2_linear_hardening(
+      c.lambda, c.mu, yield, hardening == k.end() ? 0.0 : hardening->second);
+  if (!material.hardening_curve.empty()) {
+    const CurveSpec* curve = scene.find_curve(material.hardening_curve);
+    if (!curve) throw std::logic_error("unchecked hardening curve " + material.hardening_curve);
+    p.curve_points = 0;
+    for (std::size_t i = 1; i < curve->time.size(); ++i) {
+      p.curve_strain[p.curve_points] = curve->time[i];
+      p.curve_stress[p.curve_points] = curve->value[i];
+      ++p.curve_points;
+    }
+  }
+  if (k.count("rate_c")) p.rate_c = k.at("rate_c");
+  if (k.count("rate_p")) p.rate_p = k.at("rate_p");
+  p.small_strain = part.section.formulation == Formulation::small_strain;
+  p.plane_stress = dimension == 2 && part.plane_stress;
+  return p;
+}
+
+}  // namespace
+
+MaterialLaw material_law(const Scene& scene, const PartSpec& part, int dimension) {
+  const MaterialSpec& material = *scene.find_material(part.material);
+  MaterialLaw law;
+  law.elastic = solid_material(material, part, dimension);
+  if (material.model == "j2_plasticity") {
+    law.plastic = true;
+    law.j2 = j2_parameters(scene, material, part, dimension);
+  }
+  return law;
+}
+
+}  // namespace efg

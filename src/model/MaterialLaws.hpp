@@ -1,0 +1,29 @@
+// The constitutive law of each part, as the physics kernels take it: the elastic laws
+// (physics/materials/SolidMaterial.hpp) or J2 plasticity (physics/materials/J2Plasticity.hpp)
+// with its hardening curve and history state. Read from the scene's material and part.
+#pragma once
+
+#include "materials/J2Plasticity.hpp"
+#include "materials/SolidMaterial.hpp"
+#include "scene/Scene.hpp"
+
+namespace efg {
+
+struct MaterialLaw {
+  /// The elastic law; for a path-dependent part its elastic constants (the stable time step,
+  /// penalty scales and messages read them).
+  physics::SolidMaterial elastic;
+  bool plastic = false;  ///< J2 plasticity with history state
+  physics::J2Parameters j2;
+  /// Doubles of history per integration point (0: the law keeps none).
+  int state_count() const { return plastic ? physics::j2_state::count : 0; }
+};
+
+/// Material constants of a part for the elastic kernels (plane stress reduces lambda).
+physics::SolidMaterial solid_material(const MaterialSpec& material, const PartSpec& part,
+                                      int dimension);
+
+/// The law of `part` (its material and formulation) in a model of `dimension`.
+MaterialLaw material_law(const Scene& scene, const PartSpec& part, int dimension);
+
+}  // namespace efg

@@ -1,0 +1,46 @@
+// History variables of path-dependent materials at every integration point of this rank, per
+// part: `committed` holds the state at the end of the last accepted step (explicit step, or
+// converged implicit load step), `trial` the state the latest force evaluation computed from it.
+// Force evaluations never change `committed`, so a rejected Newton iterate or a cut-back load
+// step leaves it bit-identical; the drivers call commit() when a step is accepted. One object per
+// run, shared by every stage, so the state passes from an explicit stage to an implicit one and
+// back. A part whose law keeps no history allocates nothing (a scene without plasticity holds
+// no state at all).
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "core/DeviceArrays.hpp"
+#include "model/MaterialLaws.hpp"
+#include "model/Model.hpp"
+
+namespace efg {
+
+class MaterialStates {
+ public:
+  struct PartStates {
+    int count = 0;  ///< doubles per point (0: none)
+    DeviceView<double**> committed, trial;
+  };
+
+  /// One block per part of the model, sized by its law, set to the law's initial state.
+  explicit MaterialStates(const Model& model);
+
+  const PartStates& part(std::size_t p) const { return parts_[p]; }
+  std::size_t parts() const { return parts_.size(); }
+  bool any() const;
+
+  /// The accepted step's states become the committed ones.
+  void commit();
+
+  /// Time increment of the step being evaluated (rate-dependent laws read it).
+  double step_time() const { return step_time_; }
+  void set_step_time(double dt) { step_time_ = dt; }
+
+ private:
+  std::vector<PartStates> parts_;
+  double step_time_ = 0.0;
+};
+
+}  // namespace efg

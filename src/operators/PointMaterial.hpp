@@ -1,0 +1,75 @@
+// The one material dispatch of the solid kernels (SolidKernels.hpp): per integration point q,
+// P (and A = dP/dH, and the strain energy) from the part's law. Elastic laws are a function of
+// H alone (physics::stress); J2 plasticity reads the committed history of q and writes the
+// trial history (physics::j2_update; its tangent by forward AD, MaterialTangent.hpp). An
+// elastic part pays one predictable branch per point (bench/: efg_bench_explicit).
+#pragma once
+
+#include "core/DeviceArrays.hpp"
+#include "materials/SolidMaterial.hpp"
+#include "operators/MaterialTangent.hpp"
+
+namespace efg {
+
+struct PointMaterial {
+  physics::SolidMaterial elastic;
+  bool plastic = false;
+  physics::J2Parameters j2;
+  DeviceView<double**> committed, trial;  ///< points x j2_state::count (plastic parts)
+  double step_time = 0.0;                 ///< time increment of the step (rate term)
+};
+
+namespace point_material_detail {
+using State = double[physics::j2_state::count];
+KOKKOS_INLINE_FUNCTION const State& row(const DeviceView<double**>& v, int q) {
+  return *reinterpret_cast<const State*>(&v(q, 0));
+}
+KOKKOS_INLINE_FUNCTION State& mutable_row(const DeviceView<double**>& v, int q) {
+  return *reinterpret_cast<State*>(&v(q, 0));
+}
+}  // namespace point_material_detail
+
+/// P at point q; A when given. False when the point is inverted (det F <= 0).
+template <int Dim>
+KOKKOS_INLINE_FUNCTION bool point_stress(const PointMaterial& m, int q, const double (&H)[Dim][Dim],
+                                         double (&P)[Dim][Dim],
+                                         double (*A)[Dim][Dim][Dim] = nullptr) {
+  if (!m.plastic) return physics::stress<Dim>(m.elastic, H, P, A);
+  using namespace point_material_detail;
+  double cauchy[3][3];
+  if (A)
+    return j2_stress_and_tangent<Dim>(m.j2, H, row(m.committed, q), m.step_time, P,
+                                      *reinterpret_cast<double(*)[Dim][Dim][Dim][Dim]>(A),
+                                      mutable_row(m.trial, q), cauchy);
+  return physics::j2_update<double, Dim>(m.j2, H, row(m.committed, q), m.step_time, P,
+                                         mutable_row(m.trial, q), cauchy);
+}
+
+/// Internal energy per unit reference volume at q: the strain energy of an elastic law; stored
+/// plus dissipated energy of J2 at the end of the step from the committed state (0 when
+/// inverted). Writes nothing.
+template <int Dim>
+KOKKOS_INLINE_FUNCTION double point_energy(const PointMaterial& m, int q,
+                                           const double (&H)[Dim][Dim]) {
+  if (!m.plastic) return physics::strain_energy<Dim>(m.elastic, H);
+  using namespace point_material_detail;
+  double P[Dim][Dim], next[physics::j2_state::count], cauchy[3][3];
+  if (!physics::j2_update<double, Dim>(m.j2, H, row(m.committed, q), m.step_time, P, next, cauchy))
+    return 0.0;
+  return next[physics::j2_state::elastic_energy] + next[physics::j2_state::dissipation];
+}
+
+/// Cauchy stress (3 x 3) at q for output, from the committed state.
+template <int Dim>
+KOKKOS_INLINE_FUNCTION void point_cauchy_stress(const PointMaterial& m, int q,
+                                                const double (&H)[Dim][Dim],
+                                                double (&sigma)[3][3]) {
+  if (!m.plastic) return physics::cauchy_stress<Dim>(m.elastic, H, sigma);
+  using namespace point_material_detail;
+  double P[Dim][Dim], next[physics::j2_state::count];
+  if (!physics::j2_update<double, Dim>(m.j2, H, row(m.committed, q), m.step_time, P, next, sigma))
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) sigma[i][j] = 0.0;
+}
+
+}  // namespace efg
