@@ -48,7 +48,7 @@ ExplicitDriver::ExplicitDriver(const ModelOperators& ops, const StageSpec& stage
   inverse_mass_.reciprocal(mass_);
 }
 
-std::vector<double> ExplicitDriver::acceleration(double time, double dt, const Vector& d,
+std::vector<double> ExplicitDriver::acceleration(double time, double wall_dt, const Vector& d,
                                                  Vector& a) {
   ops_.loads().assemble(curve_factor(ops_.model().scene, time, 1.0), f_ext_);
   ops_.internal_force(d, f_int_);
@@ -57,7 +57,7 @@ std::vector<double> ExplicitDriver::acceleration(double time, double dt, const V
   if (!walls_.empty()) {
     ops_.to_overlap(d, d_overlap_);
     wall_overlap_.putScalar(0.0);
-    wall_forces = walls_.add_forces(d_overlap_, dt, wall_overlap_);
+    wall_forces = walls_.add_forces(d_overlap_, wall_dt, wall_overlap_);
     ops_.to_owned(wall_overlap_, f_wall_);
   }
   a.update(1.0, f_ext_, -1.0, f_int_, 0.0);
@@ -203,7 +203,9 @@ void ExplicitDriver::advance(RunState& state, double step_dt, long long step,
   // the last good state, and name the point, step and time.
   try {
     run_collectively(mass_.getMap()->getComm(), [&] {
-      state.wall_forces = acceleration(state.time + step_dt, step_dt, state.d, state.a);
+      // The walls keep the stage's stiffness on a shortened last step: p m / step_dt^2 would
+      // multiply the contact force of the same penetration (4.7x measured on the bar impact).
+      state.wall_forces = acceleration(state.time + step_dt, wall_dt_, state.d, state.a);
     });
   } catch (const std::exception& e) {
     const bool here = dynamic_cast<const NumericalError*>(&e) != nullptr;
@@ -248,6 +250,7 @@ ExplicitSummary ExplicitDriver::run(RunState& state, const StateOutput& output, 
 
   const auto plan = plan_steps(state.d, start_time);
   double dt_crit = plan.dt_crit, dt = plan.dt;
+  wall_dt_ = dt;
   start(state, dt);
   auto record = [&] {
     state.reactions = motion_.reactions(f_support_);
@@ -265,6 +268,7 @@ ExplicitSummary ExplicitDriver::run(RunState& state, const StateOutput& output, 
     if (!fixed && summary.steps > 0 && summary.steps % refresh == 0) {
       dt_crit = stable_.estimate(state.d);
       dt = scale * dt_crit;
+      wall_dt_ = dt;
     }
     const double step_dt = std::min(dt, end - state.time);
     advance(state, step_dt, summary.steps + 1, output);

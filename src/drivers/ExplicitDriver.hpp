@@ -45,7 +45,9 @@ class ExplicitDriver {
 
   const Vector& mass() const { return mass_; }
   /// a = M^-1 (f_ext(t) - f_int(d) + f_wall(d)); returns the wall forces. Exposed for tests.
-  std::vector<double> acceleration(double time, double dt, const Vector& d, Vector& a);
+  /// a = M^-1 (f_ext(time) - f_int(d) + f_wall(d)); `wall_dt` sets the walls' penalty
+  /// stiffness p m / wall_dt^2 (RigidWalls): the stage's step, not a shortened last step.
+  std::vector<double> acceleration(double time, double wall_dt, const Vector& d, Vector& a);
 
  private:
   bool finite(const RunState& state) const;  // collective
@@ -55,6 +57,7 @@ class ExplicitDriver {
   void energies(RunState& state);
   /// Accelerations, support forces and energies of the start state.
   void start(RunState& state, double dt);
+  double wall_dt_ = 0;  ///< the step size the walls' penalty is scaled with (the stage's dt)
   /// One velocity-Verlet step (step numbers the messages); on failure writes the last good state.
   void advance(RunState& state, double step_dt, long long step, const StateOutput& output);
   void restore_previous(RunState& state) const;
