@@ -27,9 +27,10 @@ StaticProblem::StaticProblem(std::shared_ptr<const ModelOperators> operators)
 void StaticProblem::commit_history(const Vector& d_owned) {
   auto& history = ops_->solid().history();
   if (!history.any()) return;
-  Vector f(d_owned.getMap());
-  ops_->internal_force(d_owned, f);
+  Vector r(d_owned.getMap());
+  residual(d_owned, r);  // the internal force and the boundary terms, at d
   history.commit();
+  conditions_.commit_history();
 }
 
 void StaticProblem::set_load_factor(const LoadFactor& factor) {

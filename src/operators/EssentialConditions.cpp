@@ -53,6 +53,7 @@ EssentialConditions::EssentialConditions(const Model& model, const SolidOperator
     : dim_(model.mesh.dimension),
       conditions_(model.scene.boundary_conditions.size()),
       overlap_dofs_(model.maps.overlap_dofs) {
+  states_ = &op.history();
   double largest_modulus = 0;
   for (const auto& m : model.scene.materials)
     largest_modulus = std::max(largest_modulus, m.constants.at("youngs_modulus"));
@@ -162,8 +163,7 @@ long long EssentialConditions::add_boundary_points(const Model& model, const Sol
         evaluate_shape_functions(d.cloud, x.data(), pts.size(), true, [&](std::size_t q) {
           return "boundary point " + std::to_string(q) + " of condition '" + bc.name + "'";
         });
-    const auto material =
-        solid_material(*model.scene.find_material(d.part->material), *d.part, dim_);
+    const MaterialLaw law = material_law(model.scene, *d.part, dim_);
     for (std::size_t q = 0; q < pts.size(); ++q) {
       BoundaryPoint b;
       b.condition = setup.index;
@@ -176,7 +176,14 @@ long long EssentialConditions::add_boundary_points(const Model& model, const Sol
       b.curve = bc.curve;
       b.method = setup.method;
       b.beta = beta[q];
-      b.material = material;
+      b.law = law;
+      if (law.plastic) {
+        b.history = committed_.size();
+        double initial[physics::j2_state::count];
+        physics::j2_initial_state(law.j2, initial);
+        committed_.insert(committed_.end(), initial, initial + physics::j2_state::count);
+        trial_.insert(trial_.end(), initial, initial + physics::j2_state::count);
+      }
       for (auto k = v.neighbors.offsets[q]; k < v.neighbors.offsets[q + 1]; ++k) {
         b.nodes.push_back(op.overlap_node(p)[static_cast<std::size_t>(v.neighbors.particles[k])]);
         b.phi.push_back(v.phi[k]);
@@ -214,6 +221,19 @@ double EssentialConditions::constrained_value(const NodeConstraint& c,
 }
 
 template <int Dim>
+bool EssentialConditions::boundary_stress(const BoundaryPoint& p, const double (&H)[Dim][Dim],
+                                          double (&P)[Dim][Dim],
+                                          double (&A)[Dim][Dim][Dim][Dim]) const {
+  if (!p.law.plastic) return physics::stress_and_tangent<Dim>(p.law.elastic, H, P, A);
+  using State = double[physics::j2_state::count];
+  const auto& old_state = *reinterpret_cast<const State*>(&committed_[p.history]);
+  auto& new_state = *reinterpret_cast<State*>(&trial_[p.history]);
+  double cauchy[3][3];
+  return j2_stress_and_tangent<Dim>(p.law.j2, H, old_state, states_->step_time(), P, A,
+                                    new_state, cauchy);
+}
+
+template <int Dim>
 void EssentialConditions::point_terms(const BoundaryPoint& p, const Vector& d_overlap,
                                       Vector* r_overlap, FEMatrix* K) const {
   const auto d = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
@@ -226,7 +246,7 @@ void EssentialConditions::point_terms(const BoundaryPoint& p, const Vector& d_ov
       for (int j = 0; j < Dim; ++j) H[i][j] += di * p.grad[a * Dim + static_cast<std::size_t>(j)];
     }
   double P[Dim][Dim] = {}, A[Dim][Dim][Dim][Dim] = {};
-  if (!physics::stress_and_tangent<Dim>(p.material, H, P, A))
+  if (!boundary_stress<Dim>(p, H, P, A))
     throw NumericalError("det F <= 0 at a boundary point of an essential condition");
   double gap[Dim] = {}, Pn[Dim] = {};
   for (int i = 0; i < Dim; ++i) {

@@ -51,6 +51,11 @@ class EssentialConditions {
   /// ... and the owned matrix rows (after endAssembly).
   void replace_rows(FEMatrix& K) const;
 
+  /// Path-dependent parts: the boundary points keep a plastic history of their own (the
+  /// traction term needs the stress there); the last evaluation's state becomes the committed one
+  /// when the load step is accepted (as MaterialStates::commit).
+  void commit_history() { committed_ = trial_; }
+
   /// Reaction force of every condition, summed over ranks, from the owned residual of the
   /// unconstrained equations r = f_int - f_ext.
   std::vector<std::array<double, 3>> reactions(const Vector& residual_owned) const;
@@ -74,7 +79,8 @@ class EssentialConditions {
     std::string curve;
     int method;  // 0 transformation, 1 nitsche, 2 penalty
     double beta;
-    physics::SolidMaterial material;
+    MaterialLaw law;
+    std::size_t history = 0;  // plastic laws: offset of the point's state in committed_/trial_
     std::vector<int> nodes;
     std::vector<double> phi, grad;  // grad: dim per entry
   };
@@ -83,6 +89,11 @@ class EssentialConditions {
   double constrained_value(const NodeConstraint& c, const Vector& d_overlap) const;
 
   void build_reaction_weights(const Model& model);
+  /// P (and A) at a boundary point: its law, with its own history for a plastic law.
+  template <int Dim>
+  bool boundary_stress(const BoundaryPoint& p, const double (&H)[Dim][Dim], double (&P)[Dim][Dim],
+                       double (&A)[Dim][Dim][Dim][Dim]) const;
+
   /// One displacement condition while it is being set up.
   struct Setup {
     std::size_t index = 0;
@@ -103,6 +114,9 @@ class EssentialConditions {
   Teuchos::RCP<const Map> overlap_dofs_;
   std::vector<NodeConstraint> nodes_;
   std::vector<BoundaryPoint> points_;
+  const MaterialStates* states_ = nullptr;  // the step time of rate-dependent laws
+  std::vector<double> committed_;
+  mutable std::vector<double> trial_;
 };
 
 }  // namespace efg

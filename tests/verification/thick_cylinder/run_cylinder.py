@@ -14,8 +14,8 @@ usage: run_cylinder.py EFG OUTDIR [--np2 MPIRUN] [--material auto|elastic|plasti
              checked against Hill; auto (default): plastic when `EFG schema` knows j2_plasticity
   --radial, --hoop  cells in r and theta (default 20 x 30: 651 particles)
   --dilation normalized support size (default 2.0)
-  --bc-method  enforcement of the symmetry conditions (default: transformation for elastic,
-             penalty for plastic: efg refuses transformation with j2_plasticity)
+  --bc-method  enforcement of the symmetry conditions (default: transformation, as efg)
+
   --reference-youngs / --reference-yield
              the E / sigma_y the *reference* uses (default: the scene's 210000 / 240); a wrong
              value must make the checks fail (the check of the checker)
@@ -314,7 +314,7 @@ def main():
     if plastic:
         fractions = PLASTIC_FRACTIONS
         write_scene(scene, mesh, True, ["displacement", "stress", "plastic_strain"], p_l, fractions,
-                    args.bc_method or "penalty", args.dilation)
+                    args.bc_method or "transformation", args.dilation)
     else:
         fractions = [0.5, 1.0]
         write_scene(scene, mesh, False, ["displacement", "stress"], 100.0, fractions,
