@@ -49,17 +49,21 @@ struct J2Parameters {
   double rate_p = 1.0;  ///< Cowper-Symonds p
   bool small_strain = false;
   bool plane_stress = false;  ///< 2D only: plane stress instead of plane strain
+  /// Erosion: the point fails once its effective plastic strain reaches this value (0: never);
+  /// from the next step on it carries no stress and its state stays as it was.
+  double failure_strain = 0.0;
 };
 
 /// The state of j2_update at one point: `count` doubles.
 namespace j2_state {
-constexpr int count = 10;
+constexpr int count = 11;
 constexpr int cp_inverse = 0;      ///< finite strain: Cp^-1, stored xx yy zz xy yz zx
 constexpr int plastic_strain = 0;  ///< small strain: eps_p, stored xx yy zz xy yz zx
 constexpr int alpha = 6;           ///< effective plastic strain
 constexpr int out_of_plane = 7;    ///< F33 (finite) or eps33 (small); plane stress solves it
 constexpr int dissipation = 8;     ///< plastic work per unit reference volume, sum of tau : d eps_p
 constexpr int elastic_energy = 9;  ///< stored energy 1/2 tau : eps_e per unit reference volume
+constexpr int eroded = 10;         ///< 1 once the point has failed (erosion), else 0
 }  // namespace j2_state
 
 EFG_PHYSICS_FUNCTION J2Parameters j2_linear_hardening(double lambda, double mu, double yield_stress,
@@ -244,6 +248,14 @@ EFG_PHYSICS_FUNCTION bool j2_update(const J2Parameters& p, const T (&H)[Dim][Dim
                                     double (&cauchy)[3][3]) {
   static_assert(Dim == 2 || Dim == 3, "2D or 3D");
   using namespace j2_detail;
+  if (old_state[j2_state::eroded] > 0.5) {  // failed: no stress, the state kept as it was
+    for (int k = 0; k < j2_state::count; ++k) new_state[k] = old_state[k];
+    for (int i = 0; i < Dim; ++i)
+      for (int j = 0; j < Dim; ++j) P[i][j] = 0.0;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) cauchy[i][j] = 0.0;
+    return true;
+  }
   double Hv[Dim][Dim], history[3][3], Fv[3][3], flow[3][3], column[3][3], alpha;
   for (int i = 0; i < Dim; ++i)
     for (int j = 0; j < Dim; ++j) Hv[i][j] = value_of(H[i][j]);
@@ -299,6 +311,7 @@ EFG_PHYSICS_FUNCTION bool j2_update(const J2Parameters& p, const T (&H)[Dim][Dim
     }
   new_state[j2_state::dissipation] = old_state[j2_state::dissipation] + work;
   new_state[j2_state::elastic_energy] = stored;
+  if (p.failure_strain > 0 && alpha >= p.failure_strain) new_state[j2_state::eroded] = 1.0;
   if (thin) new_state[j2_state::out_of_plane] = p.small_strain ? y : exp(y);
   if (p.small_strain) {
     for (int i = 0; i < 3; ++i)

@@ -47,6 +47,7 @@ physics::J2Parameters j2_parameters(const Scene& scene, const MaterialSpec& mate
   }
   if (k.count("rate_c")) p.rate_c = k.at("rate_c");
   if (k.count("rate_p")) p.rate_p = k.at("rate_p");
+  if (k.count("failure_strain")) p.failure_strain = k.at("failure_strain");
   p.small_strain = part.section.formulation == Formulation::small_strain;
   p.plane_stress = dimension == 2 && part.plane_stress;
   return p;

@@ -212,12 +212,12 @@ struct PointEnergy {
 };
 
 /// Output of a path-dependent point q: the Cauchy stress (9 values, row major) at the committed
-/// state and the effective plastic strain (column 9).
+/// state, the effective plastic strain (column 9) and the erosion flag (column 10).
 template <int Dim, class DisplacementView>
 struct PointHistoryOutput {
   DevicePoints p;
   DisplacementView u;
-  DeviceView<double**> out;  // points x 10
+  DeviceView<double**> out;  // points x 11
 
   KOKKOS_INLINE_FUNCTION void operator()(const int q) const {
     double H[Dim][Dim], sigma[3][3];
@@ -226,6 +226,20 @@ struct PointHistoryOutput {
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) out(q, i * 3 + j) = sigma[i][j];
     out(q, 9) = p.material.committed(q, physics::j2_state::alpha);
+    out(q, 10) = p.material.committed(q, physics::j2_state::eroded);
+  }
+};
+
+/// Energy w_q (stored + dissipated) of point q at the committed state if it has failed (eroded),
+/// else 0: the energy erosion took out of the balance.
+struct PointErodedEnergy {
+  DevicePoints p;
+
+  KOKKOS_INLINE_FUNCTION double operator()(const std::size_t q) const {
+    const auto& s = p.material.committed;
+    if (!(s(q, physics::j2_state::eroded) > 0.5)) return 0.0;
+    return p.weight(q) *
+           (s(q, physics::j2_state::elastic_energy) + s(q, physics::j2_state::dissipation));
   }
 };
 
@@ -246,8 +260,11 @@ struct PointKinematics {
         const double e = 0.5 * (H[i][j] + H[j][i]);
         ee += e * e;
       }
-    out(q, 0) = physics::determinant<Dim>(F);
-    out(q, 1) = sqrt(ee);
+    // An eroded point is out of the model: its particles may pass through each other.
+    const bool eroded =
+        p.material.plastic && p.material.committed(q, physics::j2_state::eroded) > 0.5;
+    out(q, 0) = eroded ? 1.0 : physics::determinant<Dim>(F);
+    out(q, 1) = eroded ? 0.0 : sqrt(ee);
   }
 };
 

@@ -189,8 +189,8 @@ double SolidOperator::check_small_strain(const Vector& d_overlap, double time) c
         o << "part '" << p.name
           << "': particles passed through each other: det(I + grad u) = " << host(q, 0)
           << " <= 0 at " << point_location(p, static_cast<int>(q)) << ", t = " << time
-          << "; a small-strain formulation cannot represent this motion (use model neo_hookean "
-             "with formulation total_lagrangian)";
+          << "; a small-strain formulation cannot represent this motion (use formulation "
+             "total_lagrangian: model neo_hookean, or j2_plasticity at finite strain)";
         throw NumericalError(o.str());
       }
       largest = std::max(largest, host(q, 1));
@@ -206,7 +206,7 @@ std::vector<SolidOperator::HistoryOutput> SolidOperator::history_output(
   for (std::size_t i = 0; i < parts_.size(); ++i) {
     const auto& p = parts_[i];
     if (!p.device.material.plastic) continue;
-    DeviceView<double**> out("efg::history output", p.points, 10);
+    DeviceView<double**> out("efg::history output", p.points, history_columns);
     const auto points = Kokkos::RangePolicy<ExecSpace>(0, static_cast<int>(p.points));
     if (dim_ == 2)
       Kokkos::parallel_for("efg::history_output", points,
@@ -216,9 +216,16 @@ std::vector<SolidOperator::HistoryOutput> SolidOperator::history_output(
                            PointHistoryOutput<3, decltype(u)>{device(p), u, out});
     const auto host = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), out);
     result[i].node = p.node;
-    result[i].values.assign(host.data(), host.data() + p.points * 10);
+    result[i].values.assign(host.data(), host.data() + p.points * history_columns);
   }
   return result;
+}
+
+double SolidOperator::eroded_energy() const {
+  double total = 0;
+  for (const auto& p : parts_)
+    if (p.device.material.plastic) total += block_sum(p.points, PointErodedEnergy{p.device});
+  return total;
 }
 
 double SolidOperator::strain_energy(const Vector& d_overlap) const {

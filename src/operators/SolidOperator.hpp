@@ -37,13 +37,16 @@ class SolidOperator {
   /// small-strain formulation cannot represent) at `time`; returns the largest |sym H|.
   double check_small_strain(const Vector& d_overlap, double time) const;
   /// Per part, for path-dependent parts only (others: empty): per integration point its mesh
-  /// node (SCNI and nodal integration) and 10 values, the Cauchy stress (row major) and the
-  /// effective plastic strain at the committed state.
+  /// node (SCNI and nodal integration) and history_columns values, the Cauchy stress (row major),
+  /// the effective plastic strain and the erosion flag at the committed state.
+  static constexpr std::size_t history_columns = 11;
   struct HistoryOutput {
     std::vector<LocalIndex> node;
-    std::vector<double> values;  // points x 10
+    std::vector<double> values;  // points x history_columns
   };
   std::vector<HistoryOutput> history_output(const Vector& d_overlap) const;
+  /// Energy (stored + dissipated, at failure) of this rank's eroded points.
+  double eroded_energy() const;
   /// Strain energy of this rank's points (sum over ranks for the total).
   double strain_energy(const Vector& d_overlap) const;
 

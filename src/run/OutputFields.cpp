@@ -52,8 +52,8 @@ std::vector<std::string> field_columns(const std::string& field, int dimension) 
     return {field + "_xx", field + "_yy", field + "_zz",
             field + "_xy", field + "_yz", field + "_zx"};
   }
-  if (field == "von_mises" || field == "plastic_strain" || field == "nodal_volume" ||
-      field == "owner_rank")
+  if (field == "von_mises" || field == "plastic_strain" || field == "eroded" ||
+      field == "nodal_volume" || field == "owner_rank")
     return {field};
   throw std::logic_error("no output columns for field '" + field + "'");
 }
@@ -169,7 +169,7 @@ std::vector<std::vector<double>> state_columns(const Model& model, const SolidOp
     particle_tensors(model, particles, strains, stresses);
   // Path-dependent parts: stress and plastic strain from the committed history of each
   // particle's integration point (SCNI and nodal integration: one point per particle).
-  std::vector<double> plastic(owned.size(), 0.0);
+  std::vector<double> plastic(owned.size(), 0.0), eroded(owned.size(), 0.0);
   if (op.history().any()) {
     std::vector<std::size_t> slot(model.mesh.node_count(), owned.size());
     for (std::size_t i = 0; i < owned.size(); ++i) slot[static_cast<std::size_t>(owned[i])] = i;
@@ -177,9 +177,11 @@ std::vector<std::vector<double>> state_columns(const Model& model, const SolidOp
       for (std::size_t q = 0; q < h.node.size(); ++q) {
         const auto s = h.node[q] >= 0 ? slot[static_cast<std::size_t>(h.node[q])] : owned.size();
         if (s == owned.size()) continue;
+        const std::size_t row = q * SolidOperator::history_columns;
         for (std::size_t i = 0; i < 3; ++i)
-          for (std::size_t j = 0; j < 3; ++j) stresses[s][i][j] = h.values[q * 10 + i * 3 + j];
-        plastic[s] = h.values[q * 10 + 9];
+          for (std::size_t j = 0; j < 3; ++j) stresses[s][i][j] = h.values[row + i * 3 + j];
+        plastic[s] = h.values[row + 9];
+        eroded[s] = h.values[row + 10];
       }
   }
   std::vector<std::vector<double>> columns;
@@ -209,6 +211,8 @@ std::vector<std::vector<double>> state_columns(const Model& model, const SolidOp
           values.push_back(physics::von_mises(sigma));
         else if (field == "plastic_strain")
           values.push_back(plastic[s]);
+        else if (field == "eroded")
+          values.push_back(eroded[s]);
         else if (field == "nodal_volume")
           values.push_back(volume[static_cast<std::size_t>(owned[s])]);
         else if (field == "owner_rank")

@@ -10,12 +10,20 @@ std::string short_name(const std::string& prefix, const std::string& name,
                        const std::string& suffix) {
   return (prefix + name).substr(0, 32 - suffix.size()) + suffix;
 }
+bool erodes(const Scene& scene) {
+  for (const auto& m : scene.materials)
+    if (m.constants.count("failure_strain")) return true;
+  return false;
+}
 }  // namespace
 
 std::vector<std::string> history_names(const Scene& scene, int dimension) {
   std::vector<std::string> names = {
       "time_step", "kinetic_energy", "internal_energy",      "external_work",
       "wall_work", "total_energy",   "energy_balance_error", "strain_energy"};
+  // Erosion: the energy of failed particles (part of internal_energy), only when a material can
+  // erode (the columns of other scenes stay as they were).
+  if (erodes(scene)) names.push_back("eroded_energy");
   const std::string axes = "xyz";
   const auto dim = static_cast<std::size_t>(dimension);
   for (const auto& w : scene.rigid_walls) names.push_back(short_name("wall_", w.name, "_force"));
@@ -56,6 +64,12 @@ std::vector<double> RunHistory::values(const ModelOperators& ops, const RunState
                              state.kinetic + state.internal,
                              state.balance_error(),
                              strain_energy};
+  if (erodes(model_.scene)) {
+    double eroded = 0;
+    Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, ops.solid().eroded_energy(),
+                       Teuchos::outArg(eroded));
+    out.push_back(eroded);
+  }
   for (std::size_t w = 0; w < model_.scene.rigid_walls.size(); ++w)
     out.push_back(w < state.wall_forces.size() ? state.wall_forces[w] : 0.0);
   for (std::size_t c = 0; c < model_.scene.boundary_conditions.size(); ++c)

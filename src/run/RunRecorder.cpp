@@ -47,10 +47,10 @@ void RunRecorder::check_kinematics(double time) {
   if (largest > kSmallStrainLimit && !strain_warned_) {
     strain_warned_ = true;
     Log::warning("strains of " + std::to_string(100 * largest) + " % at t = " +
-                 std::to_string(time) + " in a small-strain (linear_elastic) part: beyond " +
+                 std::to_string(time) + " in a small-strain part: beyond " +
                  std::to_string(static_cast<int>(100 * kSmallStrainLimit)) +
-                 " % its results are no longer a good approximation; use model neo_hookean "
-                 "with formulation total_lagrangian");
+                 " % its results are no longer a good approximation; use formulation "
+                 "total_lagrangian (model neo_hookean, or j2_plasticity at finite strain)");
   }
 }
 

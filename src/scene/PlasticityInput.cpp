@@ -56,6 +56,12 @@ void check_plasticity_input(const Scene& s) {
     if (m.model != "j2_plasticity") continue;
     const std::string path = "materials[" + std::to_string(i) + "]";
     if (!m.hardening_curve.empty()) check_curve(s, m, s.document["materials"][i], path);
+    if (m.constants.count("failure_strain"))
+      for (const auto& st : s.stages)
+        if (st.driver == "implicit")
+          fail(s, s.document["materials"][i]["failure_strain"], path + ".failure_strain",
+               "erosion removes particles during explicit stages only, but stage '" + st.name +
+                   "' is implicit; expected no failure_strain, or explicit stages");
   }
   for (std::size_t i = 0; i < s.parts.size(); ++i) {
     const auto& part = s.parts[i];

@@ -140,7 +140,13 @@ SpecPtr material_spec() {
                                        "omitted: rate independent.",
                                        "1/time")
                                       .above(0)),
-           optional_key("rate_p", real("Cowper-Symonds p (default 1).", "-").above(0))});
+           optional_key("rate_p", real("Cowper-Symonds p (default 1).", "-").above(0)),
+           optional_key("failure_strain",
+                        real("Erosion (explicit stages only): a particle whose effective plastic "
+                             "strain reaches this value carries no stress from then on; its "
+                             "mass and motion stay.",
+                             "-")
+                            .above(0))});
 }
 
 std::vector<Key> component_keys(const std::string& what, const std::string& unit) {
@@ -330,11 +336,12 @@ SpecPtr output_spec() {
   return map("Results output.")
       .optional("file", string("Exodus II results file, relative to the output folder; default: "
                                "the scene's name with .e."))
-      .optional("fields",
-                string_list("Nodal (particle) fields written at each record.")
-                    .choices({"displacement", "velocity", "acceleration", "stress", "strain",
-                              "von_mises", "plastic_strain", "nodal_volume", "owner_rank"}),
-                "[displacement, nodal_volume, owner_rank]")
+      .optional(
+          "fields",
+          string_list("Nodal (particle) fields written at each record.")
+              .choices({"displacement", "velocity", "acceleration", "stress", "strain", "von_mises",
+                        "plastic_strain", "eroded", "nodal_volume", "owner_rank"}),
+          "[displacement, nodal_volume, owner_rank]")
       .optional("history",
                 string("CSV file, beside the results file (relative to its folder), of the global "
                        "quantities (energies, wall forces, "

@@ -513,6 +513,35 @@ TEST(J2Plasticity, EnergyAccountOfSimpleShear) {
   }
 }
 
+TEST(J2Plasticity, ErodedPointCarriesNoStressAndKeepsItsState) {
+  // Simple shear, perfect plasticity: alpha = (2 / sqrt 3) (gamma / 2 - k / (2 mu)) by hand
+  // (eps_p,xy = (gamma - k / mu) / 2, alpha = sqrt(2/3) |eps_p| = sqrt(2/3) sqrt(2) eps_p,xy).
+  // The point fails in the step where alpha reaches failure_strain, still carrying its stress;
+  // from the next step on P = 0 and the state is the one it failed with.
+  const double mu = 80.0, lambda = 120.0, sigma_y = 0.3, k = sigma_y / std::sqrt(3.0);
+  J2Parameters p = j2_linear_hardening(lambda, mu, sigma_y, 0.0);
+  p.small_strain = true;
+  const double gamma_fail = 3 * k / mu;
+  p.failure_strain = (gamma_fail - k / mu) / std::sqrt(3.0);
+  double state[j2_state::count], next[j2_state::count], cauchy[3][3], P[3][3];
+  j2_initial_state(p, state);
+  const double before[3][3] = {{0, 0.99 * gamma_fail, 0}, {0, 0, 0}, {0, 0, 0}};
+  ASSERT_TRUE((j2_update<double, 3>(p, before, state, 0.0, P, next, cauchy)));
+  EXPECT_EQ(next[j2_state::eroded], 0.0);
+  const double at[3][3] = {{0, 1.01 * gamma_fail, 0}, {0, 0, 0}, {0, 0, 0}};
+  ASSERT_TRUE((j2_update<double, 3>(p, at, next, 0.0, P, state, cauchy)));
+  EXPECT_EQ(state[j2_state::eroded], 1.0);
+  EXPECT_NEAR(P[0][1], k, 1e-12 * k);  // the failing step still carries its stress
+  const double later[3][3] = {{0, 2 * gamma_fail, 0.1}, {0.05, 0, 0}, {0, 0, 0}};
+  ASSERT_TRUE((j2_update<double, 3>(p, later, state, 0.0, P, next, cauchy)));
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      EXPECT_EQ(P[i][j], 0.0);
+      EXPECT_EQ(cauchy[i][j], 0.0);
+    }
+  for (int c = 0; c < j2_state::count; ++c) EXPECT_EQ(next[c], state[c]) << c;
+}
+
 TEST(J2Plasticity, InvertedPointIsReported) {
   const J2Parameters p = linear(false);
   double state[S], P[2][2], next[S], c[3][3];
