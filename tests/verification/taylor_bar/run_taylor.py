@@ -206,7 +206,7 @@ def main():
     print("reference L_f = %.3f mm (tol %.0f %%), r_f = %.3f mm (tol %.0f %%), energy balance "
           "< %.0f %%" % (l_ref, 100 * LENGTH_TOL, r_ref, 100 * RADIUS_TOL, 100 * ENERGY_TOL))
     if (l_ref, r_ref) != (REF_LENGTH, REF_RADIUS):
-        print("(references changed from the published %.2f, %.2f)" % (REF_LENGTH, REF_RADIUS))
+        print("(references changed from the defaults %.2f, %.2f)" % (REF_LENGTH, REF_RADIUS))
     print()
     print("| cells (radial x axial) | particles | efg time | steps | L_f | L_f err | r_f "
           "| r_f err | r on wall | rim lift | max eps_p | energy err | KE left | exit |")
