@@ -263,12 +263,21 @@ ExplicitSummary ExplicitDriver::run(RunState& state, const StateOutput& output, 
   summary.smallest_dt = summary.largest_dt = dt;
   double next_output = std::min(end, start_time + interval);
   double reference_energy = std::max(state.initial_energy, 1e-300);
+  // The stable step is re-estimated after 1, 3, 7, ... steps: the interval doubles up to
+  // dt_update_interval while the estimate holds, and halves when it fell by more than 5 % since
+  // the last one. An impact that shrinks the stable step tenfold within a few dozen steps (the
+  // Taylor bar) is followed at once; a steady run pays for a few estimates only.
+  long long estimate_interval = 1, next_estimate = 1;
   Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewCounter("efg: explicit time steps"));
   while (state.time < end - 1e-12 * span) {
-    if (!fixed && summary.steps > 0 && summary.steps % refresh == 0) {
+    if (!fixed && summary.steps >= next_estimate) {
+      const double previous = dt_crit;
       dt_crit = stable_.estimate(state.d);
       dt = scale * dt_crit;
       wall_dt_ = dt;
+      estimate_interval = dt_crit < 0.95 * previous ? std::max(1LL, estimate_interval / 2)
+                                                    : std::min(refresh, 2 * estimate_interval);
+      next_estimate = summary.steps + estimate_interval;
     }
     const double step_dt = std::min(dt, end - state.time);
     advance(state, step_dt, summary.steps + 1, output);

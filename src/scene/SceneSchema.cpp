@@ -306,9 +306,13 @@ SpecPtr stage_spec() {
                boolean(
                    "Run a fixed dt above the stable limit (detected and stopped if it blows up)."),
                "false"),
-           optional_key("dt_update_interval",
-                        integer("Steps between re-estimates of the stable time step.").at_least(1),
-                        "100")});
+           optional_key(
+               "dt_update_interval",
+               integer("Longest interval, in steps, between re-estimates of the stable time step "
+                       "(the interval doubles from 1 while the estimate holds and "
+                       "halves when it falls by more than 5 %).")
+                   .at_least(1),
+               "100")});
 }
 
 SpecPtr rigid_wall_spec() {
