@@ -24,10 +24,14 @@ so every cell has a positive Jacobian (checked here).
 import argparse
 import math
 
-import netCDF4
+import os
+import sys
+
 import numpy as np
 
-LEN_NAME = 33  # maximum_name_length 32 + terminator, as libexodus writes it
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from exodus_mesh import write_exodus  # noqa: E402
+
 
 
 def section(radius, nr):
@@ -118,55 +122,6 @@ def rod(radius, length, nr, nz):
     return x, y, zz, conn, node_sets
 
 
-def put_names(d, var, dim, names):
-    v = d.createVariable(var, "S1", (dim, "len_name"))
-    v[:] = netCDF4.stringtochar(np.array(names, dtype="S%d" % LEN_NAME))
-
-
-def write_exodus(path, title, x, y, z, conn, node_sets, block_name="rod"):
-    with netCDF4.Dataset(path, "w", format="NETCDF3_64BIT_OFFSET") as d:
-        d.setncattr("api_version", np.float32(6.02))
-        d.setncattr("version", np.float32(6.02))
-        d.setncattr("floating_point_word_size", np.int32(8))
-        d.setncattr("file_size", np.int32(1))
-        d.setncattr("maximum_name_length", np.int32(32))
-        d.setncattr("int64_status", np.int32(0))
-        d.setncattr("title", title)
-        d.createDimension("len_string", 33)
-        d.createDimension("len_line", 81)
-        d.createDimension("four", 4)
-        d.createDimension("len_name", LEN_NAME)
-        d.createDimension("time_step", None)
-        d.createDimension("num_dim", 3)
-        d.createDimension("num_nodes", len(x))
-        d.createDimension("num_elem", len(conn))
-        d.createDimension("num_el_blk", 1)
-        d.createDimension("num_node_sets", len(node_sets))
-        d.createDimension("num_el_in_blk1", len(conn))
-        d.createDimension("num_nod_per_el1", 8)
-        for k, nodes in enumerate(node_sets.values(), 1):
-            d.createDimension("num_nod_ns%d" % k, len(nodes))
-
-        d.createVariable("time_whole", "f8", ("time_step",))
-        for prefix, count_dim, count in (("eb", "num_el_blk", 1),
-                                         ("ns", "num_node_sets", len(node_sets))):
-            d.createVariable(prefix + "_status", "i4", (count_dim,))[:] = np.ones(count, np.int32)
-            prop = d.createVariable(prefix + "_prop1", "i4", (count_dim,))
-            prop.setncattr("name", "ID")
-            prop[:] = np.arange(1, count + 1, dtype=np.int32)
-        d.createVariable("coordx", "f8", ("num_nodes",))[:] = x
-        d.createVariable("coordy", "f8", ("num_nodes",))[:] = y
-        d.createVariable("coordz", "f8", ("num_nodes",))[:] = z
-        put_names(d, "eb_names", "num_el_blk", [block_name])
-        put_names(d, "ns_names", "num_node_sets", list(node_sets))
-        put_names(d, "coor_names", "num_dim", ["x", "y", "z"])
-        c = d.createVariable("connect1", "i4", ("num_el_in_blk1", "num_nod_per_el1"))
-        c.setncattr("elem_type", "HEX8")
-        c[:] = conn
-        for k, nodes in enumerate(node_sets.values(), 1):
-            d.createVariable("node_ns%d" % k, "i4", ("num_nod_ns%d" % k,))[:] = nodes
-
-
 def main():
     p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     p.add_argument("out")
@@ -179,7 +134,8 @@ def main():
         p.error("need radius, length > 0, radial >= 2, axial >= 1")
     x, y, z, conn, ns = rod(args.radius, args.length, args.radial, args.axial)
     write_exodus(args.out, "Taylor bar quarter cylinder R=%g L=%g %dx%d"
-                 % (args.radius, args.length, args.radial, args.axial), x, y, z, conn, ns)
+                 % (args.radius, args.length, args.radial, args.axial), [x, y, z], conn, "HEX8", ns,
+                 block_name="rod")
     print("%s: %d nodes, %d HEX8 cells" % (args.out, len(x), len(conn)))
 
 

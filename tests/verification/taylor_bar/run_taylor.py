@@ -130,7 +130,8 @@ def run_one(args, efg, prefix, nr, nz):
     tag = "taylor_%dx%d_%s" % (nr, nz, args.impact)
     mesh = os.path.join(args.outdir, tag + ".e")
     x, y, z, conn, ns = make_mesh.rod(R0, L0, nr, nz)
-    make_mesh.write_exodus(mesh, "Taylor bar quarter cylinder %dx%d" % (nr, nz), x, y, z, conn, ns)
+    make_mesh.write_exodus(mesh, "Taylor bar quarter cylinder %dx%d" % (nr, nz), [x, y, z], conn,
+                           "HEX8", ns, block_name="rod")
     scene = os.path.join(args.outdir, tag + ".yaml")
     write_scene(scene, mesh, args.impact, args.dilation, args.dt_scale, args.dt_update_interval,
                 args.penalty)

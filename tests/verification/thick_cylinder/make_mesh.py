@@ -18,10 +18,14 @@ r = r_(i+1) and side 4 is r = r_i.
 """
 import argparse
 
-import netCDF4
+import os
+import sys
+
 import numpy as np
 
-LEN_NAME = 33  # maximum_name_length 32 + terminator, as libexodus writes it
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from exodus_mesh import write_exodus  # noqa: E402
+
 
 
 def annulus(a, b, nr, nt):
@@ -55,62 +59,6 @@ def annulus(a, b, nr, nt):
     return x, y, conn, node_sets, side_sets
 
 
-def put_names(d, var, dim, names):
-    v = d.createVariable(var, "S1", (dim, "len_name"))
-    v[:] = netCDF4.stringtochar(np.array(names, dtype="S%d" % LEN_NAME))
-
-
-def write_exodus(path, title, x, y, conn, node_sets, side_sets, block_name="annulus"):
-    with netCDF4.Dataset(path, "w", format="NETCDF3_64BIT_OFFSET") as d:
-        d.setncattr("api_version", np.float32(6.02))
-        d.setncattr("version", np.float32(6.02))
-        d.setncattr("floating_point_word_size", np.int32(8))
-        d.setncattr("file_size", np.int32(1))
-        d.setncattr("maximum_name_length", np.int32(32))
-        d.setncattr("int64_status", np.int32(0))
-        d.setncattr("title", title)
-        d.createDimension("len_string", 33)
-        d.createDimension("len_line", 81)
-        d.createDimension("four", 4)
-        d.createDimension("len_name", LEN_NAME)
-        d.createDimension("time_step", None)
-        d.createDimension("num_dim", 2)
-        d.createDimension("num_nodes", len(x))
-        d.createDimension("num_elem", len(conn))
-        d.createDimension("num_el_blk", 1)
-        d.createDimension("num_node_sets", len(node_sets))
-        d.createDimension("num_side_sets", len(side_sets))
-        d.createDimension("num_el_in_blk1", len(conn))
-        d.createDimension("num_nod_per_el1", 4)
-        for k, nodes in enumerate(node_sets.values(), 1):
-            d.createDimension("num_nod_ns%d" % k, len(nodes))
-        for k, (cells, _) in enumerate(side_sets.values(), 1):
-            d.createDimension("num_side_ss%d" % k, len(cells))
-
-        d.createVariable("time_whole", "f8", ("time_step",))
-        for prefix, count_dim, count in (("eb", "num_el_blk", 1),
-                                         ("ns", "num_node_sets", len(node_sets)),
-                                         ("ss", "num_side_sets", len(side_sets))):
-            d.createVariable(prefix + "_status", "i4", (count_dim,))[:] = np.ones(count, np.int32)
-            prop = d.createVariable(prefix + "_prop1", "i4", (count_dim,))
-            prop.setncattr("name", "ID")
-            prop[:] = np.arange(1, count + 1, dtype=np.int32)
-        d.createVariable("coordx", "f8", ("num_nodes",))[:] = x
-        d.createVariable("coordy", "f8", ("num_nodes",))[:] = y
-        put_names(d, "eb_names", "num_el_blk", [block_name])
-        put_names(d, "ns_names", "num_node_sets", list(node_sets))
-        put_names(d, "ss_names", "num_side_sets", list(side_sets))
-        put_names(d, "coor_names", "num_dim", ["x", "y"])
-        c = d.createVariable("connect1", "i4", ("num_el_in_blk1", "num_nod_per_el1"))
-        c.setncattr("elem_type", "QUAD4")
-        c[:] = conn
-        for k, nodes in enumerate(node_sets.values(), 1):
-            d.createVariable("node_ns%d" % k, "i4", ("num_nod_ns%d" % k,))[:] = nodes
-        for k, (cells, sides) in enumerate(side_sets.values(), 1):
-            d.createVariable("elem_ss%d" % k, "i4", ("num_side_ss%d" % k,))[:] = cells
-            d.createVariable("side_ss%d" % k, "i4", ("num_side_ss%d" % k,))[:] = sides
-
-
 def main():
     p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     p.add_argument("out")
@@ -123,7 +71,8 @@ def main():
         p.error("need 0 < inner < outer, radial >= 1, hoop >= 1")
     x, y, conn, ns, ss = annulus(args.inner, args.outer, args.radial, args.hoop)
     write_exodus(args.out, "thick cylinder quarter annulus a=%g b=%g %dx%d"
-                 % (args.inner, args.outer, args.radial, args.hoop), x, y, conn, ns, ss)
+                 % (args.inner, args.outer, args.radial, args.hoop), [x, y], conn, "QUAD4", ns, ss,
+                 block_name="annulus")
     print("%s: %d nodes, %d QUAD4 cells" % (args.out, len(x), len(conn)))
 
 

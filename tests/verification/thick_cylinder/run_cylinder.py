@@ -308,7 +308,8 @@ def main():
     name = "cylinder_plastic" if plastic else "cylinder_elastic"
     mesh = os.path.join(args.outdir, "annulus_%dx%d.e" % (args.radial, args.hoop))
     xs, ys, conn, ns, ss = make_mesh.annulus(A, B, args.radial, args.hoop)
-    make_mesh.write_exodus(mesh, "thick cylinder quarter annulus", xs, ys, conn, ns, ss)
+    make_mesh.write_exodus(mesh, "thick cylinder quarter annulus", [xs, ys], conn, "QUAD4", ns, ss,
+                           block_name="annulus")
     scene = os.path.join(args.outdir, name + ".yaml")
     p_l = hill.collapse_pressure(A, B, SIGMA_Y)
     if plastic:
