@@ -1,0 +1,39 @@
+#!/usr/bin/env python3
+"""1 vs 2 ranks of one explicit run: every history column of every record, and the listed nodal
+fields of the last record, agree to TOL relative to each column's (field's) largest magnitude.
+usage: check_same_on_ranks.py TOL ONE/history.csv TWO/history.csv ONE.e TWO.e FIELD [FIELD ...]
+"""
+import csv
+import sys
+
+import netCDF4
+import numpy as np
+
+tol = float(sys.argv[1])
+a = list(csv.DictReader(open(sys.argv[2])))
+b = list(csv.DictReader(open(sys.argv[3])))
+worst, where = 0.0, ""
+if len(a) != len(b):
+    sys.exit("records: %d on 1 rank, %d on 2" % (len(a), len(b)))
+for name in a[0]:
+    x = np.array([float(r[name]) for r in a])
+    y = np.array([float(r[name]) for r in b])
+    scale = max(np.abs(x).max(), np.abs(y).max(), 1e-300)
+    diff = np.abs(x - y).max() / scale
+    if diff > worst:
+        worst, where = diff, name
+
+
+def last(path, field):
+    d = netCDF4.Dataset(path)
+    names = [b"".join(c for c in row if c).decode() for row in d["name_nod_var"][:]]
+    return np.array(d["vals_nod_var%d" % (names.index(field) + 1)][-1])
+
+
+for field in sys.argv[6:]:
+    x, y = last(sys.argv[4], field), last(sys.argv[5], field)
+    diff = np.abs(x - y).max() / max(np.abs(x).max(), 1e-300)
+    if diff > worst:
+        worst, where = diff, field
+print("1 vs 2 ranks: largest relative difference %.3g (%s)" % (worst, where))
+sys.exit(0 if worst <= tol else 1)
