@@ -5,6 +5,8 @@
 // elastic part pays one predictable branch per point (bench/: efg_bench_explicit).
 #pragma once
 
+#include <type_traits>
+
 #include "core/DeviceArrays.hpp"
 #include "materials/SolidMaterial.hpp"
 #include "operators/MaterialTangent.hpp"
@@ -20,6 +22,10 @@ struct PointMaterial {
 };
 
 namespace point_material_detail {
+// A point's history is one row of a row-major view: its doubles are contiguous, so the row can
+// be handed to the physics kernels as a fixed-size array.
+static_assert(std::is_same_v<DeviceView<double**>::array_layout, Kokkos::LayoutRight>,
+              "history rows must be contiguous");
 using State = double[physics::j2_state::count];
 KOKKOS_INLINE_FUNCTION const State& row(const DeviceView<double**>& v, int q) {
   return *reinterpret_cast<const State*>(&v(q, 0));
