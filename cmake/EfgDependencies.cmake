@@ -34,25 +34,24 @@ if(EFG_KOKKOS_OPENMP)
   target_link_libraries(efg_trilinos INTERFACE OpenMP::OpenMP_CXX)
 endif()
 
-# Exodus II (Debian's libexodusii-dev ships no CMake config).
-find_path(EXODUS_INCLUDE_DIR exodusII.h PATH_SUFFIXES exodusii)
-find_library(EXODUS_LIBRARY NAMES exoIIv2 exodus exoIIv2c)
-if(NOT EXODUS_INCLUDE_DIR OR NOT EXODUS_LIBRARY)
-  message(FATAL_ERROR "efg: Exodus II not found; run scripts/setup.sh (package libexodusii-dev)")
-endif()
-add_library(efg_exodus INTERFACE)
-target_include_directories(efg_exodus SYSTEM INTERFACE ${EXODUS_INCLUDE_DIR})
-target_link_libraries(efg_exodus INTERFACE ${EXODUS_LIBRARY})
+# A Debian library without a CMake config as an INTERFACE target: efg_debian_library(TARGET
+# HEADER "PATH_SUFFIXES" "LIBRARY NAMES" "what" package).
+function(efg_debian_library target header suffixes names what package)
+  find_path(${target}_INCLUDE_DIR ${header} PATH_SUFFIXES ${suffixes})
+  find_library(${target}_LIBRARY NAMES ${names})
+  if(NOT ${target}_INCLUDE_DIR OR NOT ${target}_LIBRARY)
+    message(FATAL_ERROR "efg: ${what} not found; run scripts/setup.sh (package ${package})")
+  endif()
+  add_library(${target} INTERFACE)
+  target_include_directories(${target} SYSTEM INTERFACE ${${target}_INCLUDE_DIR})
+  target_link_libraries(${target} INTERFACE ${${target}_LIBRARY})
+endfunction()
 
+# Exodus II (Debian's libexodusii-dev ships no CMake config).
+efg_debian_library(efg_exodus exodusII.h "exodusii" "exoIIv2;exodus;exoIIv2c" "Exodus II"
+                   libexodusii-dev)
 # UMFPACK (Debian's libsuitesparse-dev): the default sparse direct solver (solvers/SparseLU).
-find_path(UMFPACK_INCLUDE_DIR suitesparse/umfpack.h)
-find_library(UMFPACK_LIBRARY NAMES umfpack)
-if(NOT UMFPACK_INCLUDE_DIR OR NOT UMFPACK_LIBRARY)
-  message(FATAL_ERROR "efg: UMFPACK not found; run scripts/setup.sh (package libsuitesparse-dev)")
-endif()
-add_library(efg_umfpack INTERFACE)
-target_include_directories(efg_umfpack SYSTEM INTERFACE ${UMFPACK_INCLUDE_DIR})
-target_link_libraries(efg_umfpack INTERFACE ${UMFPACK_LIBRARY})
+efg_debian_library(efg_umfpack suitesparse/umfpack.h "" "umfpack" UMFPACK libsuitesparse-dev)
 
 # yaml-cpp as a SYSTEM include as well.
 add_library(efg_yaml INTERFACE)

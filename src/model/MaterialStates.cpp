@@ -4,8 +4,9 @@ namespace efg {
 
 MaterialStates::MaterialStates(const Model& model) {
   for (const auto& d : model.parts) {
-    const MaterialLaw law = material_law(model.scene, *d.part, model.mesh.dimension);
     PartStates s;
+    s.law = material_law(model.scene, *d.part, model.mesh.dimension);
+    const MaterialLaw& law = s.law;
     s.count = law.state_count();
     if (s.count > 0) {
       const std::size_t points = d.points.size(), count = static_cast<std::size_t>(s.count);

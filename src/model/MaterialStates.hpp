@@ -20,7 +20,8 @@ namespace efg {
 class MaterialStates {
  public:
   struct PartStates {
-    int count = 0;  ///< doubles per point (0: none)
+    MaterialLaw law;  ///< the part's law (the operators read it from here)
+    int count = 0;    ///< doubles per point (0: none)
     DeviceView<double**> committed, trial;
   };
 

@@ -163,7 +163,7 @@ long long EssentialConditions::add_boundary_points(const Model& model, const Sol
         evaluate_shape_functions(d.cloud, x.data(), pts.size(), true, [&](std::size_t q) {
           return "boundary point " + std::to_string(q) + " of condition '" + bc.name + "'";
         });
-    const MaterialLaw law = material_law(model.scene, *d.part, dim_);
+    const MaterialLaw& law = op.history().part(p).law;
     for (std::size_t q = 0; q < pts.size(); ++q) {
       BoundaryPoint b;
       b.condition = setup.index;
@@ -229,8 +229,8 @@ bool EssentialConditions::boundary_stress(const BoundaryPoint& p, const double (
   const auto& old_state = *reinterpret_cast<const State*>(&committed_[p.history]);
   auto& new_state = *reinterpret_cast<State*>(&trial_[p.history]);
   double cauchy[3][3];
-  return j2_stress_and_tangent<Dim>(p.law.j2, H, old_state, states_->step_time(), P, A,
-                                    new_state, cauchy);
+  return j2_stress_and_tangent<Dim>(p.law.j2, H, old_state, states_->step_time(), P, A, new_state,
+                                    cauchy);
 }
 
 template <int Dim>

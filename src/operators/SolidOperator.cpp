@@ -62,8 +62,8 @@ SolidOperator::SolidOperator(const Model& model) : dim_(model.mesh.dimension), h
         "efg::solid_slots", Kokkos::RangePolicy<ExecSpace>(0, p.slot_count),
         KOKKOS_LAMBDA(const std::size_t e) { slot(entry(e)) = e; });
     p.device.slot = slot;
-    const MaterialLaw law = material_law(model.scene, *d.part, dim_);
     const auto& states = history_.part(parts_.size());
+    const MaterialLaw& law = states.law;
     p.device.material =
         PointMaterial{law.elastic, law.plastic, law.j2, states.committed, states.trial, 0.0};
     p.small_strain = d.part->section.formulation == Formulation::small_strain;

@@ -85,13 +85,20 @@ struct ParticleValues {
   std::vector<int> part;
 };
 
+// Position of every owned mesh node in the partition order (the owned count for other nodes).
+std::vector<std::size_t> owned_slots(const Model& model) {
+  const auto& owned = model.partition.owned;
+  std::vector<std::size_t> slot(model.mesh.node_count(), owned.size());
+  for (std::size_t i = 0; i < owned.size(); ++i) slot[static_cast<std::size_t>(owned[i])] = i;
+  return slot;
+}
+
 ParticleValues interpolate(const Model& model, const SolidOperator& op, const Vector& d_overlap,
                            const Vector* v_overlap, const Vector* a_overlap) {
   const auto udim = static_cast<std::size_t>(model.mesh.dimension);
   const auto& owned = model.partition.owned;
   ParticleValues out(owned.size());
-  std::vector<std::size_t> slot(model.mesh.node_count(), 0);
-  for (std::size_t i = 0; i < owned.size(); ++i) slot[static_cast<std::size_t>(owned[i])] = i;
+  const auto slot = owned_slots(model);
   const auto d = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
   using HostView = decltype(d);
   const HostView no_values;
@@ -152,6 +159,25 @@ void particle_tensors(const Model& model, const ParticleValues& values,
   }
 }
 
+// Path-dependent parts: stress, plastic strain and erosion flag from the committed history of
+// each particle's integration point (SCNI and nodal integration: one point per particle).
+void history_values(const Model& model, const SolidOperator& op, const Vector& d_overlap,
+                    std::vector<Tensor>& stresses, std::vector<double>& plastic,
+                    std::vector<double>& eroded) {
+  const auto slot = owned_slots(model);
+  const std::size_t none = model.partition.owned.size();
+  for (const auto& h : op.history_output(d_overlap))
+    for (std::size_t q = 0; q < h.node.size(); ++q) {
+      const auto s = h.node[q] >= 0 ? slot[static_cast<std::size_t>(h.node[q])] : none;
+      if (s == none) continue;
+      const std::size_t row = q * SolidOperator::history_columns;
+      for (std::size_t i = 0; i < 3; ++i)
+        for (std::size_t j = 0; j < 3; ++j) stresses[s][i][j] = h.values[row + i * 3 + j];
+      plastic[s] = h.values[row + 9];
+      eroded[s] = h.values[row + 10];
+    }
+}
+
 }  // namespace
 
 std::vector<std::vector<double>> state_columns(const Model& model, const SolidOperator& op,
@@ -167,23 +193,8 @@ std::vector<std::vector<double>> state_columns(const Model& model, const SolidOp
         return f == "stress" || f == "strain" || f == "von_mises";
       }))
     particle_tensors(model, particles, strains, stresses);
-  // Path-dependent parts: stress and plastic strain from the committed history of each
-  // particle's integration point (SCNI and nodal integration: one point per particle).
   std::vector<double> plastic(owned.size(), 0.0), eroded(owned.size(), 0.0);
-  if (op.history().any()) {
-    std::vector<std::size_t> slot(model.mesh.node_count(), owned.size());
-    for (std::size_t i = 0; i < owned.size(); ++i) slot[static_cast<std::size_t>(owned[i])] = i;
-    for (const auto& h : op.history_output(d_overlap))
-      for (std::size_t q = 0; q < h.node.size(); ++q) {
-        const auto s = h.node[q] >= 0 ? slot[static_cast<std::size_t>(h.node[q])] : owned.size();
-        if (s == owned.size()) continue;
-        const std::size_t row = q * SolidOperator::history_columns;
-        for (std::size_t i = 0; i < 3; ++i)
-          for (std::size_t j = 0; j < 3; ++j) stresses[s][i][j] = h.values[row + i * 3 + j];
-        plastic[s] = h.values[row + 9];
-        eroded[s] = h.values[row + 10];
-      }
-  }
+  if (op.history().any()) history_values(model, op, d_overlap, stresses, plastic, eroded);
   std::vector<std::vector<double>> columns;
   for (const auto& field : fields) {
     const auto count = field_columns(field, dim).size();
