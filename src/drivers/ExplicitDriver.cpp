@@ -30,7 +30,13 @@ ExplicitDriver::ExplicitDriver(const ModelOperators& ops, const StageSpec& stage
       inverse_mass_(mass_.getMap()),
       walls_(ops, mass_),
       motion_(ops.model()),
-      stable_(ops, mass_, largest_wall_penalty(ops.model().scene)),
+      supports_(ops),
+      stable_(ops, mass_, largest_wall_penalty(ops.model().scene),
+              supports_.active() ? StableTimeStep::ExtraStiffness(
+                                       [this](const Vector& d, const Vector& x, Vector& y) {
+                                         supports_.add_stiffness_product(d, x, y);
+                                       })
+                                 : StableTimeStep::ExtraStiffness{}),
       f_ext_(mass_.getMap()),
       f_ext_old_(mass_.getMap()),
       f_wall_(mass_.getMap()),
@@ -52,6 +58,10 @@ std::vector<double> ExplicitDriver::acceleration(double time, double wall_dt, co
                                                  Vector& a) {
   ops_.loads().assemble(curve_factor(ops_.model().scene, time, 1.0), f_ext_);
   ops_.internal_force(d, f_int_);
+  if (supports_.active()) {  // f_int_ carries the weak supports' resistance from here on
+    supports_.set_time(time);
+    f_int_.update(1.0, supports_.resistance(d), 1.0);
+  }
   std::vector<double> wall_forces;
   f_wall_.putScalar(0.0);
   if (!walls_.empty()) {
@@ -160,9 +170,14 @@ void ExplicitDriver::energies(RunState& state) {
                      Teuchos::outArg(state.internal));
 }
 
+void ExplicitDriver::support_forces(const Vector& a_free) {
+  motion_.support_force(mass_, a_free, f_support_);
+  if (supports_.active()) f_support_.update(-1.0, supports_.last(), 1.0);
+}
+
 void ExplicitDriver::start(RunState& state, double dt) {
   state.wall_forces = acceleration(state.time, dt, state.d, state.a);
-  motion_.support_force(mass_, state.a, f_support_);
+  support_forces(state.a);
   const Vector v_start(state.v, Teuchos::Copy);
   motion_.constrain_end(curve_factor(ops_.model().scene, state.time, 1.0), v_start, state.v,
                         state.a);
@@ -220,7 +235,7 @@ void ExplicitDriver::advance(RunState& state, double step_dt, long long step,
   }
   Tpetra::deep_copy(state.v, v_half_);
   state.v.update(0.5 * step_dt, state.a, 1.0);
-  motion_.support_force(mass_, state.a, f_support_);
+  support_forces(state.a);
   motion_.constrain_end(at_end, v_half_, state.v, state.a);
   state.time += step_dt;
   state.dt = step_dt;
@@ -238,6 +253,7 @@ void ExplicitDriver::advance(RunState& state, double step_dt, long long step,
   }
   // The step is accepted: its material history (computed with the force at d_n+1) is kept.
   ops_.solid().history().commit();
+  supports_.commit_history();
 }
 
 ExplicitSummary ExplicitDriver::run(RunState& state, const StateOutput& output, bool record_start) {
@@ -254,6 +270,11 @@ ExplicitSummary ExplicitDriver::run(RunState& state, const StateOutput& output, 
   start(state, dt);
   auto record = [&] {
     state.reactions = motion_.reactions(f_support_);
+    if (supports_.active()) {
+      const auto weak = supports_.reactions();
+      for (std::size_t c = 0; c < weak.size(); ++c)
+        for (std::size_t k = 0; k < 3; ++k) state.reactions[c][k] += weak[c][k];
+    }
     output(state);
   };
   if (record_start) record();

@@ -15,6 +15,7 @@
 #include "drivers/PrescribedMotion.hpp"
 #include "drivers/RunState.hpp"
 #include "drivers/StableTimeStep.hpp"
+#include "drivers/WeakSupports.hpp"
 #include "operators/LumpedMass.hpp"
 #include "operators/RigidWalls.hpp"
 
@@ -44,8 +45,8 @@ class ExplicitDriver {
   StepPlan plan_steps(const Vector& d, double start);
 
   const Vector& mass() const { return mass_; }
-  /// a = M^-1 (f_ext(t) - f_int(d) + f_wall(d)); returns the wall forces. Exposed for tests.
-  /// a = M^-1 (f_ext(time) - f_int(d) + f_wall(d)); `wall_dt` sets the walls' penalty
+  /// a = M^-1 (f_ext(time) - f_int(d) - r_weak(d) + f_wall(d)), r_weak the weak supports'
+  /// boundary terms; returns the wall forces. Exposed for tests. `wall_dt` sets the walls' penalty
   /// stiffness p m / wall_dt^2 (RigidWalls): the stage's step, not a shortened last step.
   std::vector<double> acceleration(double time, double wall_dt, const Vector& d, Vector& a);
 
@@ -61,12 +62,15 @@ class ExplicitDriver {
   /// One velocity-Verlet step (step numbers the messages); on failure writes the last good state.
   void advance(RunState& state, double step_dt, long long step, const StateOutput& output);
   void restore_previous(RunState& state) const;
+  /// f_support_ from the free acceleration: the prescribed motions' and the weak supports' forces.
+  void support_forces(const Vector& a_free);
 
   const ModelOperators& ops_;
   const StageSpec& stage_;
   Vector mass_, inverse_mass_;
   RigidWalls walls_;
   PrescribedMotion motion_;
+  WeakSupports supports_;  ///< nitsche / penalty displacement conditions (before stable_)
   StableTimeStep stable_;
   Vector f_ext_, f_ext_old_, f_wall_, f_wall_old_, f_int_, wall_overlap_, d_overlap_;
   void refuse_endless(double span, double dt, double dt_crit) const;

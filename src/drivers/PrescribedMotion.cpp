@@ -12,6 +12,8 @@ PrescribedMotion::PrescribedMotion(const Model& model)
   std::set<int> taken;
   for (std::size_t b = 0; b < conditions_; ++b) {
     const auto& bc = model.scene.boundary_conditions[b];
+    // Displacement conditions with method nitsche or penalty act weakly (drivers/WeakSupports).
+    if (bc.type == "displacement" && bc.method != "transformation") continue;
     for (auto node : model.mesh.find_node_set(bc.node_set)->nodes) {
       if (model.partition.owner[static_cast<std::size_t>(node)] != model.partition.rank) continue;
       for (int i = 0; i < dim; ++i) {

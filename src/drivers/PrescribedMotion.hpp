@@ -1,5 +1,6 @@
-// Prescribed displacements and velocities in explicit stages, on the generalized dofs of the
-// condition's particles: velocity conditions set v_I, displacement conditions move d_I by the
+// Prescribed displacements (method transformation, the default) and velocities in explicit
+// stages, on the generalized dofs of the condition's particles (nitsche and penalty
+// displacement conditions act weakly instead: drivers/WeakSupports): velocity conditions set v_I, displacement conditions move d_I by the
 // change of the prescribed value over each step (so a stage that starts from an implicit
 // solution, whose generalized values at a clamp are not zero, does not jump). With non-interpolating shape functions this imposes the values on
 // the generalized dofs, not exactly on the physical displacement at the nodes (LS-DYNA's EFG

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "core/Errors.hpp"
 #include "parallel/ReproducibleSum.hpp"
@@ -19,8 +20,10 @@ using MultiVector = Tpetra::MultiVector<>;
 // A = M^-1/2 K(d) M^-1/2 as a Tpetra operator, K applied by differences of the internal force.
 class ScaledTangent : public Tpetra::Operator<> {
  public:
-  ScaledTangent(const ModelOperators& ops, const Vector& inv_sqrt_mass, const Vector& d)
+  ScaledTangent(const ModelOperators& ops, const StableTimeStep::ExtraStiffness& extra,
+                const Vector& inv_sqrt_mass, const Vector& d)
       : ops_(ops),
+        extra_(extra),
         s_(inv_sqrt_mass),
         d_(d),
         f0_(d.getMap()),
@@ -53,12 +56,14 @@ class ScaledTangent : public Tpetra::Operator<> {
       probe.update(e, x, 1.0);
       ops_.internal_force(probe, f);
       f.update(-1.0 / e, f0_, 1.0 / e);
+      if (extra_) extra_(d_, x, f);
       y->elementWiseMultiply(alpha, s_, f, beta);
     }
   }
 
  private:
   const ModelOperators& ops_;
+  const StableTimeStep::ExtraStiffness& extra_;
   const Vector& s_;
   const Vector& d_;
   Vector f0_;
@@ -69,11 +74,12 @@ class ScaledTangent : public Tpetra::Operator<> {
 }  // namespace
 
 StableTimeStep::StableTimeStep(const ModelOperators& ops, const Vector& mass_owned,
-                               double wall_penalty)
+                               double wall_penalty, ExtraStiffness extra)
     : ops_(ops),
       inv_sqrt_mass_(mass_owned.getMap()),
       start_(mass_owned.getMap()),
-      wall_penalty_(wall_penalty) {
+      wall_penalty_(wall_penalty),
+      extra_(std::move(extra)) {
   auto s = inv_sqrt_mass_.getLocalViewHost(Tpetra::Access::OverwriteAll);
   const auto m = mass_owned.getLocalViewHost(Tpetra::Access::ReadOnly);
   for (std::size_t k = 0; k < s.extent(0); ++k) s(k, 0) = 1.0 / std::sqrt(m(k, 0));
@@ -87,7 +93,7 @@ StableTimeStep::StableTimeStep(const ModelOperators& ops, const Vector& mass_own
 
 double StableTimeStep::estimate(const Vector& d_owned) {
   Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewCounter("efg: stable time step"));
-  auto A = Teuchos::rcp(new ScaledTangent(ops_, inv_sqrt_mass_, d_owned));
+  auto A = Teuchos::rcp(new ScaledTangent(ops_, extra_, inv_sqrt_mass_, d_owned));
   auto x0 = Teuchos::rcp(new MultiVector(start_, Teuchos::Copy));
   auto problem =
       Teuchos::rcp(new Anasazi::BasicEigenproblem<double, MultiVector, Tpetra::Operator<>>(
@@ -104,7 +110,16 @@ double StableTimeStep::estimate(const Vector& d_owned) {
   settings.set("Verbosity", 0);
   Anasazi::BlockKrylovSchurSolMgr<double, MultiVector, Tpetra::Operator<>> solver(problem,
                                                                                   settings);
-  solver.solve();
+  try {
+    solver.solve();
+  } catch (const std::exception& e) {
+    // Anasazi's Hermitian Krylov-Schur throws on restart when a nonsymmetric operator gives
+    // complex Ritz values; name the cause instead of passing Tpetra's index message on.
+    throw NumericalError(
+        std::string("the stable time step could not be estimated: the eigensolver for the "
+                    "largest frequency of M^-1 K failed (a nonsymmetric stiffness?): ") +
+        e.what());
+  }
   const auto& solution = problem->getSolution();
   if (solution.numVecs < 1)
     throw NumericalError(

@@ -13,7 +13,13 @@
 // Rigid walls (penalty force k = p m / dt^2 on a particle behind the plane) add p / dt^2 to the
 // particle's omega^2; central differences stay stable while dt^2 (omega_K^2 + p / dt^2) <= 4,
 // i.e. dt <= 2 / omega_K sqrt(1 - p / 4): dt_crit is reduced by sqrt(1 - p_max / 4).
+//
+// Stiffness besides the solid's (the weak supports' boundary terms) enters through `extra`, as an
+// exact product y += K_extra(d) x (symmetric; differences of nonlinear boundary terms are not
+// exactly symmetric, and Anasazi's Hermitian Krylov-Schur then fails on complex Ritz values).
 #pragma once
+
+#include <functional>
 
 #include "operators/ModelOperators.hpp"
 
@@ -21,8 +27,11 @@ namespace efg {
 
 class StableTimeStep {
  public:
-  /// `wall_penalty`: the largest rigid-wall penalty factor p of the model (0 without walls).
-  StableTimeStep(const ModelOperators& ops, const Vector& mass_owned, double wall_penalty = 0.0);
+  /// `wall_penalty`: the largest rigid-wall penalty factor p of the model (0 without walls);
+  /// `extra(d, x, y)` adds a further stiffness times x to y.
+  using ExtraStiffness = std::function<void(const Vector& d, const Vector& x, Vector& y)>;
+  StableTimeStep(const ModelOperators& ops, const Vector& mass_owned, double wall_penalty = 0.0,
+                 ExtraStiffness extra = {});
 
   /// dt_crit at displacement d.
   double estimate(const Vector& d_owned);
@@ -35,6 +44,7 @@ class StableTimeStep {
   const ModelOperators& ops_;
   Vector inv_sqrt_mass_, start_;
   double wall_penalty_;
+  ExtraStiffness extra_;
   double omega_ = 0, ritz_ = 0, residual_ = 0;
 };
 

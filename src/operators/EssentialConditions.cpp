@@ -49,7 +49,7 @@ double side_size(const BackgroundMesh& mesh, const std::vector<LocalIndex>& node
 }  // namespace
 
 EssentialConditions::EssentialConditions(const Model& model, const SolidOperator& op,
-                                         const ExactSolution* exact)
+                                         const ExactSolution* exact, Selection selection)
     : dim_(model.mesh.dimension),
       conditions_(model.scene.boundary_conditions.size()),
       overlap_dofs_(model.maps.overlap_dofs) {
@@ -64,6 +64,7 @@ EssentialConditions::EssentialConditions(const Model& model, const SolidOperator
     setup.index = c;
     setup.bc = &bc;
     setup.method = method_of(bc.method);
+    if (selection == Selection::weak_only && setup.method == 0) continue;
     setup.beta_factor = bc.penalty.value_or(setup.method == 1 ? 100.0 : 1e4) * largest_modulus;
     setup.modulus = largest_modulus;
     for (std::size_t k = 0; k < 3; ++k)
@@ -234,8 +235,8 @@ bool EssentialConditions::boundary_stress(const BoundaryPoint& p, const double (
 }
 
 template <int Dim>
-void EssentialConditions::point_terms(const BoundaryPoint& p, const Vector& d_overlap,
-                                      Vector* r_overlap, FEMatrix* K) const {
+EssentialConditions::PointState EssentialConditions::evaluate_point(const BoundaryPoint& p,
+                                                                    const Vector& d_overlap) const {
   const auto d = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
   const std::size_t n = p.nodes.size();
   double H[Dim][Dim] = {}, u[Dim] = {};
@@ -248,16 +249,16 @@ void EssentialConditions::point_terms(const BoundaryPoint& p, const Vector& d_ov
   double P[Dim][Dim] = {}, A[Dim][Dim][Dim][Dim] = {};
   if (!boundary_stress<Dim>(p, H, P, A))
     throw NumericalError("det F <= 0 at a boundary point of an essential condition");
-  double gap[Dim] = {}, Pn[Dim] = {};
+  PointState st;
+  st.dim = Dim;
   for (int i = 0; i < Dim; ++i) {
-    gap[i] = p.constrained[static_cast<std::size_t>(i)]
-                 ? u[i] - p.value[static_cast<std::size_t>(i)]
-                 : 0.0;
-    for (int j = 0; j < Dim; ++j) Pn[i] += P[i][j] * p.weighted_normal[static_cast<std::size_t>(j)];
+    st.gap[i] = p.constrained[static_cast<std::size_t>(i)]
+                    ? u[i] - p.value[static_cast<std::size_t>(i)]
+                    : 0.0;
+    for (int j = 0; j < Dim; ++j)
+      st.Pn[i] += P[i][j] * p.weighted_normal[static_cast<std::size_t>(j)];
   }
-  // S_a[k][i] = sum_jl A_kjil dphi_a/dX_l n_j dA: traction component k of the virtual
-  // displacement phi_a e_i, computed once per entry (the matrix loop is quadratic in entries).
-  std::vector<double> S_table(n * Dim * Dim, 0.0);
+  st.S.assign(n * Dim * Dim, 0.0);
   for (std::size_t a = 0; a < n; ++a)
     for (int k = 0; k < Dim; ++k)
       for (int i = 0; i < Dim; ++i) {
@@ -266,11 +267,17 @@ void EssentialConditions::point_terms(const BoundaryPoint& p, const Vector& d_ov
           for (int l = 0; l < Dim; ++l)
             v += A[k][j][i][l] * p.grad[a * Dim + static_cast<std::size_t>(l)] *
                  p.weighted_normal[static_cast<std::size_t>(j)];
-        S_table[(a * Dim + static_cast<std::size_t>(k)) * Dim + static_cast<std::size_t>(i)] = v;
+        st.S[(a * Dim + static_cast<std::size_t>(k)) * Dim + static_cast<std::size_t>(i)] = v;
       }
-  auto S = [&](std::size_t a, int k, int i) {
-    return S_table[(a * Dim + static_cast<std::size_t>(k)) * Dim + static_cast<std::size_t>(i)];
-  };
+  return st;
+}
+
+template <int Dim>
+void EssentialConditions::point_terms(const BoundaryPoint& p, const Vector& d_overlap,
+                                      Vector* r_overlap, FEMatrix* K,
+                                      std::array<double, 3>* total) const {
+  const std::size_t n = p.nodes.size();
+  const PointState st = evaluate_point<Dim>(p, d_overlap);
   const bool consistency = p.method != 2, stabilized = p.method != 0, symmetric = p.method == 1;
   if (r_overlap) {
     auto r = r_overlap->getLocalViewHost(Tpetra::Access::ReadWrite);
@@ -278,12 +285,13 @@ void EssentialConditions::point_terms(const BoundaryPoint& p, const Vector& d_ov
       for (int i = 0; i < Dim; ++i) {
         double v = 0;
         if (p.constrained[static_cast<std::size_t>(i)]) {
-          if (consistency) v -= p.phi[a] * Pn[i];
-          if (stabilized) v += p.beta * p.phi[a] * gap[i] * p.area;
+          if (consistency) v -= p.phi[a] * st.Pn[i];
+          if (stabilized) v += p.beta * p.phi[a] * st.gap[i] * p.area;
         }
         if (symmetric)
-          for (int k = 0; k < Dim; ++k) v -= gap[k] * S(a, k, i);
+          for (int k = 0; k < Dim; ++k) v -= st.gap[k] * st.s(a, k, i);
         r(static_cast<std::size_t>(p.nodes[a] * Dim + i), 0) += v;
+        if (total) (*total)[static_cast<std::size_t>(i)] += v;
       }
   }
   if (K) {
@@ -299,10 +307,11 @@ void EssentialConditions::point_terms(const BoundaryPoint& p, const Vector& d_ov
           for (int k = 0; k < Dim; ++k) {
             double v = 0;
             if (p.constrained[static_cast<std::size_t>(i)]) {
-              if (consistency) v -= p.phi[a] * S(b, i, k);
+              if (consistency) v -= p.phi[a] * st.s(b, i, k);
               if (stabilized && i == k) v += p.beta * p.phi[a] * p.phi[b] * p.area;
             }
-            if (symmetric && p.constrained[static_cast<std::size_t>(k)]) v -= S(a, k, i) * p.phi[b];
+            if (symmetric && p.constrained[static_cast<std::size_t>(k)])
+              v -= st.s(a, k, i) * p.phi[b];
             vals[b * Dim + static_cast<std::size_t>(k)] = v;
           }
         K->sumIntoLocalValues(p.nodes[a] * Dim + i, static_cast<int>(cols.size()), vals.data(),
@@ -311,12 +320,57 @@ void EssentialConditions::point_terms(const BoundaryPoint& p, const Vector& d_ov
   }
 }
 
-void EssentialConditions::add_boundary_terms(const Vector& d_overlap, Vector& r_overlap) const {
+// y += K_b x with the entries of point_terms' matrix branch: for row (a, i)
+//   sum_(b,k) [ -phi_a S(b,i,k) c_i - S(a,k,i) phi_b c_k + beta phi_a phi_b dA c_i delta_ik ] x_bk
+// (c the constrained mask), i.e. -phi_a c_i (S x)_i - sum_k c_k S(a,k,i) (phi . x)_k
+// + beta phi_a c_i (phi . x)_i dA: two contractions per point instead of a dense block.
+template <int Dim>
+void EssentialConditions::point_product(const BoundaryPoint& p, const Vector& d_overlap,
+                                        const Vector& x_overlap, Vector& y_overlap) const {
+  const std::size_t n = p.nodes.size();
+  const PointState st = evaluate_point<Dim>(p, d_overlap);
+  const bool consistency = p.method != 2, stabilized = p.method != 0, symmetric = p.method == 1;
+  const auto x = x_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
+  double phi_x[Dim] = {}, S_x[Dim] = {};  // sum_b phi_b x_b and sum_(b,k) S(b,i,k) x_bk
+  for (std::size_t b = 0; b < n; ++b)
+    for (int k = 0; k < Dim; ++k) {
+      const double xb = x(static_cast<std::size_t>(p.nodes[b] * Dim + k), 0);
+      phi_x[k] += p.phi[b] * xb;
+      for (int i = 0; i < Dim; ++i) S_x[i] += st.s(b, i, k) * xb;
+    }
+  auto y = y_overlap.getLocalViewHost(Tpetra::Access::ReadWrite);
+  for (std::size_t a = 0; a < n; ++a)
+    for (int i = 0; i < Dim; ++i) {
+      double v = 0;
+      if (p.constrained[static_cast<std::size_t>(i)]) {
+        if (consistency) v -= p.phi[a] * S_x[i];
+        if (stabilized) v += p.beta * p.phi[a] * phi_x[i] * p.area;
+      }
+      if (symmetric)
+        for (int k = 0; k < Dim; ++k)
+          if (p.constrained[static_cast<std::size_t>(k)]) v -= st.s(a, k, i) * phi_x[k];
+      y(static_cast<std::size_t>(p.nodes[a] * Dim + i), 0) += v;
+    }
+}
+
+void EssentialConditions::apply_boundary_stiffness(const Vector& d_overlap, const Vector& x_overlap,
+                                                   Vector& y_overlap) const {
   for (const auto& p : points_) {
     if (dim_ == 2)
-      point_terms<2>(p, d_overlap, &r_overlap, nullptr);
+      point_product<2>(p, d_overlap, x_overlap, y_overlap);
     else
-      point_terms<3>(p, d_overlap, &r_overlap, nullptr);
+      point_product<3>(p, d_overlap, x_overlap, y_overlap);
+  }
+}
+
+void EssentialConditions::add_boundary_terms(const Vector& d_overlap, Vector& r_overlap,
+                                             std::vector<std::array<double, 3>>* totals) const {
+  for (const auto& p : points_) {
+    auto* total = totals ? &(*totals)[p.condition] : nullptr;
+    if (dim_ == 2)
+      point_terms<2>(p, d_overlap, &r_overlap, nullptr, total);
+    else
+      point_terms<3>(p, d_overlap, &r_overlap, nullptr, total);
   }
 }
 

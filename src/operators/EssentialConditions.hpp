@@ -35,7 +35,11 @@ namespace efg {
 
 class EssentialConditions {
  public:
-  EssentialConditions(const Model& model, const SolidOperator& op, const ExactSolution* exact);
+  /// Which displacement conditions to build: all (implicit stages), or only those enforced
+  /// weakly by boundary integrals, nitsche and penalty (explicit stages, drivers/WeakSupports).
+  enum class Selection { all, weak_only };
+  EssentialConditions(const Model& model, const SolidOperator& op, const ExactSolution* exact,
+                      Selection selection = Selection::all);
 
   /// Couplings the constraint rows and boundary integrals add to the stiffness graph.
   void add_couplings(CouplingGraph& graph) const;
@@ -43,9 +47,18 @@ class EssentialConditions {
   /// Prescribed values at the current time: value x factor(curve).
   void set_factor(const LoadFactor& factor);
 
-  /// Boundary integral terms into an overlap residual / a matrix in assembly mode.
-  void add_boundary_terms(const Vector& d_overlap, Vector& r_overlap) const;
+  /// Boundary integral terms into an overlap residual / a matrix in assembly mode. With
+  /// `totals` (one entry per condition), also the sum of each condition's terms over this
+  /// rank's boundary points.
+  void add_boundary_terms(const Vector& d_overlap, Vector& r_overlap,
+                          std::vector<std::array<double, 3>>* totals = nullptr) const;
   void add_boundary_terms(const Vector& d_overlap, FEMatrix& K) const;
+  /// y += K_b(d) x: the matrix of add_boundary_terms(d, K) applied to x without forming it (the
+  /// explicit stable-step estimate). Symmetric for nitsche and penalty by construction: the
+  /// consistency and symmetric terms use one tangent, so the product is exactly symmetric where
+  /// differences of the nonlinear terms would not be.
+  void apply_boundary_stiffness(const Vector& d_overlap, const Vector& x_overlap,
+                                Vector& y_overlap) const;
   /// Transformation rows: replaces the owned residual rows (after export) ...
   void replace_rows(const Vector& d_overlap, Vector& r_owned) const;
   /// ... and the owned matrix rows (after endAssembly).
@@ -55,6 +68,9 @@ class EssentialConditions {
   /// traction term needs the stress there); the last evaluation's state becomes the committed one
   /// when the load step is accepted (as MaterialStates::commit).
   void commit_history() { committed_ = trial_; }
+
+  /// Number of displacement and velocity conditions of the scene (the index range of totals).
+  std::size_t condition_count() const { return conditions_; }
 
   /// Reaction force of every condition, summed over ranks, from the owned residual of the
   /// unconstrained equations r = f_int - f_ext.
@@ -84,8 +100,27 @@ class EssentialConditions {
     std::vector<int> nodes;
     std::vector<double> phi, grad;  // grad: dim per entry
   };
+  /// A boundary point evaluated at d: the gap u^h - u_bar on its constrained components, P n dA,
+  /// and S(a, k, i) = sum_jl A_kjil dphi_a/dX_l n_j dA, the traction component k of the virtual
+  /// displacement phi_a e_i (one table per point: the matrix loop is quadratic in entries).
+  struct PointState {
+    double gap[3] = {0, 0, 0}, Pn[3] = {0, 0, 0};
+    std::vector<double> S;
+    int dim = 3;
+    double s(std::size_t a, int k, int i) const {
+      return S[(a * static_cast<std::size_t>(dim) + static_cast<std::size_t>(k)) *
+                   static_cast<std::size_t>(dim) +
+               static_cast<std::size_t>(i)];
+    }
+  };
   template <int Dim>
-  void point_terms(const BoundaryPoint& p, const Vector& d_overlap, Vector* r, FEMatrix* K) const;
+  PointState evaluate_point(const BoundaryPoint& p, const Vector& d_overlap) const;
+  template <int Dim>
+  void point_terms(const BoundaryPoint& p, const Vector& d_overlap, Vector* r, FEMatrix* K,
+                   std::array<double, 3>* total = nullptr) const;
+  template <int Dim>
+  void point_product(const BoundaryPoint& p, const Vector& d_overlap, const Vector& x_overlap,
+                     Vector& y_overlap) const;
   double constrained_value(const NodeConstraint& c, const Vector& d_overlap) const;
 
   void build_reaction_weights(const Model& model);

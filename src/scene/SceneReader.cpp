@@ -392,8 +392,12 @@ class SceneBuilder {
 
   // Nitsche's consistency terms use the stress on the boundary; their tangent here omits the
   // derivative of the material tangent (docs/boundary_conditions.md), exact for small strain
-  // only: a finite-strain part would lose Newton's quadratic convergence, so it is refused.
+  // only: a finite-strain part would lose Newton's quadratic convergence, so it is refused when
+  // an implicit stage would solve it (explicit stages need no tangent: drivers/WeakSupports).
   void check_nitsche_is_small_strain() const {
+    bool implicit = false;
+    for (const auto& st : s_.stages) implicit = implicit || st.driver == "implicit";
+    if (!implicit) return;
     const PartSpec* finite = nullptr;
     for (const auto& p : s_.parts)
       if (p.section.formulation == Formulation::total_lagrangian) finite = &p;

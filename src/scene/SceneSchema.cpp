@@ -176,7 +176,10 @@ SpecPtr boundary_condition_spec() {
       .optional(
           "method",
           choice(
-              "Enforcement with non-interpolating shape functions (docs/boundary_conditions.md).",
+              "Enforcement with non-interpolating shape functions (docs/boundary_conditions.md). "
+              "Explicit stages: transformation prescribes the particles' generalized values "
+              "(fast, inexact near the boundary); nitsche and penalty act as boundary forces "
+              "(exact stresses, a smaller stable time step).",
               {"transformation", "nitsche", "penalty"}),
           "transformation")
       .optional("penalty", real("Factor alpha of the boundary stiffness beta = alpha E / h "

@@ -77,20 +77,22 @@ DT_UPDATE_INTERVAL = 50
 OUTPUT_INTERVAL = 0.004
 
 
-def write_scene(path, mesh, impact, dilation, dt_scale, dt_update, penalty):
+def write_scene(path, mesh, impact, dilation, dt_scale, dt_update, penalty, supports="generalized"):
     template = string.Template(open(os.path.join(HERE, "taylor.yaml")).read())
+    method = "" if supports == "generalized" else ", method: " + supports
     if impact == "wall":
         walls = "\n  - {name: wall, point: [0, 0, %r], normal: [0, 0, 1]%s}" % (
             WALL_Z, "" if penalty is None else ", penalty: %r" % penalty)
         clamp_condition = clamp_initial = ""
     else:
         walls = "[]"
-        clamp_condition = "\n  - {name: impact_face, type: displacement, node_set: impact, z: 0}"
+        clamp_condition = ("\n  - {name: impact_face, type: displacement, node_set: impact, z: 0%s}"
+                           % method)
         clamp_initial = "\n  - {type: velocity, node_set: impact, value: [0, 0, 0]}"
     text = template.substitute(
         title="Taylor bar %s, %s" % (os.path.basename(mesh), impact),
         mesh=os.path.basename(mesh), dilation=repr(dilation), density=repr(DENSITY),
-        v0=repr(-V0), walls=walls, clamp_condition=clamp_condition, clamp_initial=clamp_initial,
+        method=method, v0=repr(-V0), walls=walls, clamp_condition=clamp_condition, clamp_initial=clamp_initial,
         end_time=repr(END_TIME), output_interval=repr(OUTPUT_INTERVAL), dt_scale=repr(dt_scale),
         dt_update="" if dt_update is None else "\n    dt_update_interval: %d" % dt_update,
         history=os.path.splitext(os.path.basename(path))[0] + ".csv")
@@ -127,14 +129,14 @@ def parse_log(path):
 
 
 def run_one(args, efg, prefix, nr, nz):
-    tag = "taylor_%dx%d_%s" % (nr, nz, args.impact)
+    tag = "taylor_%dx%d_%s_%s" % (nr, nz, args.impact, args.supports)
     mesh = os.path.join(args.outdir, tag + ".e")
     x, y, z, conn, ns = make_mesh.rod(R0, L0, nr, nz)
     make_mesh.write_exodus(mesh, "Taylor bar quarter cylinder %dx%d" % (nr, nz), [x, y, z], conn,
                            "HEX8", ns, block_name="rod")
     scene = os.path.join(args.outdir, tag + ".yaml")
     write_scene(scene, mesh, args.impact, args.dilation, args.dt_scale, args.dt_update_interval,
-                args.penalty)
+                args.penalty, args.supports)
     outdir = os.path.join(args.outdir, tag + "_out")
     results = os.path.join(outdir, tag + ".e")
     history = os.path.join(outdir, tag + ".csv")
@@ -191,6 +193,9 @@ def main():
     ap.add_argument("--dt-scale", type=float, default=DT_SCALE)
     ap.add_argument("--dt-update-interval", type=int, default=DT_UPDATE_INTERVAL)
     ap.add_argument("--penalty", type=float, default=None)
+    ap.add_argument("--supports", choices=["generalized", "nitsche"], default="generalized",
+                    help="symmetry (and clamp) conditions: generalized-dof prescription "
+                    "(method transformation) or weak Nitsche supports")
     ap.add_argument("--reference-length", type=float, default=REF_LENGTH)
     ap.add_argument("--reference-radius", type=float, default=REF_RADIUS)
     args = ap.parse_args()

@@ -1,0 +1,70 @@
+#include "drivers/WeakSupports.hpp"
+
+#include <Teuchos_CommHelpers.hpp>
+
+namespace efg {
+
+bool WeakSupports::wanted(const Scene& scene) {
+  for (const auto& bc : scene.boundary_conditions)
+    if (bc.type == "displacement" && bc.method != "transformation") return true;
+  return false;
+}
+
+WeakSupports::WeakSupports(const ModelOperators& ops)
+    : ops_(ops),
+      last_(ops.model().maps.owned_dofs),
+      d_overlap_(ops.model().maps.overlap_dofs),
+      r_overlap_(ops.model().maps.overlap_dofs),
+      x_overlap_(ops.model().maps.overlap_dofs),
+      scratch_(ops.model().maps.owned_dofs) {
+  if (!wanted(ops.model().scene)) return;
+  conditions_ = std::make_unique<EssentialConditions>(ops.model(), ops.solid(), ops.exact(),
+                                                      EssentialConditions::Selection::weak_only);
+  totals_.assign(conditions_->condition_count(), {0.0, 0.0, 0.0});
+}
+
+void WeakSupports::set_time(double time) {
+  if (conditions_) conditions_->set_factor(curve_factor(ops_.model().scene, time, 1.0));
+}
+
+const Vector& WeakSupports::resistance(const Vector& d_owned) {
+  last_.putScalar(0.0);
+  if (!conditions_) return last_;
+  for (auto& t : totals_) t = {0.0, 0.0, 0.0};
+  ops_.to_overlap(d_owned, d_overlap_);
+  r_overlap_.putScalar(0.0);
+  conditions_->add_boundary_terms(d_overlap_, r_overlap_, &totals_);
+  ops_.to_owned(r_overlap_, last_);
+  return last_;
+}
+
+void WeakSupports::add_stiffness_product(const Vector& d_owned, const Vector& x_owned,
+                                         Vector& y_owned) const {
+  if (!conditions_) return;
+  ops_.to_overlap(d_owned, d_overlap_);
+  ops_.to_overlap(x_owned, x_overlap_);
+  r_overlap_.putScalar(0.0);
+  conditions_->apply_boundary_stiffness(d_overlap_, x_overlap_, r_overlap_);
+  ops_.to_owned(r_overlap_, scratch_);
+  y_owned.update(1.0, scratch_, 1.0);
+}
+
+std::vector<std::array<double, 3>> WeakSupports::reactions() const {
+  const std::size_t n = ops_.model().scene.boundary_conditions.size();
+  std::vector<double> local(3 * n, 0.0), global(3 * n, 0.0);
+  for (std::size_t c = 0; c < totals_.size(); ++c)
+    for (std::size_t k = 0; k < 3; ++k) local[3 * c + k] = -totals_[c][k];
+  if (!local.empty())
+    Teuchos::reduceAll(*last_.getMap()->getComm(), Teuchos::REDUCE_SUM,
+                       static_cast<int>(local.size()), local.data(), global.data());
+  std::vector<std::array<double, 3>> out(n);
+  for (std::size_t c = 0; c < n; ++c)
+    out[c] = {global[3 * c], global[3 * c + 1], global[3 * c + 2]};
+  return out;
+}
+
+void WeakSupports::commit_history() {
+  if (conditions_) conditions_->commit_history();
+}
+
+}  // namespace efg
