@@ -16,8 +16,10 @@
 
 namespace efg {
 namespace {
+// The largest penalty factor of walls and contacts: both add penalty / dt^2 to a particle's
+// omega^2 (StableTimeStep).
 double largest_wall_penalty(const Scene& scene) {
-  double p = 0;
+  double p = PenaltyContact::largest_penalty(scene);
   for (const auto& w : scene.rigid_walls) p = std::max(p, w.penalty);
   return p;
 }
@@ -29,6 +31,8 @@ ExplicitDriver::ExplicitDriver(const ModelOperators& ops, const StageSpec& stage
       mass_(lumped_mass(ops)),
       inverse_mass_(mass_.getMap()),
       walls_(ops, mass_),
+      contact_(RigidContact::wanted(ops.model().scene) ? std::make_unique<RigidContact>(ops, mass_)
+                                                       : nullptr),
       motion_(ops.model()),
       supports_(ops),
       stable_(ops, mass_, largest_wall_penalty(ops.model().scene),
@@ -64,10 +68,11 @@ std::vector<double> ExplicitDriver::acceleration(double time, double wall_dt, co
   }
   std::vector<double> wall_forces;
   f_wall_.putScalar(0.0);
-  if (!walls_.empty()) {
+  if (!walls_.empty() || contact_) {  // walls and contacts: forces on the particles
     ops_.to_overlap(d, d_overlap_);
     wall_overlap_.putScalar(0.0);
-    wall_forces = walls_.add_forces(d_overlap_, wall_dt, wall_overlap_);
+    if (!walls_.empty()) wall_forces = walls_.add_forces(d_overlap_, wall_dt, wall_overlap_);
+    if (contact_) contact_->add_forces(d_overlap_, wall_dt, wall_overlap_);
     ops_.to_owned(wall_overlap_, f_wall_);
   }
   a.update(1.0, f_ext_, -1.0, f_int_, 0.0);
@@ -160,10 +165,26 @@ ExplicitDriver::StepPlan ExplicitDriver::plan_steps(const Vector& d, double star
   return plan;
 }
 
+std::array<double, 3> ExplicitDriver::momentum(const Vector& mass_times_v) const {
+  const int dim = ops_.model().mesh.dimension;
+  std::array<double, 3> mine{}, all{};
+  const auto mv = mass_times_v.getLocalViewHost(Tpetra::Access::ReadOnly);
+  for (std::size_t k = 0; k < mv.extent(0); ++k)
+    mine[k % static_cast<std::size_t>(dim)] += mv(k, 0);
+  Teuchos::reduceAll(*mass_.getMap()->getComm(), Teuchos::REDUCE_SUM, 3, mine.data(), all.data());
+  const auto bodies = contact_->bodies().momentum(contact_->states());
+  for (std::size_t k = 0; k < 3; ++k) all[k] += bodies[k];
+  return all;
+}
+
 void ExplicitDriver::energies(RunState& state) {
   Vector mv(mass_.getMap());
   mv.elementWiseMultiply(1.0, mass_, state.v, 0.0);
   state.kinetic = 0.5 * reproducible_dot(mv, state.v);
+  if (contact_) {
+    state.kinetic += contact_->kinetic_energy();
+    state.momentum = momentum(mv);
+  }
   ops_.to_overlap(state.d, d_overlap_);
   const double mine = ops_.solid().strain_energy(d_overlap_);
   Teuchos::reduceAll(*mass_.getMap()->getComm(), Teuchos::REDUCE_SUM, mine,
@@ -176,7 +197,12 @@ void ExplicitDriver::support_forces(const Vector& a_free) {
 }
 
 void ExplicitDriver::start(RunState& state, double dt) {
+  if (contact_) {
+    ops_.to_overlap(state.d, d_overlap_);
+    contact_->begin(state.bodies, state.time, d_overlap_);
+  }
   state.wall_forces = acceleration(state.time, dt, state.d, state.a);
+  if (contact_) state.bodies = contact_->states();
   support_forces(state.a);
   const Vector v_start(state.v, Teuchos::Copy);
   motion_.constrain_end(curve_factor(ops_.model().scene, state.time, 1.0), v_start, state.v,
@@ -191,6 +217,10 @@ void ExplicitDriver::start(RunState& state, double dt) {
 }
 
 void ExplicitDriver::restore_previous(RunState& state) const {
+  if (contact_) {
+    contact_->restore();
+    state.bodies = contact_->states();
+  }
   Tpetra::deep_copy(state.d, previous_d_);
   Tpetra::deep_copy(state.v, previous_v_);
   Tpetra::deep_copy(state.a, previous_a_);
@@ -214,6 +244,7 @@ void ExplicitDriver::advance(RunState& state, double step_dt, long long step,
   Tpetra::deep_copy(f_wall_old_, f_wall_);
   Tpetra::deep_copy(f_support_old_, f_support_);
   ops_.solid().history().set_step_time(step_dt);
+  if (contact_) contact_->move(state.time, step_dt);
   // An inverted point (det F <= 0) may show on one rank only: agree on it collectively, write
   // the last good state, and name the point, step and time.
   try {
@@ -235,6 +266,7 @@ void ExplicitDriver::advance(RunState& state, double step_dt, long long step,
   }
   Tpetra::deep_copy(state.v, v_half_);
   state.v.update(0.5 * step_dt, state.a, 1.0);
+  if (contact_) state.wall_work += contact_->finish(step_dt);
   support_forces(state.a);
   motion_.constrain_end(at_end, v_half_, state.v, state.a);
   state.time += step_dt;
@@ -254,6 +286,10 @@ void ExplicitDriver::advance(RunState& state, double step_dt, long long step,
   // The step is accepted: its material history (computed with the force at d_n+1) is kept.
   ops_.solid().history().commit();
   supports_.commit_history();
+  if (contact_) {
+    contact_->commit();
+    state.bodies = contact_->states();
+  }
 }
 
 ExplicitSummary ExplicitDriver::run(RunState& state, const StateOutput& output, bool record_start) {

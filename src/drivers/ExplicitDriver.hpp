@@ -11,7 +11,9 @@
 #pragma once
 
 #include <functional>
+#include <memory>
 
+#include "contact/RigidContact.hpp"
 #include "drivers/PrescribedMotion.hpp"
 #include "drivers/RunState.hpp"
 #include "drivers/StableTimeStep.hpp"
@@ -54,14 +56,15 @@ class ExplicitDriver {
   bool finite(const RunState& state) const;  // collective
   [[noreturn]] void report_non_finite(const RunState& state, long long step) const;
   void account_energy(RunState& state, const Vector& delta_d) const;
-  /// E_kin and E_int of the state.
+  /// E_kin and E_int of the state (and the momentum, with rigid bodies).
   void energies(RunState& state);
+  std::array<double, 3> momentum(const Vector& mass_times_v) const;
   /// Accelerations, support forces and energies of the start state.
   void start(RunState& state, double dt);
   double wall_dt_ = 0;  ///< the step size the walls' penalty is scaled with (the stage's dt)
   /// One velocity-Verlet step (step numbers the messages); on failure writes the last good state.
   void advance(RunState& state, double step_dt, long long step, const StateOutput& output);
-  void restore_previous(RunState& state) const;
+  void restore_previous(RunState& state) const;  // also the rigid bodies
   /// f_support_ from the free acceleration: the prescribed motions' and the weak supports' forces.
   void support_forces(const Vector& a_free);
 
@@ -69,6 +72,7 @@ class ExplicitDriver {
   const StageSpec& stage_;
   Vector mass_, inverse_mass_;
   RigidWalls walls_;
+  std::unique_ptr<RigidContact> contact_;  ///< rigid bodies and contacts, when the scene has them
   PrescribedMotion motion_;
   WeakSupports supports_;  ///< nitsche / penalty displacement conditions (before stable_)
   StableTimeStep stable_;

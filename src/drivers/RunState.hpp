@@ -8,6 +8,7 @@
 #include <cmath>
 #include <vector>
 
+#include "contact/RigidBodyState.hpp"
 #include "operators/SolidOperator.hpp"
 
 namespace efg {
@@ -19,10 +20,16 @@ struct RunState {
   Vector d, v, a;
   double time = 0;
   double dt = 0;
-  // Energy account (explicit): E_kin + E_int = E_0 + W_ext + W_wall when balanced.
+  // Energy account (explicit): E_kin + E_int = E_0 + W_ext + W_wall when balanced (E_kin with
+  // the free rigid bodies', W_wall the work of walls and contacts on particles and free bodies).
   double kinetic = 0, internal = 0, external_work = 0, wall_work = 0, initial_energy = 0;
   bool energy_started = false;
   std::vector<double> wall_forces;
+  /// Rigid bodies (scene order): displacement, velocity and contact force, carried across stages.
+  std::vector<RigidBodyState> bodies;
+  /// Linear momentum of the particles (sum M_I v_I, lumped mass) and the free rigid bodies
+  /// (explicit stages; the contact pair forces cancel in it).
+  std::array<double, 3> momentum{};
   /// Reactions per boundary condition when the driver computes them (explicit: the support
   /// forces of the prescribed motions); otherwise the static residual gives them.
   std::vector<std::array<double, 3>> reactions;

@@ -27,6 +27,14 @@ std::vector<std::string> history_names(const Scene& scene, int dimension) {
   const std::string axes = "xyz";
   const auto dim = static_cast<std::size_t>(dimension);
   for (const auto& w : scene.rigid_walls) names.push_back(short_name("wall_", w.name, "_force"));
+  // Rigid bodies: the momentum of particles and free bodies, and per body the contact force on
+  // it, its displacement and velocity.
+  if (!scene.rigid_bodies.empty())
+    for (std::size_t d = 0; d < dim; ++d) names.push_back(std::string("momentum_") + axes[d]);
+  for (const auto& b : scene.rigid_bodies)
+    for (const char* what : {"_F", "_u", "_v"})
+      for (std::size_t d = 0; d < dim; ++d)
+        names.push_back(short_name("rb_", b.name, std::string(what) + axes[d]));
   for (const auto& bc : scene.boundary_conditions)
     for (std::size_t d = 0; d < dim; ++d)
       names.push_back(short_name("R_", bc.name, std::string("_") + axes[d]));
@@ -72,6 +80,14 @@ std::vector<double> RunHistory::values(const ModelOperators& ops, const RunState
   }
   for (std::size_t w = 0; w < model_.scene.rigid_walls.size(); ++w)
     out.push_back(w < state.wall_forces.size() ? state.wall_forces[w] : 0.0);
+  if (!model_.scene.rigid_bodies.empty())
+    for (std::size_t d = 0; d < dim; ++d) out.push_back(state.momentum[d]);
+  for (std::size_t b = 0; b < model_.scene.rigid_bodies.size(); ++b) {
+    const RigidBodyState none;
+    const auto& s = b < state.bodies.size() ? state.bodies[b] : none;
+    for (const auto* v : {&s.force, &s.displacement, &s.velocity})
+      for (std::size_t d = 0; d < dim; ++d) out.push_back((*v)[d]);
+  }
   for (std::size_t c = 0; c < model_.scene.boundary_conditions.size(); ++c)
     for (std::size_t d = 0; d < dim; ++d)
       out.push_back(c < reactions.size() ? reactions[c][d] : 0.0);

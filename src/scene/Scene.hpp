@@ -89,6 +89,33 @@ struct RigidWallSpec {
   double penalty = 0.5;
 };
 
+/// A rigid body (analytic shape): fixed, moved by a prescribed velocity, or free (translation
+/// under its contact forces).
+struct RigidBodySpec {
+  std::string name;
+  std::string shape;                  ///< plane | sphere | cylinder | box
+  std::vector<double> point, normal;  ///< plane
+  std::vector<double> center, axis;   ///< sphere, cylinder (axis: 3D cylinders)
+  double radius = 0;                  ///< sphere, cylinder
+  std::vector<double> lower, upper;   ///< box (axis-aligned)
+  std::string motion;                 ///< fixed | prescribed | free
+  std::vector<double> velocity;       ///< initial (free) or prescribed (x curve) velocity
+  std::string curve;                  ///< prescribed: scales velocity; empty: constant
+  double mass = 0;                    ///< given (0: none)
+  double density = 0;                 ///< given (0: none): mass = density x volume
+  double thickness = 1;               ///< 2D: out-of-plane length of the body (its mass)
+};
+
+/// Penalty contact of the surface particles of deformable parts with a rigid body.
+struct ContactSpec {
+  std::string name;
+  std::string rigid_body;
+  std::vector<std::string> parts;
+  double penalty = 0.1;  ///< normal stiffness k = penalty x m / dt^2 per particle
+  double static_friction = 0, dynamic_friction = 0, decay = 0;
+  double damping = 0;  ///< normal viscous damping, fraction of critical per particle
+};
+
 struct StageSpec {
   std::string name;
   std::string driver;  ///< implicit | explicit
@@ -118,6 +145,8 @@ struct Scene {
   std::vector<InitialConditionSpec> initial_conditions;
   std::vector<CurveSpec> curves;
   std::vector<RigidWallSpec> rigid_walls;
+  std::vector<RigidBodySpec> rigid_bodies;
+  std::vector<ContactSpec> contacts;
   std::vector<StageSpec> stages;
   OutputSpec output;
   YAML::Node verification;     ///< null when absent

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "core/Errors.hpp"
+#include "scene/ContactInput.hpp"
 #include "scene/SchemaValidator.hpp"
 #include "scene/Suggest.hpp"
 
@@ -114,6 +115,7 @@ class Checker {
       if (!w.node_set.empty())
         require_name(wd["node_set"], path + ".node_set", w.node_set, "node set", node_sets);
     }
+    check_rigid_bodies();
     check_conflicting_conditions();
     check_parts_do_not_share_nodes();
     check_parts_held();
@@ -153,6 +155,27 @@ class Checker {
                free +
                " (its stiffness is singular); add displacement conditions that stop it, or use "
                "driver: explicit");
+    }
+  }
+
+  // Rigid bodies: every point and vector with the mesh's dimension; a 3D cylinder's axis; a
+  // mass from density only for a shape with a volume.
+  void check_rigid_bodies() const {
+    for (std::size_t i = 0; i < s_.rigid_bodies.size(); ++i) {
+      const auto& b = s_.rigid_bodies[i];
+      const auto path = "rigid_bodies[" + std::to_string(i) + "]";
+      const auto& bd = s_.document["rigid_bodies"][i];
+      const std::pair<const char*, const std::vector<double>*> vectors[] = {
+          {"point", &b.point}, {"normal", &b.normal}, {"center", &b.center},
+          {"lower", &b.lower}, {"upper", &b.upper},   {"velocity", &b.velocity}};
+      for (const auto& [key, v] : vectors)
+        if (!v->empty()) require_dimension(bd[key], path + "." + key, v->size());
+      if (b.shape == "cylinder" && m_.dimension == 3 && b.axis.empty())
+        fail(bd, path, "a cylinder in a 3D model needs axis");
+      if (b.density > 0 && !(rigid_body_volume(b, m_.dimension) > 0))
+        fail(bd["density"], path + ".density",
+             "a " + b.shape + (b.shape == "cylinder" ? " (infinite along its axis)" : "") +
+                 " has no finite volume to take a mass from density; give mass");
     }
   }
 

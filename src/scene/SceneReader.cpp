@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "core/Errors.hpp"
+#include "scene/ContactInput.hpp"
 #include "scene/PlasticityInput.hpp"
 #include "scene/SceneSchema.hpp"
 #include "scene/SchemaValidator.hpp"
@@ -62,6 +63,7 @@ class SceneBuilder {
     for (std::size_t i = 0; i < r["stages"].size(); ++i)
       build_stage(r["stages"][i], d["stages"][i], i);
     check_plasticity_input(s_);
+    read_contact_input(s_);
     s_.output.file = r["output"]["file"] ? r["output"]["file"].as<std::string>() : s_.name + ".e";
     s_.output.fields = as_vector<std::string>(r["output"]["fields"]);
     s_.output.history = opt_string(r["output"], "history");

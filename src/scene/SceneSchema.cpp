@@ -1,5 +1,6 @@
 #include "scene/SceneSchema.hpp"
 
+#include "scene/ContactSchema.hpp"
 #include "scene/ExactSolutionNames.hpp"
 
 namespace efg {
@@ -395,6 +396,14 @@ Spec build_scene_schema() {
           .optional("curves", list("Load curves.", curve_spec()).unique_names(), "[]")
           .optional("rigid_walls",
                     list("Planar rigid walls (explicit stages).", rigid_wall_spec()).unique_names(),
+                    "[]")
+          .optional("rigid_bodies",
+                    list("Rigid bodies (explicit stages).", rigid_body_spec()).unique_names(), "[]")
+          .optional("contacts",
+                    list("Penalty contacts of deformable parts with rigid bodies (explicit "
+                         "stages).",
+                         contact_spec())
+                        .unique_names(),
                     "[]")
           .optional("stages",
                     list("Analysis stages, run in order. With none, the run writes the "

@@ -8,6 +8,7 @@ no cycle can form. The order, lowest first:
   < model                                model data the operators read (scene, mesh, parts,
                                          curves, exact solutions)
   < solvers < operators < verification   verification: error norms of a solution
+  < contact                              rigid bodies and contact forces (operators' level)
   < drivers < run < app
 
 usage: check_layers.py SOURCE_ROOT   (exit 1 naming each include that points upward or sideways)
@@ -17,7 +18,8 @@ import re
 import sys
 
 ORDER = ["tensor", "materials", "core", "geometry", "mesh", "parallel", "io", "scene",
-         "discretization", "model", "solvers", "operators", "verification", "drivers", "run",
+         "discretization", "model", "solvers", "operators", "verification", "contact", "drivers",
+         "run",
          "app"]
 RANK = {name: i for i, name in enumerate(ORDER)}
 # physics kernels must not reach into the Trilinos side at all

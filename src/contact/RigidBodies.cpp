@@ -1,0 +1,106 @@
+#include "contact/RigidBodies.hpp"
+
+#include <cmath>
+
+#include "model/Curves.hpp"
+#include "scene/ContactInput.hpp"
+
+namespace efg {
+namespace {
+
+void unit(const std::vector<double>& v, double* out, int dim) {
+  double n2 = 0;
+  for (int k = 0; k < dim; ++k)
+    n2 += v[static_cast<std::size_t>(k)] * v[static_cast<std::size_t>(k)];
+  for (int k = 0; k < dim; ++k) out[k] = v[static_cast<std::size_t>(k)] / std::sqrt(n2);
+}
+
+contact::Shape shape_of(const RigidBodySpec& b, int dim) {
+  using Kind = contact::Shape::Kind;
+  contact::Shape s;
+  s.dim = dim;
+  const auto copy = [dim](const std::vector<double>& v, double* out) {
+    for (int k = 0; k < dim && static_cast<std::size_t>(k) < v.size(); ++k)
+      out[k] = v[static_cast<std::size_t>(k)];
+  };
+  if (b.shape == "plane") {
+    s.kind = Kind::plane;
+    copy(b.point, s.point);
+    unit(b.normal, s.normal, dim);
+  } else if (b.shape == "sphere" || b.shape == "cylinder") {
+    s.kind = b.shape == "sphere" ? Kind::sphere : Kind::cylinder;
+    copy(b.center, s.center);
+    s.radius = b.radius;
+    if (dim == 3 && !b.axis.empty()) unit(b.axis, s.axis, 3);
+  } else {
+    s.kind = Kind::box;
+    copy(b.lower, s.lower);
+    copy(b.upper, s.upper);
+  }
+  return s;
+}
+
+}  // namespace
+
+RigidBodies::RigidBodies(const Scene& scene, int dim) : scene_(scene), dim_(dim) {
+  for (const auto& b : scene.rigid_bodies)
+    bodies_.push_back({&b, shape_of(b, dim), rigid_body_mass(b, dim)});
+}
+
+std::vector<RigidBodyState> RigidBodies::initial_states(double time) const {
+  std::vector<RigidBodyState> states(bodies_.size());
+  const auto factor = curve_factor(scene_, time, 1.0);
+  for (std::size_t b = 0; b < bodies_.size(); ++b) {
+    const auto& spec = *bodies_[b].spec;
+    const double c = spec.motion == "prescribed" ? factor(spec.curve) : 1.0;
+    for (std::size_t k = 0; k < spec.velocity.size(); ++k)
+      states[b].velocity[k] = spec.velocity[k] * c;
+  }
+  return states;
+}
+
+void RigidBodies::move(std::vector<RigidBodyState>& states, double time, double dt) const {
+  const auto mid = curve_factor(scene_, time + 0.5 * dt, 1.0);
+  const auto end = curve_factor(scene_, time + dt, 1.0);
+  for (std::size_t b = 0; b < bodies_.size(); ++b) {
+    const auto& spec = *bodies_[b].spec;
+    auto& s = states[b];
+    if (spec.motion == "free") {
+      for (int k = 0; k < dim_; ++k) {
+        s.velocity[k] += 0.5 * dt * s.force[k] / bodies_[b].mass;
+        s.displacement[k] += dt * s.velocity[k];
+      }
+    } else if (spec.motion == "prescribed") {
+      for (std::size_t k = 0; k < spec.velocity.size(); ++k) {
+        s.displacement[k] += dt * spec.velocity[k] * mid(spec.curve);
+        s.velocity[k] = spec.velocity[k] * end(spec.curve);
+      }
+    }
+  }
+}
+
+void RigidBodies::finish(std::vector<RigidBodyState>& states, double dt) const {
+  for (std::size_t b = 0; b < bodies_.size(); ++b)
+    if (bodies_[b].spec->motion == "free")
+      for (int k = 0; k < dim_; ++k)
+        states[b].velocity[k] += 0.5 * dt * states[b].force[k] / bodies_[b].mass;
+}
+
+double RigidBodies::kinetic_energy(const std::vector<RigidBodyState>& states) const {
+  double e = 0;
+  for (std::size_t b = 0; b < bodies_.size(); ++b)
+    if (is_free(b))
+      for (int k = 0; k < dim_; ++k)
+        e += 0.5 * bodies_[b].mass * states[b].velocity[k] * states[b].velocity[k];
+  return e;
+}
+
+std::array<double, 3> RigidBodies::momentum(const std::vector<RigidBodyState>& states) const {
+  std::array<double, 3> p{};
+  for (std::size_t b = 0; b < bodies_.size(); ++b)
+    if (is_free(b))
+      for (int k = 0; k < dim_; ++k) p[k] += bodies_[b].mass * states[b].velocity[k];
+  return p;
+}
+
+}  // namespace efg

@@ -1,0 +1,43 @@
+#include "contact/RigidContact.hpp"
+
+namespace efg {
+
+RigidContact::RigidContact(const ModelOperators& ops, const Vector& mass_owned)
+    : bodies_(ops.model().scene, ops.model().mesh.dimension), contact_(ops, mass_owned, bodies_) {}
+
+void RigidContact::begin(const std::vector<RigidBodyState>& carried, double time,
+                         const Vector& d_overlap) {
+  states_ = carried.size() == bodies_.count() ? carried : bodies_.initial_states(time);
+  previous_ = states_;
+  contact_.start(d_overlap, states_);
+}
+
+void RigidContact::move(double time, double dt) {
+  previous_ = states_;
+  bodies_.move(states_, time, dt);
+}
+
+void RigidContact::add_forces(const Vector& d_overlap, double dt, Vector& f_overlap) {
+  contact_.add_forces(d_overlap, dt, states_, f_overlap);
+}
+
+double RigidContact::finish(double dt) {
+  bodies_.finish(states_, dt);
+  double work = 0;
+  for (std::size_t b = 0; b < bodies_.count(); ++b)
+    if (bodies_.is_free(b))
+      for (std::size_t k = 0; k < 3; ++k)
+        work += 0.5 * (previous_[b].force[k] + states_[b].force[k]) *
+                (states_[b].displacement[k] - previous_[b].displacement[k]);
+  return work;
+}
+
+void RigidContact::commit() {
+  contact_.commit(states_);
+}
+
+void RigidContact::restore() {
+  states_ = previous_;
+}
+
+}  // namespace efg

@@ -1,0 +1,48 @@
+// Rigid bodies and their penalty contacts as one explicit-stage component (built only when the
+// scene has rigid bodies or contacts): the bodies' velocity-Verlet halves around the particles'
+// force evaluation, the contact forces, the bodies' share of the energy account, and the state
+// kept for a failed step. The driver sees forces on particles like the rigid walls' (their work
+// is in wall_work) and body states for the history.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "contact/PenaltyContact.hpp"
+#include "contact/RigidBodies.hpp"
+
+namespace efg {
+
+class RigidContact {
+ public:
+  RigidContact(const ModelOperators& ops, const Vector& mass_owned);
+  static bool wanted(const Scene& scene) {
+    return !scene.rigid_bodies.empty() || !scene.contacts.empty();
+  }
+
+  /// Stage start at `time`: the states carried over from an earlier stage, or the initial ones.
+  void begin(const std::vector<RigidBodyState>& carried, double time, const Vector& d_overlap);
+  /// First half of a step: the bodies move to t + dt.
+  void move(double time, double dt);
+  /// Contact forces at d into f_overlap (the bodies' forces are kept). Collective.
+  void add_forces(const Vector& d_overlap, double dt, Vector& f_overlap);
+  /// Second half of a step: the free bodies' velocities; returns the work of the contact forces
+  /// on the free bodies over the step (trapezoidal, as the particles' wall work).
+  double finish(double dt);
+  /// The step is accepted (friction reference, previous state for a later failure).
+  void commit();
+  /// Back to the state before the last move (a failed step).
+  void restore();
+
+  const std::vector<RigidBodyState>& states() const { return states_; }
+  const RigidBodies& bodies() const { return bodies_; }
+  double kinetic_energy() const { return bodies_.kinetic_energy(states_); }
+  long long active_count() const { return contact_.active_count(); }
+
+ private:
+  RigidBodies bodies_;
+  PenaltyContact contact_;
+  std::vector<RigidBodyState> states_, previous_;
+};
+
+}  // namespace efg

@@ -1,0 +1,102 @@
+// Analytic rigid shapes and the signed distance of a point to them (plain functions, no
+// Trilinos): the gap g (< 0 inside the body) and the outward unit normal at the closest surface
+// point. A body translated by u is the shape evaluated at x - u.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+
+namespace efg::contact {
+
+struct Shape {
+  enum class Kind { plane, sphere, cylinder, box };
+  Kind kind = Kind::plane;
+  int dim = 3;
+  double point[3] = {0, 0, 0}, normal[3] = {0, 0, 1};  ///< plane, unit normal out of the body
+  double center[3] = {0, 0, 0}, axis[3] = {0, 0, 1};   ///< sphere, cylinder (unit axis, 3D)
+  double radius = 0;
+  double lower[3] = {0, 0, 0}, upper[3] = {0, 0, 0};  ///< axis-aligned box
+};
+
+struct Proximity {
+  double gap = 0;                ///< signed distance, negative inside
+  double normal[3] = {0, 0, 0};  ///< outward unit normal of the surface nearest x
+};
+
+namespace detail {
+// Distance from center along the part of x - c normal to the axis (all of it for a sphere or
+// a 2D cylinder, which is a disc).
+inline Proximity round(const Shape& s, const double* x, bool along_axis_removed) {
+  double r[3] = {0, 0, 0};
+  for (int k = 0; k < s.dim; ++k) r[k] = x[k] - s.center[k];
+  if (along_axis_removed) {
+    double t = 0;
+    for (int k = 0; k < 3; ++k) t += r[k] * s.axis[k];
+    for (int k = 0; k < 3; ++k) r[k] -= t * s.axis[k];
+  }
+  const double len = std::sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]);
+  Proximity p;
+  p.gap = len - s.radius;
+  if (len > 0)
+    for (int k = 0; k < 3; ++k) p.normal[k] = r[k] / len;
+  else
+    p.normal[s.dim - 1] = 1.0;  // the center itself: any direction is nearest
+  return p;
+}
+
+inline Proximity box(const Shape& s, const double* x) {
+  Proximity p;
+  bool inside = true;
+  double outside2 = 0, d[3] = {0, 0, 0};
+  for (int k = 0; k < s.dim; ++k) {
+    if (x[k] < s.lower[k]) d[k] = x[k] - s.lower[k];
+    if (x[k] > s.upper[k]) d[k] = x[k] - s.upper[k];
+    if (d[k] != 0) inside = false;
+    outside2 += d[k] * d[k];
+  }
+  if (!inside) {
+    p.gap = std::sqrt(outside2);
+    for (int k = 0; k < s.dim; ++k) p.normal[k] = d[k] / p.gap;
+    return p;
+  }
+  // Inside: the nearest face decides.
+  p.gap = -1e300;
+  for (int k = 0; k < s.dim; ++k) {
+    const double to_lower = x[k] - s.lower[k], to_upper = s.upper[k] - x[k];
+    if (-to_lower > p.gap) {
+      p.gap = -to_lower;
+      for (int j = 0; j < 3; ++j) p.normal[j] = j == k ? -1.0 : 0.0;
+    }
+    if (-to_upper > p.gap) {
+      p.gap = -to_upper;
+      for (int j = 0; j < 3; ++j) p.normal[j] = j == k ? 1.0 : 0.0;
+    }
+  }
+  return p;
+}
+}  // namespace detail
+
+/// Gap and normal of point x to the shape translated by u.
+inline Proximity proximity(const Shape& s, const double* x, const double* u) {
+  double y[3] = {0, 0, 0};
+  for (int k = 0; k < s.dim; ++k) y[k] = x[k] - u[k];
+  switch (s.kind) {
+    case Shape::Kind::plane: {
+      Proximity p;
+      for (int k = 0; k < s.dim; ++k) {
+        p.gap += (y[k] - s.point[k]) * s.normal[k];
+        p.normal[k] = s.normal[k];
+      }
+      return p;
+    }
+    case Shape::Kind::sphere:
+      return detail::round(s, y, false);
+    case Shape::Kind::cylinder:
+      return detail::round(s, y, s.dim == 3);
+    case Shape::Kind::box:
+      return detail::box(s, y);
+  }
+  return {};
+}
+
+}  // namespace efg::contact

@@ -1,0 +1,150 @@
+#include "scene/ContactInput.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/Errors.hpp"
+#include "scene/SchemaValidator.hpp"
+
+namespace efg {
+namespace {
+
+[[noreturn]] void fail(const Scene& s, const YAML::Node& at, const std::string& path,
+                       const std::string& message) {
+  throw InputError(schema::located_message(s.file, at, path, message));
+}
+
+std::vector<double> reals(const YAML::Node& n) {
+  std::vector<double> v;
+  if (n)
+    for (const auto& x : n) v.push_back(x.as<double>());
+  return v;
+}
+
+RigidBodySpec read_body(const Scene& s, const YAML::Node& r, const YAML::Node& d,
+                        const std::string& path) {
+  RigidBodySpec b;
+  b.name = r["name"].as<std::string>();
+  b.shape = r["shape"].as<std::string>();
+  b.motion = r["motion"].as<std::string>();
+  b.point = reals(r["point"]);
+  b.normal = reals(r["normal"]);
+  b.center = reals(r["center"]);
+  b.axis = reals(r["axis"]);
+  b.radius = r["radius"] ? r["radius"].as<double>() : 0.0;
+  b.lower = reals(r["lower"]);
+  b.upper = reals(r["upper"]);
+  b.velocity = reals(r["velocity"]);
+  b.curve = r["curve"] ? r["curve"].as<std::string>() : "";
+  b.thickness = r["thickness"].as<double>();
+  if (b.shape == "plane") {
+    double n2 = 0;
+    for (double v : b.normal) n2 += v * v;
+    if (!(n2 > 0)) fail(s, d["normal"], path + ".normal", "expected a nonzero normal");
+  }
+  if (b.shape == "box")
+    for (std::size_t k = 0; k < std::min(b.lower.size(), b.upper.size()); ++k)
+      if (!(b.upper[k] > b.lower[k]))
+        fail(s, d["upper"], path + ".upper",
+             "expected every entry above the lower corner's (an empty box)");
+  if (b.shape == "cylinder" && !b.axis.empty()) {
+    double a2 = 0;
+    for (double v : b.axis) a2 += v * v;
+    if (!(a2 > 0)) fail(s, d["axis"], path + ".axis", "expected a nonzero axis");
+  }
+  if (r["mass"] && r["density"])
+    fail(s, d["density"], path + ".density", "give mass or density, not both");
+  if (r["mass"]) b.mass = r["mass"].as<double>();
+  if (r["density"]) b.density = r["density"].as<double>();
+  if (b.motion == "free" && !(b.mass > 0) && !(b.density > 0))
+    fail(s, d["motion"], path + ".motion",
+         "a free rigid body needs mass or density (its motion follows from the contact forces)");
+  if (b.motion == "prescribed" && b.velocity.empty())
+    fail(s, d["motion"], path + ".motion", "a prescribed motion needs velocity");
+  if (!b.curve.empty() && b.motion != "prescribed")
+    fail(s, d["curve"], path + ".curve",
+         "curve scales a prescribed velocity; motion is " + b.motion);
+  if (!b.curve.empty() && !s.find_curve(b.curve))
+    fail(s, d["curve"], path + ".curve", "no curve named '" + b.curve + "' in curves");
+  if (b.motion == "fixed" && !b.velocity.empty())
+    fail(s, d["velocity"], path + ".velocity",
+         "a fixed body has no velocity; expected motion prescribed or free");
+  return b;
+}
+
+ContactSpec read_contact(const Scene& s, const YAML::Node& r, const YAML::Node& d,
+                         const std::string& path) {
+  ContactSpec c;
+  c.name = r["name"].as<std::string>();
+  c.rigid_body = r["rigid_body"].as<std::string>();
+  c.penalty = r["penalty"].as<double>();
+  c.static_friction = r["static_friction"].as<double>();
+  c.dynamic_friction =
+      r["dynamic_friction"] ? r["dynamic_friction"].as<double>() : c.static_friction;
+  c.decay = r["decay"].as<double>();
+  c.damping = r["damping"].as<double>();
+  auto is_body = [&](const std::string& n) {
+    return std::any_of(s.rigid_bodies.begin(), s.rigid_bodies.end(),
+                       [&](const RigidBodySpec& b) { return b.name == n; });
+  };
+  auto is_part = [&](const std::string& n) {
+    return std::any_of(s.parts.begin(), s.parts.end(),
+                       [&](const PartSpec& p) { return p.name == n; });
+  };
+  if (!is_body(c.rigid_body))
+    fail(s, d["rigid_body"], path + ".rigid_body",
+         is_part(c.rigid_body)
+             ? "'" + c.rigid_body +
+                   "' is a deformable part; expected a rigid body (contact between deformable "
+                   "parts is not built yet)"
+             : "no rigid body named '" + c.rigid_body + "' in rigid_bodies");
+  for (std::size_t i = 0; i < r["parts"].size(); ++i) {
+    const auto name = r["parts"][i].as<std::string>();
+    const auto at = d["parts"][i];
+    const auto key = path + ".parts[" + std::to_string(i) + "]";
+    if (is_body(name))
+      fail(s, at, key,
+           "'" + name +
+               "' is a rigid body: contact between two rigid bodies is not modeled; "
+               "expected a meshfree part");
+    if (!is_part(name)) fail(s, at, key, "no part named '" + name + "' in parts");
+    c.parts.push_back(name);
+  }
+  return c;
+}
+
+}  // namespace
+
+double rigid_body_volume(const RigidBodySpec& b, int dim) {
+  constexpr double pi = 3.14159265358979323846;
+  const bool two_d = dim == 2;
+  if (b.shape == "sphere")
+    return two_d ? pi * b.radius * b.radius * b.thickness
+                 : 4.0 / 3.0 * pi * b.radius * b.radius * b.radius;
+  if (b.shape == "cylinder" && two_d) return pi * b.radius * b.radius * b.thickness;
+  if (b.shape == "box") {
+    double v = two_d ? b.thickness : 1.0;
+    for (std::size_t k = 0; k < b.lower.size(); ++k) v *= b.upper[k] - b.lower[k];
+    return v;
+  }
+  return 0.0;
+}
+
+void read_contact_input(Scene& s) {
+  const auto& r = s.resolved;
+  const auto& d = s.document;
+  for (std::size_t i = 0; i < r["rigid_bodies"].size(); ++i)
+    s.rigid_bodies.push_back(read_body(s, r["rigid_bodies"][i], d["rigid_bodies"][i],
+                                       "rigid_bodies[" + std::to_string(i) + "]"));
+  for (std::size_t i = 0; i < r["contacts"].size(); ++i)
+    s.contacts.push_back(
+        read_contact(s, r["contacts"][i], d["contacts"][i], "contacts[" + std::to_string(i) + "]"));
+  if (s.contacts.empty() && s.rigid_bodies.empty()) return;
+  for (std::size_t i = 0; i < s.stages.size(); ++i)
+    if (s.stages[i].driver == "implicit")
+      fail(s, d["stages"][i]["driver"], "stages[" + std::to_string(i) + "].driver",
+           "rigid bodies and contacts act in explicit stages only (implicit contact is not built "
+           "yet); expected driver: explicit");
+}
+
+}  // namespace efg

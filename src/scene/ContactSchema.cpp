@@ -1,0 +1,87 @@
+#include "scene/ContactSchema.hpp"
+
+namespace efg {
+
+using namespace schema;
+
+SpecPtr rigid_body_spec() {
+  auto point = [](const std::string& doc) { return real_list(doc, "length").items(2, 3); };
+  return map("A rigid body of analytic shape (explicit stages): fixed, moved by a prescribed "
+             "velocity, or free (translation under its contact forces; no rotation yet). "
+             "Particles of the parts named by a contact may not enter it.")
+      .required("name", string("Body name, unique."))
+      .required("shape", choice("Analytic shape.", {"plane", "sphere", "cylinder", "box"}))
+      .optional("motion",
+                choice("fixed: never moves; prescribed: velocity x curve(t); free: moves under "
+                       "the contact forces (needs mass or density).",
+                       {"fixed", "prescribed", "free"}),
+                "fixed")
+      .optional("velocity",
+                real_list("Initial velocity (free), or the prescribed velocity (prescribed, "
+                          "scaled by curve).",
+                          "length/time")
+                    .items(2, 3))
+      .optional("curve", string("Curve scaling the prescribed velocity over time; constant "
+                                "velocity when omitted."))
+      .optional("mass", real("Mass of the body (2D: of its thickness).", "mass").above(0))
+      .optional("density", real("Density: the mass is density x volume (sphere, box; 2D cylinder: "
+                                "density x pi r^2 x thickness).",
+                                "mass/length^3")
+                               .above(0))
+      .optional(
+          "thickness",
+          real("2D only: out-of-plane length of the body, for its mass from density.", "length")
+              .above(0),
+          "1")
+      .discriminated_by("shape")
+      .variant("plane", {required_key("point", point("A point of the plane.")),
+                         required_key("normal", real_list("Normal pointing out of the body (to "
+                                                          "the side particles stay on).",
+                                                          "-")
+                                                    .items(2, 3))})
+      .variant("sphere", {required_key("center", point("Center (2D: a disc).")),
+                          required_key("radius", real("Radius.", "length").above(0))})
+      .variant("cylinder",
+               {required_key("center", point("A point of the axis (2D: the disc's center).")),
+                required_key("radius", real("Radius.", "length").above(0)),
+                optional_key("axis",
+                             real_list("Axis direction (3D; infinite length).", "-").items(3, 3))})
+      .variant("box", {required_key("lower", point("Lower corner (axis-aligned box).")),
+                       required_key("upper", point("Upper corner."))});
+}
+
+SpecPtr contact_spec() {
+  return map("Penalty contact between the surface particles of deformable parts and a rigid "
+             "body, with Coulomb friction (explicit stages).")
+      .required("name", string("Contact name, unique."))
+      .required("rigid_body", string("Name of an entry of rigid_bodies."))
+      .required(
+          "parts",
+          string_list("Meshfree parts whose surface particles touch the body.").items(1, 1000))
+      .optional("penalty",
+                real("Normal stiffness per particle as a fraction of its mass / dt^2 (stable "
+                     "up to about 1; the stable step is reduced by sqrt(1 - penalty / 4)).",
+                     "-")
+                    .above(0)
+                    .at_most(1),
+                "0.1")
+      .optional("static_friction", real("Static Coulomb coefficient mu_s.", "-").at_least(0), "0")
+      .optional("dynamic_friction",
+                real("Dynamic Coulomb coefficient mu_d; default: static_friction. "
+                     "mu = mu_d + (mu_s - mu_d) exp(-decay |v_slip|).",
+                     "-")
+                    .at_least(0))
+      .optional("decay",
+                real("Exponential decay coefficient of friction with slip speed.", "time/length")
+                    .at_least(0),
+                "0")
+      .optional("damping",
+                real("Normal viscous damping as a fraction of critical, c = 2 damping sqrt(k m) "
+                     "per particle (LS-DYNA's VDC / 100): quiets contact chatter; never pulls.",
+                     "-")
+                    .at_least(0)
+                    .at_most(1),
+                "0");
+}
+
+}  // namespace efg

@@ -1,0 +1,82 @@
+#!/usr/bin/env python3
+"""Checks of the explicit contact scenes (tests/scenes/contact/*.yaml) from their history CSV.
+usage: check_contact.py impact|punch|slide|stick HISTORY.csv
+  impact  free rigid disc on a free block: momentum of particles + disc constant to 1e-8
+          relative, energy balance < 1 %, the rebound velocity after separation from momentum
+          and energy conservation with the measured vibration energy of the block within 1 %
+  punch   prescribed flat punch on a clamped block: R_base_y = rb_punch_Fy at every record
+          within 0.5 % of the largest, energy balance < 1e-4
+  slide   block on an incline, tan(theta) = 0.5 > mu = 0.3: acceleration of the center of mass
+          (least-squares slope of momentum_x / M over t in [1, 2]) = g (sin - mu cos) within 1 %
+  stick   tan(theta) = 0.2 < mu: drift of the bottom's mean displacement between t in [3, 3.5]
+          and [3.5, 4] below 1e-6 of the block size; the plane carries the weight within 0.5 %
+"""
+import csv
+import math
+import sys
+
+import numpy as np
+
+kind, path = sys.argv[1], sys.argv[2]
+rows = list(csv.DictReader(open(path)))
+col = lambda n: np.array([float(r[n]) for r in rows])  # noqa: E731
+t = col("time")
+ok = True
+
+
+def check(name, value, limit):
+    global ok
+    good = abs(value) <= limit
+    ok = ok and good
+    print("%s %.3g (limit %.3g)%s" % (name, value, limit, "" if good else "  FAILED"))
+
+
+if kind == "impact":
+    m_disc, m_block = 2.0 * math.pi * 0.09, 1.0
+    v0 = -1.0
+    p = col("momentum_y")
+    check("momentum drift (relative)", np.abs(p - m_disc * v0).max() / abs(m_disc * v0), 1e-8)
+    check("energy balance", col("energy_balance_error").max(), 1e-2)
+    F, v1 = col("rb_disc_Fy"), col("rb_disc_vy")
+    touched = np.nonzero(F != 0)[0]
+    after = touched[-1] + 1 if len(touched) else len(t)
+    if after >= len(t) - 1:
+        sys.exit("the disc never left the block")
+    # After separation: the block's translation from momentum, the rest of its energy is
+    # vibration; the relative velocity follows from the energy left for the two-body motion.
+    e0 = 0.5 * m_disc * v0 * v0
+    ke, ie = col("kinetic_energy")[after:], col("internal_energy")[after:]
+    vd = v1[after:]
+    V = (m_disc * v0 - m_disc * vd) / m_block
+    vib = (ke - 0.5 * m_disc * vd ** 2 - 0.5 * m_block * V ** 2) + ie
+    mu = m_disc * m_block / (m_disc + m_block)
+    v_rel = np.sqrt(np.maximum(0.0, v0 * v0 - 2.0 * vib / mu))  # |v_disc - V| after
+    vc = (m_disc * v0) / (m_disc + m_block)  # center of mass velocity
+    predicted = vc + m_block / (m_disc + m_block) * v_rel  # the disc moves back up
+    print("after t = %.4g: disc %.6f, predicted %.6f, vibration energy %.3g of %.3g"
+          % (t[after], vd[-1], predicted[-1], vib[-1], e0))
+    check("rebound velocity (relative)", np.abs(vd - predicted).max() / abs(predicted[-1]), 1e-2)
+elif kind == "punch":
+    F, R = col("rb_punch_Fy"), col("R_base_y")
+    check("|R_base_y - rb_punch_Fy| / max", np.abs(F - R).max() / np.abs(F).max(), 5e-3)
+    check("energy balance", col("energy_balance_error").max(), 1e-4)
+elif kind in ("slide", "stick"):
+    tan, mu, g, M = (0.5 if kind == "slide" else 0.2), 0.3, 1.0, 0.5
+    th = math.atan(tan)
+    if kind == "slide":
+        w = (t >= 1.0) & (t <= 2.0)
+        a = np.polyfit(t[w], col("momentum_x")[w] / M, 1)[0]
+        exact = g * (math.sin(th) - mu * math.cos(th))
+        print("acceleration %.6f, exact %.6f" % (a, exact))
+        check("acceleration error (relative)", a / exact - 1, 1e-2)
+    else:
+        u = col("u_ymin_x")
+        w1, w2 = (t >= 3.0) & (t < 3.5), (t >= 3.5)
+        check("drift / block size", u[w2].mean() - u[w1].mean(), 1e-6)
+        late = t >= 3.0
+        fx, fy = col("rb_incline_Fx")[late], col("rb_incline_Fy")[late]
+        check("tangential support vs M g sin (relative)",
+              np.abs(fx - M * g * math.sin(th)).max() / (M * g * math.sin(th)), 5e-3)
+        check("normal support vs M g cos (relative)",
+              np.abs(-fy - M * g * math.cos(th)).max() / (M * g * math.cos(th)), 5e-3)
+sys.exit(0 if ok else 1)
