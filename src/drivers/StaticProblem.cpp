@@ -17,8 +17,12 @@ StaticProblem::StaticProblem(std::shared_ptr<const ModelOperators> operators)
   CouplingGraph couplings(model_.maps.overlap_nodes->getNodeNumElements());
   ops_->solid().add_point_couplings(couplings);
   conditions_.add_couplings(couplings);
+  if (!model_.scene.contacts.empty()) {
+    contact_ = std::make_unique<ImplicitContact>(*ops_);
+    contact_->add_couplings(couplings);
+  }
   graph_ = couplings.build(model_.maps);
-  linear_ = true;
+  linear_ = contact_ == nullptr;
   for (const auto& part : model_.scene.parts)
     for (const auto& material : model_.scene.materials)
       if (material.name == part.material && material.model != "linear_elastic") linear_ = false;
@@ -47,6 +51,7 @@ void StaticProblem::unconstrained_residual(const Vector& d_owned, Vector& r_owne
     Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewCounter("efg: essential conditions"));
     conditions_.add_boundary_terms(d_overlap_, r_overlap_);
   }
+  if (contact_) contact_->add_residual(d_overlap_, r_overlap_);
   ops_->to_owned(r_overlap_, r_owned);
   internal_norm_ = r_owned.norm2();
   r_owned.update(-1.0, f_ext_, 1.0);
@@ -66,6 +71,7 @@ void StaticProblem::jacobian(const Vector& d_owned, FEMatrix& K) {
     Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewCounter("efg: essential conditions"));
     conditions_.add_boundary_terms(d_overlap_, K);
   }
+  if (contact_) contact_->add_tangent(d_overlap_, K);
   K.endAssembly();
   Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewCounter("efg: essential conditions"));
   K.beginModify();
@@ -73,10 +79,22 @@ void StaticProblem::jacobian(const Vector& d_owned, FEMatrix& K) {
   K.endModify();
 }
 
+std::vector<std::array<double, 3>> StaticProblem::body_forces(const Vector& d_owned) {
+  if (!contact_) return {};
+  to_overlap(d_owned, d_overlap_);
+  return contact_->body_forces(d_overlap_);
+}
+
 std::vector<std::array<double, 3>> StaticProblem::reactions(const Vector& d_owned) {
+  // f_int - f_ext and the contact forces, without the conditions' own terms: what the supports
+  // carry (contact forces on particles a condition reaches are not its reaction).
   Vector r(model_.maps.owned_dofs);
-  ops_->internal_force(d_owned, r);
-  r.update(-1.0, f_ext_, 1.0);  // f_int - f_ext, without the conditions' own terms
+  to_overlap(d_owned, d_overlap_);
+  r_overlap_.putScalar(0.0);
+  ops_->solid().add_internal_force(d_overlap_, r_overlap_);
+  if (contact_) contact_->add_residual(d_overlap_, r_overlap_);
+  ops_->to_owned(r_overlap_, r);
+  r.update(-1.0, f_ext_, 1.0);
   return conditions_.reactions(r);
 }
 

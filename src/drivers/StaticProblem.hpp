@@ -1,12 +1,13 @@
 // The discrete equilibrium problem of an implicit stage at one load level:
-//   r(d) = f_int(d) - lambda f_ext (+ penalty springs), with the constrained rows replaced by
-//   the kinematic constraints (transformation method),
+//   r(d) = f_int(d) - lambda f_ext (+ penalty springs, + contact forces), with the constrained
+//   rows replaced by the kinematic constraints (transformation method),
 // and its Jacobian on a graph built once. Knows nothing of the nonlinear solver that drives it.
 #pragma once
 
 #include <algorithm>
 #include <memory>
 
+#include "contact/ImplicitContact.hpp"
 #include "operators/EssentialConditions.hpp"
 #include "operators/ModelOperators.hpp"
 
@@ -29,6 +30,9 @@ class StaticProblem {
   /// Accepts the load step converged at d: the material history computed at d (the internal
   /// force is evaluated there once more, whatever point the solver evaluated last) is committed.
   void commit_history(const Vector& d_owned);
+
+  /// The contact force on every rigid body at d (collective; empty without contacts).
+  std::vector<std::array<double, 3>> body_forces(const Vector& d_owned);
 
   /// Reactions of every boundary condition at d (after a converged solve).
   std::vector<std::array<double, 3>> reactions(const Vector& d_owned);
@@ -53,6 +57,7 @@ class StaticProblem {
   std::shared_ptr<const ModelOperators> ops_;
   const Model& model_;
   EssentialConditions conditions_;
+  std::unique_ptr<ImplicitContact> contact_;  ///< only with contacts in the scene
   Teuchos::RCP<const FEGraph> graph_;
   Vector d_overlap_, r_overlap_, f_ext_;
   double external_norm_ = 0, internal_norm_ = 0;

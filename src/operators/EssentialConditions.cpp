@@ -414,10 +414,12 @@ void EssentialConditions::replace_rows(FEMatrix& K) const {
 }
 
 void EssentialConditions::build_reaction_weights(const Model& model) {
-  // s_Ic = integral over condition c's boundary of |phi_I| (or |phi_I(X_J)| at its collocated
-  // nodes when it covers no side): every particle the condition reaches, MLS shape functions
-  // being negative in places. Assembled on the overlap nodes and summed on their owners.
-  const auto n = static_cast<std::size_t>(std::max<std::size_t>(conditions_, 1));
+  // s_Ick = integral over condition c's boundary of |phi_I| (or |phi_I(X_J)| at its collocated
+  // nodes when it covers no side), for each component k the condition constrains: every
+  // particle the condition reaches, MLS shape functions being negative in places. A component a
+  // condition leaves free carries none of its reaction (a symmetry plane u_x = 0 takes no share
+  // of a vertical load). Assembled on the overlap nodes and summed on their owners.
+  const std::size_t n = std::max<std::size_t>(3 * conditions_, 1);
   Tpetra::MultiVector<> overlap(model.maps.overlap_nodes, n), owned(model.maps.owned_nodes, n);
   std::vector<char> has_sides(conditions_, 0);
   for (const auto& p : points_) has_sides[p.condition] = 1;
@@ -425,22 +427,28 @@ void EssentialConditions::build_reaction_weights(const Model& model) {
     auto s = overlap.getLocalViewHost(Tpetra::Access::ReadWrite);
     for (const auto& p : points_)
       for (std::size_t a = 0; a < p.nodes.size(); ++a)
-        s(static_cast<std::size_t>(p.nodes[a]), p.condition) += std::abs(p.phi[a]) * p.area;
+        for (std::size_t k = 0; k < 3; ++k)
+          if (p.constrained[k])
+            s(static_cast<std::size_t>(p.nodes[a]), 3 * p.condition + k) +=
+                std::abs(p.phi[a]) * p.area;
     for (const auto& c : nodes_)
       if (!has_sides[c.condition])
         for (std::size_t a = 0; a < c.nodes.size(); ++a)
-          s(static_cast<std::size_t>(c.nodes[a]), c.condition) += std::abs(c.phi[a]);
+          s(static_cast<std::size_t>(c.nodes[a]),
+            3 * c.condition + static_cast<std::size_t>(c.component)) += std::abs(c.phi[a]);
   }
   owned.doExport(overlap, Tpetra::Export<>(model.maps.overlap_nodes, model.maps.owned_nodes),
                  Tpetra::ADD);
   const auto s = owned.getLocalViewHost(Tpetra::Access::ReadOnly);
-  reaction_weight_.assign(s.extent(0), std::vector<double>(conditions_, 0.0));
-  for (std::size_t i = 0; i < s.extent(0); ++i) {
-    double total = 0;
-    for (std::size_t c = 0; c < conditions_; ++c) total += s(i, c);
-    if (total > 0)
-      for (std::size_t c = 0; c < conditions_; ++c) reaction_weight_[i][c] = s(i, c) / total;
-  }
+  reaction_weight_.assign(s.extent(0), std::vector<double>(3 * conditions_, 0.0));
+  for (std::size_t i = 0; i < s.extent(0); ++i)
+    for (std::size_t k = 0; k < 3; ++k) {
+      double total = 0;
+      for (std::size_t c = 0; c < conditions_; ++c) total += s(i, 3 * c + k);
+      if (total > 0)
+        for (std::size_t c = 0; c < conditions_; ++c)
+          reaction_weight_[i][3 * c + k] = s(i, 3 * c + k) / total;
+    }
 }
 
 std::vector<std::array<double, 3>> EssentialConditions::reactions(
@@ -452,9 +460,8 @@ std::vector<std::array<double, 3>> EssentialConditions::reactions(
   const auto udim = static_cast<std::size_t>(dim_);
   for (std::size_t i = 0; i < reaction_weight_.size(); ++i)
     for (std::size_t c = 0; c < conditions_; ++c)
-      if (reaction_weight_[i][c] > 0)
-        for (std::size_t k = 0; k < udim; ++k)
-          local[c * 3 + k] += reaction_weight_[i][c] * r(i * udim + k, 0);
+      for (std::size_t k = 0; k < udim; ++k)
+        local[c * 3 + k] += reaction_weight_[i][3 * c + k] * r(i * udim + k, 0);
   if (n > 0)
     Teuchos::reduceAll(*overlap_dofs_->getComm(), Teuchos::REDUCE_SUM, static_cast<int>(n),
                        local.data(), global.data());

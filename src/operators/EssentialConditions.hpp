@@ -18,8 +18,9 @@
 // Boundary integrals run over the sides of the part whose nodes all lie in the condition's node
 // set, with the SCNI boundary points (operators/SideQuadrature). The reaction of a condition is
 // the sum of the out-of-balance forces f_int - f_ext of the particles its boundary reaches, each
-// particle's share split among conditions by the weight of its shape function on their
-// boundaries (so the reactions of all conditions balance the applied loads exactly).
+// particle's share of each component split among the conditions constraining that component by
+// the weight of its shape function on their boundaries (so the reactions of all conditions
+// balance the applied loads exactly).
 #pragma once
 
 #include <array>
@@ -145,7 +146,7 @@ class EssentialConditions {
   int dim_;
   std::size_t conditions_;
   std::vector<std::vector<double>>
-      reaction_weight_;  // per owned particle (node order), per condition
+      reaction_weight_;  // per owned particle (node order), per condition and component
   Teuchos::RCP<const Map> overlap_dofs_;
   std::vector<NodeConstraint> nodes_;
   std::vector<BoundaryPoint> points_;

@@ -107,6 +107,9 @@ RunOutcome run_stages(const CommPtr& comm, const Model& model, const std::string
         ImplicitDriver driver(*problem, stage, state.time, first_end);
         const auto s = driver.run(state.d, [&](double t, const Vector&) {
           state.time = t;
+          const auto forces = problem->body_forces(state.d);  // fixed bodies: force only
+          if (!forces.empty()) state.bodies.resize(forces.size());
+          for (std::size_t b = 0; b < forces.size(); ++b) state.bodies[b].force = forces[b];
           write(state);
         });
         implicit_reports.push_back({stage.name, s});

@@ -83,6 +83,7 @@ ContactSpec read_contact(const Scene& s, const YAML::Node& r, const YAML::Node& 
       r["dynamic_friction"] ? r["dynamic_friction"].as<double>() : c.static_friction;
   c.decay = r["decay"].as<double>();
   c.damping = r["damping"].as<double>();
+  c.implicit_penalty = r["implicit_penalty"].as<double>();
   auto is_body = [&](const std::string& n) {
     return std::any_of(s.rigid_bodies.begin(), s.rigid_bodies.end(),
                        [&](const RigidBodySpec& b) { return b.name == n; });
@@ -139,12 +140,30 @@ void read_contact_input(Scene& s) {
   for (std::size_t i = 0; i < r["contacts"].size(); ++i)
     s.contacts.push_back(
         read_contact(s, r["contacts"][i], d["contacts"][i], "contacts[" + std::to_string(i) + "]"));
-  if (s.contacts.empty() && s.rigid_bodies.empty()) return;
-  for (std::size_t i = 0; i < s.stages.size(); ++i)
-    if (s.stages[i].driver == "implicit")
-      fail(s, d["stages"][i]["driver"], "stages[" + std::to_string(i) + "].driver",
-           "rigid bodies and contacts act in explicit stages only (implicit contact is not built "
-           "yet); expected driver: explicit");
+  // Implicit stages: frictionless contact with fixed bodies (a moving or free body, and
+  // friction, need the time-dependent terms and their tangents, not built yet).
+  std::size_t implicit = s.stages.size();
+  for (std::size_t i = 0; i < s.stages.size() && implicit == s.stages.size(); ++i)
+    if (s.stages[i].driver == "implicit") implicit = i;
+  if (implicit == s.stages.size()) return;
+  const auto stage_key = "stages[" + std::to_string(implicit) + "].driver";
+  const YAML::Node stage_at = d["stages"][implicit]["driver"];
+  for (std::size_t i = 0; i < s.contacts.size(); ++i) {
+    const auto& c = s.contacts[i];
+    const auto path = "contacts[" + std::to_string(i) + "]";
+    if (c.static_friction > 0 || c.dynamic_friction > 0)
+      fail(s, stage_at, stage_key,
+           "contact '" + c.name +
+               "' has friction, which implicit stages do not model yet; "
+               "expected driver: explicit, or no friction in " +
+               path);
+    for (const auto& b : s.rigid_bodies)
+      if (b.name == c.rigid_body && b.motion != "fixed")
+        fail(s, stage_at, stage_key,
+             "rigid body '" + b.name + "' of contact '" + c.name + "' has motion " + b.motion +
+                 ", but implicit stages take fixed bodies only (moving bodies are not built "
+                 "yet); expected driver: explicit, or motion: fixed");
+  }
 }
 
 }  // namespace efg

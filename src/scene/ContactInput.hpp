@@ -1,9 +1,9 @@
 // Reads rigid_bodies[] and contacts[] into the scene and cross-checks them beyond the schema:
 // names that exist (curves, bodies, parts; a contact between two rigid bodies is refused), one
 // mass description (a free body needs mass, or density and a shape with a volume), a prescribed
-// motion with a velocity, box corners in order, a nonzero plane normal, and contacts in explicit
-// stages only (implicit contact is not built yet). Dimensions against the mesh are checked with
-// it (scene/SceneMeshChecks).
+// motion with a velocity, box corners in order, a nonzero plane normal, and in a scene with an
+// implicit stage frictionless contacts with fixed bodies only. Dimensions against the mesh are
+// checked with it (scene/SceneMeshChecks).
 #pragma once
 
 #include "scene/Scene.hpp"

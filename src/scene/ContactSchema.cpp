@@ -6,9 +6,9 @@ using namespace schema;
 
 SpecPtr rigid_body_spec() {
   auto point = [](const std::string& doc) { return real_list(doc, "length").items(2, 3); };
-  return map("A rigid body of analytic shape (explicit stages): fixed, moved by a prescribed "
-             "velocity, or free (translation under its contact forces; no rotation yet). "
-             "Particles of the parts named by a contact may not enter it.")
+  return map("A rigid body of analytic shape: fixed, moved by a prescribed velocity, or free "
+             "(translation under its contact forces; no rotation yet); implicit stages take "
+             "fixed bodies only. Particles of the parts named by a contact may not enter it.")
       .required("name", string("Body name, unique."))
       .required("shape", choice("Analytic shape.", {"plane", "sphere", "cylinder", "box"}))
       .optional("motion",
@@ -52,7 +52,8 @@ SpecPtr rigid_body_spec() {
 
 SpecPtr contact_spec() {
   return map("Penalty contact between the surface particles of deformable parts and a rigid "
-             "body, with Coulomb friction (explicit stages).")
+             "body, with Coulomb friction in explicit stages; frictionless with fixed bodies in "
+             "implicit stages.")
       .required("name", string("Contact name, unique."))
       .required("rigid_body", string("Name of an entry of rigid_bodies."))
       .required(
@@ -75,6 +76,13 @@ SpecPtr contact_spec() {
                 real("Exponential decay coefficient of friction with slip speed.", "time/length")
                     .at_least(0),
                 "0")
+      .optional("implicit_penalty",
+                real("Implicit stages: contact pressure per unit penetration beta = "
+                     "implicit_penalty x E / h (E the part's Young's modulus, h the boundary "
+                     "spacing); the penetration error falls like 1 / implicit_penalty.",
+                     "-")
+                    .above(0),
+                "100")
       .optional("damping",
                 real("Normal viscous damping as a fraction of critical, c = 2 damping sqrt(k m) "
                      "per particle (LS-DYNA's VDC / 100): quiets contact chatter; never pulls.",

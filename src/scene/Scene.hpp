@@ -114,6 +114,7 @@ struct ContactSpec {
   double penalty = 0.1;  ///< normal stiffness k = penalty x m / dt^2 per particle
   double static_friction = 0, dynamic_friction = 0, decay = 0;
   double damping = 0;  ///< normal viscous damping, fraction of critical per particle
+  double implicit_penalty = 100;  ///< implicit stages: beta = implicit_penalty x E / h
 };
 
 struct StageSpec {

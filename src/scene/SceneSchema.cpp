@@ -397,12 +397,9 @@ Spec build_scene_schema() {
           .optional("rigid_walls",
                     list("Planar rigid walls (explicit stages).", rigid_wall_spec()).unique_names(),
                     "[]")
-          .optional("rigid_bodies",
-                    list("Rigid bodies (explicit stages).", rigid_body_spec()).unique_names(), "[]")
+          .optional("rigid_bodies", list("Rigid bodies.", rigid_body_spec()).unique_names(), "[]")
           .optional("contacts",
-                    list("Penalty contacts of deformable parts with rigid bodies (explicit "
-                         "stages).",
-                         contact_spec())
+                    list("Penalty contacts of deformable parts with rigid bodies.", contact_spec())
                         .unique_names(),
                     "[]")
           .optional("stages",

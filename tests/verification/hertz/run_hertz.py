@@ -1,0 +1,169 @@
+#!/usr/bin/env python3
+"""Hertz contact of an elastic cylinder on a rigid flat, implicit (README.md of this folder).
+
+Quarter model (make_mesh.py): radius R = 1, plane strain, E = 1000, nu = 0.3; symmetry u_x = 0
+on x = 0; the cut through the center (y = R) pressed down by DELTA in LOAD_STEPS load steps;
+the fixed rigid plane y = 0 (`rigid_bodies`, frictionless `contacts`, implicit penalty
+beta = alpha E / h). Per level: the total load per unit length of the whole cylinder P = 2 x the
+contact force on the plane (rb_flat_Fy of the last record), and from the contact particles
+(physical position inside the plane) their pressures p_J = alpha E (-gap_J) / h_J (h_J: the
+longest boundary edge at the particle, as efg's ImplicitContact); Hertz's elliptic profile
+p = p0 sqrt(1 - x^2 / b^2) is fitted by least squares to p^2 against x^2 (x the deformed
+position), giving the half-width b and the peak p0, compared with Johnson (Contact Mechanics,
+1985, sec. 4.2): b = sqrt(4 P R / (pi E*)), p0 = 2 P / (pi b), E* = E / (1 - nu^2).
+Exit 1 when the finest level is off by more than 5 % in b or p0, an error does not fall from
+the coarsest to the finest level, or on any level the cut's reaction differs from the contact
+force (or the symmetry plane carries a force) by more than 1e-8 of it.
+usage: run_hertz.py EFG OUTDIR [--radial N N N] [--penalty ALPHA]
+"""
+import argparse
+import math
+import os
+import subprocess
+import sys
+import time
+
+import netCDF4
+import numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+from make_mesh import quarter_cylinder  # noqa: E402
+sys.path.insert(0, os.path.join(HERE, ".."))
+from exodus_mesh import write_exodus  # noqa: E402
+
+R, E, NU, DELTA, LOAD_STEPS = 1.0, 1000.0, 0.3, 0.03, 5
+GRADING = 0.3  # contact-point spacing / uniform spacing (make_mesh.graded)
+TOL = 0.05
+
+SCENE = """title: Hertz cylinder on a rigid flat, {nr} cells across the radius
+mesh: {{file: {mesh}}}
+parts:
+  - {{name: cyl, blocks: [cylinder], material: m, plane: strain}}
+materials:
+  - {{name: m, model: linear_elastic, youngs_modulus: {E!r}, poissons_ratio: {nu!r}}}
+boundary_conditions:
+  - {{name: sym, type: displacement, node_set: sym, x: 0}}
+  - {{name: top, type: displacement, node_set: top, y: {d!r}, curve: load}}
+rigid_bodies:
+  - {{name: flat, shape: plane, point: [0, 0], normal: [0, 1]}}
+contacts:
+  - {{name: touch, rigid_body: flat, parts: [cyl], implicit_penalty: {alpha!r}}}
+curves:
+  - {{name: load, time: [0, 1], value: [0, 1]}}
+stages:
+  - {{name: press, driver: implicit, end_time: 1, load_steps: {steps}}}
+output:
+  fields: [displacement]
+  history: history.csv
+"""
+
+
+def boundary_edge_sizes(x, y, conn):
+    """Longest boundary edge at each node (edges used by one cell only)."""
+    count = {}
+    for q in conn - 1:
+        for k in range(4):
+            e = tuple(sorted((q[k], q[(k + 1) % 4])))
+            count[e] = count.get(e, 0) + 1
+    h = np.zeros(len(x))
+    for (a, b), c in count.items():
+        if c == 1:
+            length = math.hypot(x[a] - x[b], y[a] - y[b])
+            h[a], h[b] = max(h[a], length), max(h[b], length)
+    return h
+
+
+def run_level(efg, outdir, nr, alpha, grading):
+    tag = "hertz_%d" % nr
+    mesh = os.path.join(outdir, tag + ".e")
+    x, y, conn, sets = quarter_cylinder(R, nr, grading)
+    write_exodus(mesh, "Hertz quarter cylinder %d" % nr, [x, y], conn, "QUAD4", sets,
+                 block_name="cylinder")
+    scene = os.path.join(outdir, tag + ".yaml")
+    with open(scene, "w") as f:
+        f.write(SCENE.format(nr=nr, mesh=os.path.basename(mesh), E=E, nu=NU, d=-DELTA,
+                             alpha=alpha, steps=LOAD_STEPS))
+    out = os.path.join(outdir, tag + "_out")
+    start = time.time()
+    p = subprocess.run([efg, "run", scene, "-o", out], capture_output=True, text=True)
+    seconds = time.time() - start
+    if p.returncode != 0:
+        sys.exit("%s: efg exit %d: %s" % (tag, p.returncode, p.stderr.strip()[-400:]))
+    newton = [l for l in p.stdout.splitlines() + p.stderr.splitlines() if "Newton iterations," in l]
+    with netCDF4.Dataset(os.path.join(out, tag + ".e")) as d:
+        names = [str(s) for s in netCDF4.chartostring(d.variables["name_nod_var"][:])]
+        ux = np.asarray(d.variables["vals_nod_var%d" % (names.index("displacement_x") + 1)][-1])
+        uy = np.asarray(d.variables["vals_nod_var%d" % (names.index("displacement_y") + 1)][-1])
+    import csv
+    last = list(csv.DictReader(open(os.path.join(out, "history.csv"))))[-1]
+    P = 2.0 * abs(float(last["rb_flat_Fy"]))
+    # Equilibrium of the quarter: the cut's reaction carries the contact force, the symmetry
+    # plane (u_x only) carries no vertical share and no horizontal force (frictionless).
+    reaction_error = max(abs(float(last["R_top_y"]) - float(last["rb_flat_Fy"])),
+                         abs(float(last["R_sym_y"])), abs(float(last["R_sym_x"]))) / (P / 2)
+    h = boundary_edge_sizes(x, y, conn)
+    arc = sets["arc"] - 1
+    gap = y[arc] + uy[arc]
+    touching = gap < 0
+    xs = (x[arc] + ux[arc])[touching]
+    pressure = alpha * E * (-gap[touching]) / h[arc][touching]
+    # p^2 = p0^2 - (p0^2 / b^2) x^2 (the quarter model's contact particles; x >= 0)
+    slope, intercept = np.polyfit(xs ** 2, pressure ** 2, 1) if len(xs) > 2 else (0.0, -1.0)
+    fits = intercept > 0 and slope < 0  # an ellipse: too few contact particles may not give one
+    p0 = math.sqrt(intercept) if fits else float("nan")
+    b = math.sqrt(-intercept / slope) if fits else float("nan")
+    e_star = E / (1 - NU * NU)
+    b_exact = math.sqrt(4 * P * R / (math.pi * e_star))
+    p0_exact = 2 * P / (math.pi * b_exact)
+    return dict(nr=nr, particles=len(x), seconds=seconds, P=P, touching=int(touching.sum()),
+                reaction_error=reaction_error,
+                b=b, b_exact=b_exact, p0=p0, p0_exact=p0_exact,
+                newton=newton[-1].split("done:")[-1].strip() if newton else "")
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("efg")
+    ap.add_argument("outdir")
+    ap.add_argument("--radial", type=int, nargs="+", default=[20, 40, 80])
+    ap.add_argument("--penalty", type=float, default=100.0)
+    ap.add_argument("--grading", type=float, default=GRADING)
+    a = ap.parse_args()
+    os.makedirs(a.outdir, exist_ok=True)
+    efg = os.path.abspath(a.efg)
+    print("| cells across R | particles | efg time | P | contact particles | b | b Hertz | b err "
+          "| p0 | p0 Hertz | p0 err | reactions vs contact | steps |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+    rows = []
+    for nr in a.radial:
+        r = run_level(efg, a.outdir, nr, a.penalty, a.grading)
+        r["eb"] = r["b"] / r["b_exact"] - 1
+        r["ep"] = r["p0"] / r["p0_exact"] - 1
+        rows.append(r)
+        print("| %d | %d | %.1f s | %.4f | %d | %.5f | %.5f | %+.2f %% | %.3f | %.3f | %+.2f %% "
+              "| %.1e | %s |"
+              % (nr, r["particles"], r["seconds"], r["P"], r["touching"], r["b"], r["b_exact"],
+                 100 * r["eb"], r["p0"], r["p0_exact"], 100 * r["ep"], r["reaction_error"],
+                 r["newton"]), flush=True)
+    fine, coarse = rows[-1], rows[0]
+    failures = []
+    if not abs(fine["eb"]) <= TOL:
+        failures.append("half-width off by %+.2f %% on the finest level" % (100 * fine["eb"]))
+    if not abs(fine["ep"]) <= TOL:
+        failures.append("peak pressure off by %+.2f %% on the finest level" % (100 * fine["ep"]))
+    if len(rows) > 1 and not abs(fine["eb"]) < abs(coarse["eb"]):
+        failures.append("the half-width error does not fall with refinement")
+    if len(rows) > 1 and not abs(fine["ep"]) < abs(coarse["ep"]):
+        failures.append("the peak pressure error does not fall with refinement")
+    for r in rows:
+        if not r["reaction_error"] < 1e-8:
+            failures.append("%d: reactions differ from the contact force by %.2g of it"
+                            % (r["nr"], r["reaction_error"]))
+    for f in failures:
+        print("FAILED: " + f)
+    sys.exit(1 if failures else 0)
+
+
+if __name__ == "__main__":
+    main()
