@@ -182,3 +182,14 @@ long long PenaltyContact::active_count() const {
 }
 
 }  // namespace efg
+
+namespace efg {
+
+long long PenaltyContact::candidate_count() const {
+  long long mine = 0, all = 0;
+  for (const auto& pair : pairs_) mine += static_cast<long long>(pair.candidates.size());
+  Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, mine, Teuchos::outArg(all));
+  return all;
+}
+
+}  // namespace efg

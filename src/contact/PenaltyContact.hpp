@@ -45,6 +45,8 @@ class PenaltyContact {
   void commit(const std::vector<RigidBodyState>& bodies);
   /// Particles in contact at the last evaluation, summed over ranks (collective).
   long long active_count() const;
+  /// Candidates (surface particles tested), summed over ranks (collective).
+  long long candidate_count() const;
 
  private:
   struct Candidate {
