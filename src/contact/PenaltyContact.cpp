@@ -26,9 +26,24 @@ PenaltyContact::PenaltyContact(const ModelOperators& ops, const Vector& mass_own
   const auto& mesh = model.mesh;
   const auto udim = static_cast<std::size_t>(dim_);
   const auto mass = mass_owned.getLocalViewHost(Tpetra::Access::ReadOnly);
+  // Candidate: owned particle j of part p, with its mass and shape-function row.
+  auto candidate = [&](std::size_t p, std::size_t j) {
+    const auto& part = model.parts[p];
+    Candidate c;
+    for (std::size_t k = 0; k < udim; ++k) c.X[k] = part.cloud.x(j)[k];
+    c.mass = mass(static_cast<std::size_t>(model.maps.owned_dofs->getLocalElement(
+                      static_cast<GlobalOrdinal>(part.cloud.mesh_node[j]) * dim_)),
+                  0);
+    for (auto k = part.particle_values.offsets[j]; k < part.particle_values.offsets[j + 1]; ++k) {
+      c.nodes.push_back(
+          ops.solid().overlap_node(p)[static_cast<std::size_t>(part.particle_values.particles[k])]);
+      c.phi.push_back(part.particle_values.values[k]);
+    }
+    return c;
+  };
   for (const auto& spec : model.scene.contacts) {
     Pair pair;
-    for (std::size_t b = 0; b < bodies.count(); ++b)
+    for (std::size_t b = 0; b < bodies.scene_count(); ++b)
       if (bodies.name(b) == spec.rigid_body) pair.body = b;
     pair.penalty = spec.penalty;
     pair.mu_s = spec.static_friction;
@@ -44,23 +59,28 @@ PenaltyContact::PenaltyContact(const ModelOperators& ops, const Vector& mass_own
       for (const auto& [cell, side] : boundary_sides(mesh, part.part->blocks))
         for (auto n : mesh.side_node_indices(cell, side))
           on_surface[static_cast<std::size_t>(n)] = 1;
-      for (std::size_t j = 0; j < part.cloud.owned_count; ++j) {
-        const auto node = part.cloud.mesh_node[j];
-        if (!on_surface[static_cast<std::size_t>(node)]) continue;
-        Candidate c;
-        for (std::size_t k = 0; k < udim; ++k) c.X[k] = part.cloud.x(j)[k];
-        c.mass = mass(static_cast<std::size_t>(model.maps.owned_dofs->getLocalElement(
-                          static_cast<GlobalOrdinal>(node) * dim_)),
-                      0);
-        for (auto k = part.particle_values.offsets[j]; k < part.particle_values.offsets[j + 1];
-             ++k) {
-          c.nodes.push_back(ops.solid().overlap_node(
-              p)[static_cast<std::size_t>(part.particle_values.particles[k])]);
-          c.phi.push_back(part.particle_values.values[k]);
-        }
-        pair.candidates.push_back(std::move(c));
-      }
+      for (std::size_t j = 0; j < part.cloud.owned_count; ++j)
+        if (on_surface[static_cast<std::size_t>(part.cloud.mesh_node[j])])
+          pair.candidates.push_back(candidate(p, j));
     }
+    pairs_.push_back(std::move(pair));
+  }
+  // Rigid walls: frictionless, undamped, on every particle of their node set (all particles
+  // without one), as the planar rigid walls always were.
+  for (std::size_t w = 0; w < model.scene.rigid_walls.size(); ++w) {
+    const auto& spec = model.scene.rigid_walls[w];
+    Pair pair;
+    pair.body = bodies.wall(w);
+    pair.penalty = spec.penalty;
+    pair.wall = true;
+    std::vector<char> in_set(mesh.node_count(), spec.node_set.empty() ? 1 : 0);
+    if (!spec.node_set.empty())
+      for (auto n : mesh.find_node_set(spec.node_set)->nodes)
+        in_set[static_cast<std::size_t>(n)] = 1;
+    for (std::size_t p = 0; p < model.parts.size(); ++p)
+      for (std::size_t j = 0; j < model.parts[p].cloud.owned_count; ++j)
+        if (in_set[static_cast<std::size_t>(model.parts[p].cloud.mesh_node[j])])
+          pair.candidates.push_back(candidate(p, j));
     pairs_.push_back(std::move(pair));
   }
 }
@@ -90,8 +110,10 @@ void PenaltyContact::add_forces(const Vector& d_overlap, double dt,
   const auto udim = static_cast<std::size_t>(dim_);
   auto f = f_overlap.getLocalViewHost(Tpetra::Access::ReadWrite);
   // Per body: the force on it (dim) and the mass of its touching particles x penalty.
+  // Per body: the force on it (3), penalty x the mass of its touching particles, and the total
+  // normal force (the rigid walls' history column).
   const std::size_t nb = bodies_.count();
-  std::vector<double> local(4 * nb, 0.0), total(4 * nb, 0.0);
+  std::vector<double> local(5 * nb, 0.0), total(5 * nb, 0.0);
   for (auto& pair : pairs_) {
     const auto& shape = bodies_.shape(pair.body);
     const auto& u_body = bodies[pair.body].displacement;
@@ -141,22 +163,25 @@ void PenaltyContact::add_forces(const Vector& d_overlap, double dt,
       for (std::size_t a = 0; a < c.nodes.size(); ++a)
         for (std::size_t i = 0; i < udim; ++i)
           f(static_cast<std::size_t>(c.nodes[a]) * udim + i, 0) += c.phi[a] * F[i];
-      for (std::size_t i = 0; i < udim; ++i) local[4 * pair.body + i] -= F[i];
-      local[4 * pair.body + 3] += pair.penalty * c.mass;
+      for (std::size_t i = 0; i < udim; ++i) local[5 * pair.body + i] -= F[i];
+      local[5 * pair.body + 3] += pair.penalty * c.mass;
+      local[5 * pair.body + 4] += fn;
     }
   }
   if (nb > 0)
     Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, static_cast<int>(local.size()), local.data(),
                        total.data());
+  wall_forces_.assign(nb - bodies_.scene_count(), 0.0);
   for (std::size_t b = 0; b < nb; ++b) {
-    for (std::size_t i = 0; i < 3; ++i) bodies[b].force[i] = total[4 * b + i];
+    for (std::size_t i = 0; i < 3; ++i) bodies[b].force[i] = total[5 * b + i];
+    if (b >= bodies_.scene_count()) wall_forces_[b - bodies_.scene_count()] = total[5 * b + 4];
     // A free body's own contact frequency: omega^2 dt^2 = sum k_J dt^2 / M = penalty sum m_J / M;
     // central differences need it below 4, kept below 1 with the particles' share.
-    if (bodies_.is_free(b) && total[4 * b + 3] > bodies_.mass(b)) {
+    if (bodies_.is_free(b) && total[5 * b + 3] > bodies_.mass(b)) {
       std::ostringstream o;
       o << "rigid body '" << bodies_.name(b) << "' (mass " << bodies_.mass(b)
         << ") is too light for its contact: penalty x the mass of the particles it touches is "
-        << total[4 * b + 3] << "; its contact would be unstable at this time step (give it more "
+        << total[5 * b + 3] << "; its contact would be unstable at this time step (give it more "
         << "mass or lower the contact's penalty)";
       throw NumericalError(o.str());
     }

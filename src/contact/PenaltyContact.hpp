@@ -1,6 +1,7 @@
 // Penalty contact of the surface particles of deformable parts with rigid bodies, with Coulomb
 // friction, for explicit stages (LS-DYNA's node-to-rigid-surface penalty contact in meshfree
-// form). A candidate is an owned particle J on the boundary of a named part; its physical
+// form); the planar rigid walls are the same contact, frictionless, on every particle of their
+// node set. A candidate is an owned particle J on the boundary of a named part; its physical
 // position is x_J = X_J + sum_I phi_I(X_J) d_I (shape functions do not interpolate). When x_J is
 // inside the body (gap g < 0 along the outward normal n):
 //   normal force    F_n = max(0, k (-g) - c v_n) n,   k = penalty x m_J / dt^2 (m_J the lumped
@@ -47,6 +48,8 @@ class PenaltyContact {
   long long active_count() const;
   /// Candidates (surface particles tested), summed over ranks (collective).
   long long candidate_count() const;
+  /// The normal force on each rigid wall at the last evaluation (summed over ranks).
+  const std::vector<double>& wall_forces() const { return wall_forces_; }
 
  private:
   struct Candidate {
@@ -58,8 +61,9 @@ class PenaltyContact {
     bool active = false;
   };
   struct Pair {
-    std::size_t body;
-    double penalty, mu_s, mu_d, decay, damping;
+    std::size_t body = 0;
+    double penalty = 0, mu_s = 0, mu_d = 0, decay = 0, damping = 0;
+    bool wall = false;  ///< a rigid wall: every particle of its node set is a candidate
     std::array<double, 3> body_u_old{};
     std::vector<Candidate> candidates;
   };
@@ -69,6 +73,7 @@ class PenaltyContact {
   const RigidBodies& bodies_;
   Teuchos::RCP<const Teuchos::Comm<int>> comm_;
   std::vector<Pair> pairs_;
+  std::vector<double> wall_forces_;
 };
 
 }  // namespace efg

@@ -44,14 +44,23 @@ contact::Shape shape_of(const RigidBodySpec& b, int dim) {
 
 RigidBodies::RigidBodies(const Scene& scene, int dim) : scene_(scene), dim_(dim) {
   for (const auto& b : scene.rigid_bodies)
-    bodies_.push_back({&b, shape_of(b, dim), rigid_body_mass(b, dim)});
+    bodies_.push_back(
+        {b.name, b.motion, b.curve, b.velocity, shape_of(b, dim), rigid_body_mass(b, dim)});
+  scene_count_ = bodies_.size();
+  for (const auto& w : scene.rigid_walls) {
+    RigidBodySpec plane;
+    plane.shape = "plane";
+    plane.point = w.point;
+    plane.normal = w.normal;
+    bodies_.push_back({"wall " + w.name, "fixed", "", {}, shape_of(plane, dim), 0.0});
+  }
 }
 
 std::vector<RigidBodyState> RigidBodies::initial_states(double time) const {
   std::vector<RigidBodyState> states(bodies_.size());
   const auto factor = curve_factor(scene_, time, 1.0);
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
-    const auto& spec = *bodies_[b].spec;
+    const auto& spec = bodies_[b];
     const double c = spec.motion == "prescribed" ? factor(spec.curve) : 1.0;
     for (std::size_t k = 0; k < spec.velocity.size(); ++k)
       states[b].velocity[k] = spec.velocity[k] * c;
@@ -63,7 +72,7 @@ void RigidBodies::move(std::vector<RigidBodyState>& states, double time, double 
   const auto mid = curve_factor(scene_, time + 0.5 * dt, 1.0);
   const auto end = curve_factor(scene_, time + dt, 1.0);
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
-    const auto& spec = *bodies_[b].spec;
+    const auto& spec = bodies_[b];
     auto& s = states[b];
     if (spec.motion == "free") {
       for (int k = 0; k < dim_; ++k) {
@@ -81,7 +90,7 @@ void RigidBodies::move(std::vector<RigidBodyState>& states, double time, double 
 
 void RigidBodies::finish(std::vector<RigidBodyState>& states, double dt) const {
   for (std::size_t b = 0; b < bodies_.size(); ++b)
-    if (bodies_[b].spec->motion == "free")
+    if (bodies_[b].motion == "free")
       for (int k = 0; k < dim_; ++k)
         states[b].velocity[k] += 0.5 * dt * states[b].force[k] / bodies_[b].mass;
 }

@@ -5,6 +5,8 @@
 //   prescribed: u^(n+1) = u^n + dt v_bar c(t + dt/2),  v^(n+1) = v_bar c(t + dt)
 //   fixed:      never moves.
 // Translation only: a body does not rotate (its friction moment is not integrated yet).
+// The scene's rigid walls (rigid_walls, LS-DYNA *RIGIDWALL_PLANAR) are fixed planes appended
+// after the scene's bodies: one contact code path for walls and bodies.
 #pragma once
 
 #include <string>
@@ -20,10 +22,15 @@ class RigidBodies {
  public:
   RigidBodies(const Scene& scene, int dim);
 
+  /// All bodies: the scene's rigid_bodies, then one fixed plane per rigid wall.
   std::size_t count() const { return bodies_.size(); }
-  const std::string& name(std::size_t b) const { return bodies_[b].spec->name; }
+  /// The scene's rigid_bodies (the first ones; their states are the history's).
+  std::size_t scene_count() const { return scene_count_; }
+  /// Index of rigid wall w.
+  std::size_t wall(std::size_t w) const { return scene_count_ + w; }
+  const std::string& name(std::size_t b) const { return bodies_[b].name; }
   const contact::Shape& shape(std::size_t b) const { return bodies_[b].shape; }
-  bool is_free(std::size_t b) const { return bodies_[b].spec->motion == "free"; }
+  bool is_free(std::size_t b) const { return bodies_[b].motion == "free"; }
   double mass(std::size_t b) const { return bodies_[b].mass; }
 
   /// States at the start of a run at `time`: initial velocity (free), v_bar c(time) (prescribed).
@@ -40,13 +47,15 @@ class RigidBodies {
 
  private:
   struct Body {
-    const RigidBodySpec* spec;
+    std::string name, motion, curve;
+    std::vector<double> velocity;
     contact::Shape shape;
     double mass;
   };
   const Scene& scene_;
   int dim_;
   std::vector<Body> bodies_;
+  std::size_t scene_count_ = 0;
 };
 
 }  // namespace efg

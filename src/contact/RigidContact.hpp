@@ -1,5 +1,5 @@
-// Rigid bodies and their penalty contacts as one explicit-stage component (built only when the
-// scene has rigid bodies or contacts): the bodies' velocity-Verlet halves around the particles'
+// Rigid bodies, rigid walls and their penalty contacts as one explicit-stage component (built
+// only when the scene has any of them): the bodies' velocity-Verlet halves around the particles'
 // force evaluation, the contact forces, the bodies' share of the energy account, and the state
 // kept for a failed step. The driver sees forces on particles like the rigid walls' (their work
 // is in wall_work) and body states for the history.
@@ -17,7 +17,7 @@ class RigidContact {
  public:
   RigidContact(const ModelOperators& ops, const Vector& mass_owned);
   static bool wanted(const Scene& scene) {
-    return !scene.rigid_bodies.empty() || !scene.contacts.empty();
+    return !scene.rigid_bodies.empty() || !scene.contacts.empty() || !scene.rigid_walls.empty();
   }
 
   /// Stage start at `time`: the states carried over from an earlier stage, or the initial ones.
@@ -38,6 +38,8 @@ class RigidContact {
   const RigidBodies& bodies() const { return bodies_; }
   double kinetic_energy() const { return bodies_.kinetic_energy(states_); }
   long long active_count() const { return contact_.active_count(); }
+  /// The normal force on each rigid wall at the last add_forces.
+  const std::vector<double>& wall_forces() const { return contact_.wall_forces(); }
 
  private:
   RigidBodies bodies_;

@@ -30,7 +30,6 @@ ExplicitDriver::ExplicitDriver(const ModelOperators& ops, const StageSpec& stage
       stage_(stage),
       mass_(lumped_mass(ops)),
       inverse_mass_(mass_.getMap()),
-      walls_(ops, mass_),
       contact_(RigidContact::wanted(ops.model().scene) ? std::make_unique<RigidContact>(ops, mass_)
                                                        : nullptr),
       motion_(ops.model()),
@@ -68,11 +67,11 @@ std::vector<double> ExplicitDriver::acceleration(double time, double wall_dt, co
   }
   std::vector<double> wall_forces;
   f_wall_.putScalar(0.0);
-  if (!walls_.empty() || contact_) {  // walls and contacts: forces on the particles
+  if (contact_) {  // rigid walls and contacts: forces on the particles
     ops_.to_overlap(d, d_overlap_);
     wall_overlap_.putScalar(0.0);
-    if (!walls_.empty()) wall_forces = walls_.add_forces(d_overlap_, wall_dt, wall_overlap_);
-    if (contact_) contact_->add_forces(d_overlap_, wall_dt, wall_overlap_);
+    contact_->add_forces(d_overlap_, wall_dt, wall_overlap_);
+    wall_forces = contact_->wall_forces();
     ops_.to_owned(wall_overlap_, f_wall_);
   }
   a.update(1.0, f_ext_, -1.0, f_int_, 0.0);

@@ -19,7 +19,6 @@
 #include "drivers/StableTimeStep.hpp"
 #include "drivers/WeakSupports.hpp"
 #include "operators/LumpedMass.hpp"
-#include "operators/RigidWalls.hpp"
 
 namespace efg {
 
@@ -49,7 +48,8 @@ class ExplicitDriver {
   const Vector& mass() const { return mass_; }
   /// a = M^-1 (f_ext(time) - f_int(d) - r_weak(d) + f_wall(d)), r_weak the weak supports'
   /// boundary terms; returns the wall forces. Exposed for tests. `wall_dt` sets the walls' penalty
-  /// stiffness p m / wall_dt^2 (RigidWalls): the stage's step, not a shortened last step.
+  /// stiffness p m / wall_dt^2 (contact/PenaltyContact): the stage's step, not a shortened last
+  /// step.
   std::vector<double> acceleration(double time, double wall_dt, const Vector& d, Vector& a);
 
  private:
@@ -71,8 +71,7 @@ class ExplicitDriver {
   const ModelOperators& ops_;
   const StageSpec& stage_;
   Vector mass_, inverse_mass_;
-  RigidWalls walls_;
-  std::unique_ptr<RigidContact> contact_;  ///< rigid bodies and contacts, when the scene has them
+  std::unique_ptr<RigidContact> contact_;  ///< rigid walls, bodies and contacts, when any exist
   PrescribedMotion motion_;
   WeakSupports supports_;  ///< nitsche / penalty displacement conditions (before stable_)
   StableTimeStep stable_;

@@ -93,6 +93,12 @@ StableTimeStep::StableTimeStep(const ModelOperators& ops, const Vector& mass_own
 
 double StableTimeStep::estimate(const Vector& d_owned) {
   Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewCounter("efg: stable time step"));
+  // Plastic points probed elastically (MaterialStates::elastic_probe), for this estimate only.
+  struct ElasticProbe {
+    MaterialStates& states;
+    explicit ElasticProbe(MaterialStates& s) : states(s) { states.set_elastic_probe(true); }
+    ~ElasticProbe() { states.set_elastic_probe(false); }
+  } probe(ops_.solid().history());
   auto A = Teuchos::rcp(new ScaledTangent(ops_, extra_, inv_sqrt_mass_, d_owned));
   auto x0 = Teuchos::rcp(new MultiVector(start_, Teuchos::Copy));
   auto problem =

@@ -39,9 +39,19 @@ class MaterialStates {
   double step_time() const { return step_time_; }
   void set_step_time(double dt) { step_time_ = dt; }
 
+  /// Elastic probes (the explicit stable-step estimate): plastic points answer with their
+  /// elastic predictor from the committed state, no return map. The elastic stiffness bounds the
+  /// elastoplastic one from above (the elastic wave speed sets the critical step, as in
+  /// commercial explicit codes), and differences of it are smooth and symmetric, where
+  /// differences across the yield surface are neither (the Lanczos estimate then returned
+  /// residual norms of 2-8 % of the eigenvalue that differed between rank counts).
+  bool elastic_probe() const { return elastic_probe_; }
+  void set_elastic_probe(bool on) { elastic_probe_ = on; }
+
  private:
   std::vector<PartStates> parts_;
   double step_time_ = 0.0;
+  bool elastic_probe_ = false;
 };
 
 }  // namespace efg
