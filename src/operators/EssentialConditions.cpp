@@ -10,6 +10,7 @@
 #include "core/Errors.hpp"
 #include "discretization/ShapeFunctions.hpp"
 #include "discretization/SmoothingFacets.hpp"
+#include "mesh/SideMeasures.hpp"
 #include "operators/SideQuadrature.hpp"
 
 namespace efg {
@@ -26,23 +27,6 @@ double spacing_of(const PartDiscretization& d, std::size_t particle) {
   for (int k = 0; k < d.cloud.dimension; ++k)
     h = std::max(
         h, d.cloud.a(particle)[k] / (dil.size() == 1 ? dil[0] : dil[static_cast<std::size_t>(k)]));
-  return h;
-}
-
-// h of a boundary side: its longest edge between consecutive side nodes.
-double side_size(const BackgroundMesh& mesh, const std::vector<LocalIndex>& nodes) {
-  const auto udim = static_cast<std::size_t>(mesh.dimension);
-  double h = 0;
-  for (std::size_t a = 0; a < nodes.size(); ++a) {
-    double d2 = 0;
-    for (std::size_t k = 0; k < udim; ++k) {
-      const double dx =
-          mesh.coordinates[static_cast<std::size_t>(nodes[a]) * udim + k] -
-          mesh.coordinates[static_cast<std::size_t>(nodes[(a + 1) % nodes.size()]) * udim + k];
-      d2 += dx * dx;
-    }
-    h = std::max(h, std::sqrt(d2));
-  }
   return h;
 }
 
@@ -150,7 +134,7 @@ long long EssentialConditions::add_boundary_points(const Model& model, const Sol
       ++sides_found;
       const auto first = *std::min_element(nodes.begin(), nodes.end());
       if (model.partition.owner[static_cast<std::size_t>(first)] != model.partition.rank) continue;
-      const double h = side_size(mesh, nodes);
+      const double h = side_longest_edge(mesh, nodes);
       for (const auto& q : side_quadrature(mesh, cell, side)) {
         pts.push_back(q);
         beta.push_back(setup.beta_factor / h);
