@@ -58,6 +58,22 @@ ImplicitContact::ImplicitContact(const ModelOperators& ops)
   }
 }
 
+void ImplicitContact::begin_stage(const std::vector<RigidBodyState>& carried, double t0) {
+  t0_ = t0;
+  start_.assign(bodies_.count(), {0.0, 0.0, 0.0});
+  for (std::size_t b = 0; b < std::min(carried.size(), start_.size()); ++b)
+    start_[b] = carried[b].displacement;
+  displacement_ = start_;
+}
+
+void ImplicitContact::set_time(double t) {
+  if (start_.size() != bodies_.count()) begin_stage({}, t0_);
+  for (std::size_t b = 0; b < bodies_.count(); ++b) {
+    const auto travel = bodies_.prescribed_travel(b, t0_, t);
+    for (std::size_t k = 0; k < 3; ++k) displacement_[b][k] = start_[b][k] + travel[k];
+  }
+}
+
 void ImplicitContact::add_couplings(CouplingGraph& graph) const {
   for (const auto& pair : pairs_)
     for (const auto& c : pair.candidates) graph.add_clique(c.nodes.data(), c.nodes.size());
@@ -72,7 +88,8 @@ ImplicitContact::Touch ImplicitContact::touch(const Pair& p, const Candidate& c,
     for (std::size_t k = 0; k < udim; ++k)
       x[k] += c.phi[a] * d(static_cast<std::size_t>(c.nodes[a]) * udim + k, 0);
   const auto& shape = bodies_.shape(p.body);
-  const double u_body[3] = {0, 0, 0};  // implicit contact: fixed bodies
+  const double zero[3] = {0, 0, 0};
+  const double* u_body = displacement_.empty() ? zero : displacement_[p.body].data();
   const auto near = contact::proximity(shape, x, u_body);
   Touch t;
   t.gap = near.gap;

@@ -1,4 +1,6 @@
-// Penalty contact with fixed rigid bodies in implicit (static) stages, frictionless: the
+// Penalty contact with fixed or prescribed (moving) rigid bodies in implicit (static) stages,
+// frictionless (a prescribed body sits where its velocity x curve integral has taken it at the
+// load step's time, from its place at the stage start): the
 // surface particles of the named parts get, when their physical position x_J = X_J +
 // sum_I phi_I(X_J) d_I is inside the body (gap g < 0, outward normal n), the force
 //   F_J = beta_J A_J (-g) n,   beta_J = alpha E / h_J
@@ -26,6 +28,12 @@ class ImplicitContact {
   explicit ImplicitContact(const ModelOperators& ops);
 
   void add_couplings(CouplingGraph& graph) const;
+  /// Stage start at t0 with the bodies' states carried over (empty: the scene's places).
+  void begin_stage(const std::vector<RigidBodyState>& carried, double t0);
+  /// The bodies' displacements at time t of the stage (prescribed motions).
+  void set_time(double t);
+  /// Displacements of every body at the last set_time.
+  const std::vector<std::array<double, 3>>& body_displacements() const { return displacement_; }
   /// r -= phi F (overlap) at d.
   void add_residual(const Vector& d_overlap, Vector& r_overlap) const;
   /// K += dr/dd (assembly mode).
@@ -54,6 +62,8 @@ class ImplicitContact {
   RigidBodies bodies_;
   Teuchos::RCP<const Teuchos::Comm<int>> comm_;
   std::vector<Pair> pairs_;
+  double t0_ = 0;
+  std::vector<std::array<double, 3>> start_, displacement_;
 };
 
 }  // namespace efg

@@ -95,6 +95,16 @@ void RigidBodies::finish(std::vector<RigidBodyState>& states, double dt) const {
         states[b].velocity[k] += 0.5 * dt * states[b].force[k] / bodies_[b].mass;
 }
 
+std::array<double, 3> RigidBodies::prescribed_travel(std::size_t b, double t0, double t1) const {
+  std::array<double, 3> u{};
+  const auto& body = bodies_[b];
+  if (body.motion != "prescribed") return u;
+  const CurveSpec* c = body.curve.empty() ? nullptr : scene_.find_curve(body.curve);
+  const double integral = c ? curve_integral(*c, t0, t1) : t1 - t0;
+  for (std::size_t k = 0; k < body.velocity.size(); ++k) u[k] = body.velocity[k] * integral;
+  return u;
+}
+
 double RigidBodies::kinetic_energy(const std::vector<RigidBodyState>& states) const {
   double e = 0;
   for (std::size_t b = 0; b < bodies_.size(); ++b)

@@ -39,6 +39,9 @@ class RigidBodies {
   void move(std::vector<RigidBodyState>& states, double time, double dt) const;
   /// Second half, with the forces of the new evaluation (in states[b].force).
   void finish(std::vector<RigidBodyState>& states, double dt) const;
+  /// Displacement of a prescribed body from time t0 to t1: velocity x the integral of its curve
+  /// (exact for the piecewise-linear curves; zero for fixed and free bodies). Implicit stages.
+  std::array<double, 3> prescribed_travel(std::size_t b, double t0, double t1) const;
   /// Kinetic energy of the free bodies (prescribed motions are driven from outside: their
   /// energy is the work they do on the particles).
   double kinetic_energy(const std::vector<RigidBodyState>& states) const;

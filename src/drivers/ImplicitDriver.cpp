@@ -33,6 +33,7 @@ StageSummary ImplicitDriver::run(Vector& d, const OutputHook& output) {
     const double target = std::min(end, t + dt);
     const double ramp = std::min(1.0, target / first_end_);
     problem_.set_load_factor(curve_factor(scene, target, ramp));
+    problem_.set_time(target);
     Log::info("  stage '" + stage_.name + "' step " + std::to_string(summary.steps + 1) +
               ": t = " + std::to_string(target));
     Tpetra::deep_copy(saved, d);

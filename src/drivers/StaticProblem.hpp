@@ -21,6 +21,18 @@ class StaticProblem {
 
   /// Prescribed values and loads at the current load level.
   void set_load_factor(const LoadFactor& factor);
+  /// Rigid bodies: their states at the stage start (time t0), and the time of the load step
+  /// (prescribed bodies move with it). No-ops without contacts.
+  void begin_stage(const std::vector<RigidBodyState>& bodies, double t0) {
+    if (contact_) contact_->begin_stage(bodies, t0);
+  }
+  void set_time(double t) {
+    if (contact_) contact_->set_time(t);
+  }
+  /// Displacements of the rigid bodies at the last set_time (empty without contacts).
+  std::vector<std::array<double, 3>> body_displacements() const {
+    return contact_ ? contact_->body_displacements() : std::vector<std::array<double, 3>>{};
+  }
   /// r = residual(d) on the owned dofs.
   void residual(const Vector& d_owned, Vector& r_owned);
   /// K = dr/dd, refilled in place (the graph never changes).

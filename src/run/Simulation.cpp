@@ -104,12 +104,19 @@ RunOutcome run_stages(const CommPtr& comm, const Model& model, const std::string
         state.v.putScalar(0.0);
         state.a.putScalar(0.0);
         state.reactions_from_driver = false;
+        problem->begin_stage(state.bodies, state.time);
         ImplicitDriver driver(*problem, stage, state.time, first_end);
         const auto s = driver.run(state.d, [&](double t, const Vector&) {
           state.time = t;
-          const auto forces = problem->body_forces(state.d);  // fixed bodies: force only
+          problem->set_time(t);  // the bodies where the recorded step left them
+          const auto forces = problem->body_forces(state.d);
+          const auto places = problem->body_displacements();
           if (!forces.empty()) state.bodies.resize(forces.size());
-          for (std::size_t b = 0; b < forces.size(); ++b) state.bodies[b].force = forces[b];
+          for (std::size_t b = 0; b < forces.size(); ++b) {
+            state.bodies[b].force = forces[b];
+            state.bodies[b].displacement = places[b];
+            state.bodies[b].velocity = {0.0, 0.0, 0.0};  // static
+          }
           write(state);
         });
         implicit_reports.push_back({stage.name, s});

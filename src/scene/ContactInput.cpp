@@ -140,8 +140,9 @@ void read_contact_input(Scene& s) {
   for (std::size_t i = 0; i < r["contacts"].size(); ++i)
     s.contacts.push_back(
         read_contact(s, r["contacts"][i], d["contacts"][i], "contacts[" + std::to_string(i) + "]"));
-  // Implicit stages: frictionless contact with fixed bodies (a moving or free body, and
-  // friction, need the time-dependent terms and their tangents, not built yet).
+  // Implicit stages: frictionless contact with fixed or prescribed bodies (a free body has no
+  // static equilibrium of its own here, and friction needs its path-dependent tangent: not
+  // built yet).
   std::size_t implicit = s.stages.size();
   for (std::size_t i = 0; i < s.stages.size() && implicit == s.stages.size(); ++i)
     if (s.stages[i].driver == "implicit") implicit = i;
@@ -158,11 +159,11 @@ void read_contact_input(Scene& s) {
                "expected driver: explicit, or no friction in " +
                path);
     for (const auto& b : s.rigid_bodies)
-      if (b.name == c.rigid_body && b.motion != "fixed")
+      if (b.name == c.rigid_body && b.motion == "free")
         fail(s, stage_at, stage_key,
-             "rigid body '" + b.name + "' of contact '" + c.name + "' has motion " + b.motion +
-                 ", but implicit stages take fixed bodies only (moving bodies are not built "
-                 "yet); expected driver: explicit, or motion: fixed");
+             "rigid body '" + b.name + "' of contact '" + c.name +
+                 "' is free, but implicit stages take fixed or prescribed bodies only; expected "
+                 "driver: explicit, or motion: fixed or prescribed");
   }
 }
 

@@ -10,6 +10,9 @@ usage: check_contact.py impact|punch|slide|stick HISTORY.csv
           (least-squares slope of momentum_x / M over t in [1, 2]) = g (sin - mu cos) within 1 %
   stick   tan(theta) = 0.2 < mu: drift of the bottom's mean displacement between t in [3, 3.5]
           and [3.5, 4] below 1e-6 of the block size; the plane carries the weight within 0.5 %
+  punch_implicit  prescribed punch on a block on rollers, implicit: force E* delta within 0.5 %
+          at every record (delta = 0.01 t), base reaction = contact force to 1e-8, the punch's
+          travel 0.01 t to 1e-12
 """
 import csv
 import math
@@ -60,6 +63,14 @@ elif kind == "punch":
     F, R = col("rb_punch_Fy"), col("R_base_y")
     check("|R_base_y - rb_punch_Fy| / max", np.abs(F - R).max() / np.abs(F).max(), 5e-3)
     check("energy balance", col("energy_balance_error").max(), 1e-4)
+elif kind == "punch_implicit":
+    e_star = 1000.0 / (1 - 0.3 ** 2)
+    F, R, u = col("rb_punch_Fy"), col("R_base_y"), col("rb_punch_uy")
+    late = t > 0
+    check("travel error", np.abs(u + 0.01 * t).max(), 1e-12)
+    check("force vs E* delta (relative)",
+          np.abs(F[late] / (e_star * 0.01 * t[late]) - 1).max(), 5e-3)
+    check("|R_base_y - rb_punch_Fy| / max", np.abs(F - R).max() / np.abs(F).max(), 1e-8)
 elif kind in ("slide", "stick"):
     tan, mu, g, M = (0.5 if kind == "slide" else 0.2), 0.3, 1.0, 0.5
     th = math.atan(tan)
