@@ -77,7 +77,8 @@ DT_UPDATE_INTERVAL = 50
 OUTPUT_INTERVAL = 0.004
 
 
-def write_scene(path, mesh, impact, dilation, dt_scale, dt_update, penalty, supports="generalized"):
+def write_scene(path, mesh, impact, dilation, dt_scale, dt_update, penalty, supports="generalized",
+                failure_strain=None):
     template = string.Template(open(os.path.join(HERE, "taylor.yaml")).read())
     method = "" if supports == "generalized" else ", method: " + supports
     if impact == "wall":
@@ -95,7 +96,8 @@ def write_scene(path, mesh, impact, dilation, dt_scale, dt_update, penalty, supp
         method=method, v0=repr(-V0), walls=walls, clamp_condition=clamp_condition, clamp_initial=clamp_initial,
         end_time=repr(END_TIME), output_interval=repr(OUTPUT_INTERVAL), dt_scale=repr(dt_scale),
         dt_update="" if dt_update is None else "\n    dt_update_interval: %d" % dt_update,
-        history=os.path.splitext(os.path.basename(path))[0] + ".csv")
+        history=os.path.splitext(os.path.basename(path))[0] + ".csv",
+        failure="" if failure_strain is None else "\n    failure_strain: %r" % failure_strain)
     with open(path, "w") as f:
         f.write(text)
 
@@ -129,14 +131,16 @@ def parse_log(path):
 
 
 def run_one(args, efg, prefix, nr, nz):
-    tag = "taylor_%dx%d_%s_%s" % (nr, nz, args.impact, args.supports)
+    tag = "taylor_%dx%d_%s_%s%s" % (nr, nz, args.impact, args.supports,
+                                    "" if args.failure_strain is None
+                                    else "_erode%g" % args.failure_strain)
     mesh = os.path.join(args.outdir, tag + ".e")
     x, y, z, conn, ns = make_mesh.rod(R0, L0, nr, nz)
     make_mesh.write_exodus(mesh, "Taylor bar quarter cylinder %dx%d" % (nr, nz), [x, y, z], conn,
                            "HEX8", ns, block_name="rod")
     scene = os.path.join(args.outdir, tag + ".yaml")
     write_scene(scene, mesh, args.impact, args.dilation, args.dt_scale, args.dt_update_interval,
-                args.penalty, args.supports)
+                args.penalty, args.supports, args.failure_strain)
     outdir = os.path.join(args.outdir, tag + "_out")
     results = os.path.join(outdir, tag + ".e")
     history = os.path.join(outdir, tag + ".csv")
@@ -193,6 +197,8 @@ def main():
     ap.add_argument("--dt-scale", type=float, default=DT_SCALE)
     ap.add_argument("--dt-update-interval", type=int, default=DT_UPDATE_INTERVAL)
     ap.add_argument("--penalty", type=float, default=None)
+    ap.add_argument("--failure-strain", type=float, default=None,
+                    help="erosion: failure_strain of the copper (effective plastic strain)")
     ap.add_argument("--supports", choices=["generalized", "nitsche"], default="generalized",
                     help="symmetry (and clamp) conditions: generalized-dof prescription "
                     "(method transformation) or weak Nitsche supports")
@@ -239,10 +245,13 @@ def main():
             continue
         if abs(r["t_last"] - END_TIME) > 1e-9:
             failures.append("%s: last record at t = %g, not %g" % (name, r["t_last"], END_TIME))
-        if not abs(le) <= LENGTH_TOL:
+        # With erosion the failed material carries no stress and no published value applies:
+        # the run must complete without an inverted point and keep its energy balance only.
+        eroding = args.failure_strain is not None
+        if not eroding and not abs(le) <= LENGTH_TOL:
             failures.append("%s: L_f = %.3f vs %.3f (%+.2f %%, tolerance %.0f %%)"
                             % (name, r["L_f"], l_ref, 100 * le, 100 * LENGTH_TOL))
-        if not abs(re_) <= RADIUS_TOL:
+        if not eroding and not abs(re_) <= RADIUS_TOL:
             failures.append("%s: r_f = %.3f vs %.3f (%+.2f %%, tolerance %.0f %%)"
                             % (name, r["r_f"], r_ref, 100 * re_, 100 * RADIUS_TOL))
         if "energy_error" not in r:
