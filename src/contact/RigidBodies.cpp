@@ -44,15 +44,15 @@ contact::Shape shape_of(const RigidBodySpec& b, int dim) {
 
 RigidBodies::RigidBodies(const Scene& scene, int dim) : scene_(scene), dim_(dim) {
   for (const auto& b : scene.rigid_bodies)
-    bodies_.push_back(
-        {b.name, b.motion, b.curve, b.velocity, shape_of(b, dim), rigid_body_mass(b, dim)});
+    bodies_.push_back({b.name, b.motion, b.curve, b.velocity, b.gravity, shape_of(b, dim),
+                       rigid_body_mass(b, dim)});
   scene_count_ = bodies_.size();
   for (const auto& w : scene.rigid_walls) {
     RigidBodySpec plane;
     plane.shape = "plane";
     plane.point = w.point;
     plane.normal = w.normal;
-    bodies_.push_back({"wall " + w.name, "fixed", "", {}, shape_of(plane, dim), 0.0});
+    bodies_.push_back({"wall " + w.name, "fixed", "", {}, {}, shape_of(plane, dim), 0.0});
   }
 }
 
@@ -76,7 +76,7 @@ void RigidBodies::move(std::vector<RigidBodyState>& states, double time, double 
     auto& s = states[b];
     if (spec.motion == "free") {
       for (int k = 0; k < dim_; ++k) {
-        s.velocity[k] += 0.5 * dt * s.force[k] / bodies_[b].mass;
+        s.velocity[k] += 0.5 * dt * (s.force[k] / bodies_[b].mass + gravity(b, k));
         s.displacement[k] += dt * s.velocity[k];
       }
     } else if (spec.motion == "prescribed") {
@@ -92,7 +92,7 @@ void RigidBodies::finish(std::vector<RigidBodyState>& states, double dt) const {
   for (std::size_t b = 0; b < bodies_.size(); ++b)
     if (bodies_[b].motion == "free")
       for (int k = 0; k < dim_; ++k)
-        states[b].velocity[k] += 0.5 * dt * states[b].force[k] / bodies_[b].mass;
+        states[b].velocity[k] += 0.5 * dt * (states[b].force[k] / bodies_[b].mass + gravity(b, k));
 }
 
 std::array<double, 3> RigidBodies::prescribed_travel(std::size_t b, double t0, double t1) const {
@@ -103,6 +103,17 @@ std::array<double, 3> RigidBodies::prescribed_travel(std::size_t b, double t0, d
   const double integral = c ? curve_integral(*c, t0, t1) : t1 - t0;
   for (std::size_t k = 0; k < body.velocity.size(); ++k) u[k] = body.velocity[k] * integral;
   return u;
+}
+
+double RigidBodies::gravity_work(const std::vector<RigidBodyState>& before,
+                                 const std::vector<RigidBodyState>& after) const {
+  double work = 0;
+  for (std::size_t b = 0; b < bodies_.size(); ++b)
+    if (is_free(b))
+      for (int k = 0; k < dim_; ++k)
+        work += bodies_[b].mass * gravity(b, k) *
+                (after[b].displacement[k] - before[b].displacement[k]);
+  return work;
 }
 
 double RigidBodies::kinetic_energy(const std::vector<RigidBodyState>& states) const {

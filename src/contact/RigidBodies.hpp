@@ -1,7 +1,8 @@
 // The scene's rigid bodies: shapes, masses and motions, and their time integration in an
 // explicit stage, in the same velocity-Verlet form as the particles (drivers/ExplicitDriver):
-//   free:       v^(n+1/2) = v^n + dt/2 F^n / M,  u^(n+1) = u^n + dt v^(n+1/2),
-//               v^(n+1) = v^(n+1/2) + dt/2 F^(n+1) / M   (F: the contact force on the body)
+//   free:       v^(n+1/2) = v^n + dt/2 (F^n / M + g),  u^(n+1) = u^n + dt v^(n+1/2),
+//               v^(n+1) = v^(n+1/2) + dt/2 (F^(n+1) / M + g)   (F: the contact force on the
+//               body, g its gravity)
 //   prescribed: u^(n+1) = u^n + dt v_bar c(t + dt/2),  v^(n+1) = v_bar c(t + dt)
 //   fixed:      never moves.
 // Translation only: a body does not rotate (its friction moment is not integrated yet).
@@ -45,16 +46,23 @@ class RigidBodies {
   /// Kinetic energy of the free bodies (prescribed motions are driven from outside: their
   /// energy is the work they do on the particles).
   double kinetic_energy(const std::vector<RigidBodyState>& states) const;
+  /// Work of the free bodies' gravity from the `before` states to `after` (external work).
+  double gravity_work(const std::vector<RigidBodyState>& before,
+                      const std::vector<RigidBodyState>& after) const;
   /// Momentum of the free bodies, per direction.
   std::array<double, 3> momentum(const std::vector<RigidBodyState>& states) const;
 
  private:
   struct Body {
     std::string name, motion, curve;
-    std::vector<double> velocity;
+    std::vector<double> velocity, gravity;
     contact::Shape shape;
     double mass;
   };
+  double gravity(std::size_t b, int k) const {
+    const auto& g = bodies_[b].gravity;
+    return static_cast<std::size_t>(k) < g.size() ? g[static_cast<std::size_t>(k)] : 0.0;
+  }
   const Scene& scene_;
   int dim_;
   std::vector<Body> bodies_;

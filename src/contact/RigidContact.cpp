@@ -21,14 +21,15 @@ void RigidContact::add_forces(const Vector& d_overlap, double dt, Vector& f_over
   contact_.add_forces(d_overlap, dt, states_, f_overlap);
 }
 
-double RigidContact::finish(double dt) {
+RigidContact::Work RigidContact::finish(double dt) {
   bodies_.finish(states_, dt);
-  double work = 0;
+  Work work;
   for (std::size_t b = 0; b < bodies_.count(); ++b)
     if (bodies_.is_free(b))
       for (std::size_t k = 0; k < 3; ++k)
-        work += 0.5 * (previous_[b].force[k] + states_[b].force[k]) *
-                (states_[b].displacement[k] - previous_[b].displacement[k]);
+        work.contact += 0.5 * (previous_[b].force[k] + states_[b].force[k]) *
+                        (states_[b].displacement[k] - previous_[b].displacement[k]);
+  work.gravity = bodies_.gravity_work(previous_, states_);
   return work;
 }
 

@@ -26,9 +26,13 @@ class RigidContact {
   void move(double time, double dt);
   /// Contact forces at d into f_overlap (the bodies' forces are kept). Collective.
   void add_forces(const Vector& d_overlap, double dt, Vector& f_overlap);
-  /// Second half of a step: the free bodies' velocities; returns the work of the contact forces
-  /// on the free bodies over the step (trapezoidal, as the particles' wall work).
-  double finish(double dt);
+  /// Second half of a step: the free bodies' velocities. The work over the step on the free
+  /// bodies: of the contact forces (trapezoidal, as the particles' wall work) and of gravity
+  /// (external work).
+  struct Work {
+    double contact = 0, gravity = 0;
+  };
+  Work finish(double dt);
   /// The step is accepted (friction reference, previous state for a later failure).
   void commit();
   /// Back to the state before the last move (a failed step).

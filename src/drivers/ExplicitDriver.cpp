@@ -265,7 +265,11 @@ void ExplicitDriver::advance(RunState& state, double step_dt, long long step,
   }
   Tpetra::deep_copy(state.v, v_half_);
   state.v.update(0.5 * step_dt, state.a, 1.0);
-  if (contact_) state.wall_work += contact_->finish(step_dt);
+  if (contact_) {
+    const auto work = contact_->finish(step_dt);
+    state.wall_work += work.contact;
+    state.external_work += work.gravity;
+  }
   support_forces(state.a);
   motion_.constrain_end(at_end, v_half_, state.v, state.a);
   state.time += step_dt;

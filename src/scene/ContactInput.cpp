@@ -37,6 +37,7 @@ RigidBodySpec read_body(const Scene& s, const YAML::Node& r, const YAML::Node& d
   b.velocity = reals(r["velocity"]);
   b.curve = r["curve"] ? r["curve"].as<std::string>() : "";
   b.thickness = r["thickness"].as<double>();
+  b.gravity = reals(r["gravity"]);
   if (b.shape == "plane") {
     double n2 = 0;
     for (double v : b.normal) n2 += v * v;
@@ -66,6 +67,9 @@ RigidBodySpec read_body(const Scene& s, const YAML::Node& r, const YAML::Node& d
          "curve scales a prescribed velocity; motion is " + b.motion);
   if (!b.curve.empty() && !s.find_curve(b.curve))
     fail(s, d["curve"], path + ".curve", "no curve named '" + b.curve + "' in curves");
+  if (!b.gravity.empty() && b.motion != "free")
+    fail(s, d["gravity"], path + ".gravity",
+         "gravity moves free bodies only; motion is " + b.motion + "; expected motion: free");
   if (b.motion == "fixed" && !b.velocity.empty())
     fail(s, d["velocity"], path + ".velocity",
          "a fixed body has no velocity; expected motion prescribed or free");

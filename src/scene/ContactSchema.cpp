@@ -28,6 +28,11 @@ SpecPtr rigid_body_spec() {
                                 "density x pi r^2 x thickness).",
                                 "mass/length^3")
                                .above(0))
+      .optional("gravity",
+                real_list("Free bodies: body force per unit mass (e.g. [0, -9.81]); its work is "
+                          "external work.",
+                          "length/time^2")
+                    .items(2, 3))
       .optional(
           "thickness",
           real("2D only: out-of-plane length of the body, for its mass from density.", "length")

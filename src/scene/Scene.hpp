@@ -104,6 +104,7 @@ struct RigidBodySpec {
   double mass = 0;                    ///< given (0: none)
   double density = 0;                 ///< given (0: none): mass = density x volume
   double thickness = 1;               ///< 2D: out-of-plane length of the body (its mass)
+  std::vector<double> gravity;        ///< free bodies: a body load per unit mass (empty: none)
 };
 
 /// Penalty contact of the surface particles of deformable parts with a rigid body.
@@ -113,7 +114,7 @@ struct ContactSpec {
   std::vector<std::string> parts;
   double penalty = 0.1;  ///< normal stiffness k = penalty x m / dt^2 per particle
   double static_friction = 0, dynamic_friction = 0, decay = 0;
-  double damping = 0;  ///< normal viscous damping, fraction of critical per particle
+  double damping = 0;             ///< normal viscous damping, fraction of critical per particle
   double implicit_penalty = 100;  ///< implicit stages: beta = implicit_penalty x E / h
 };
 

@@ -10,6 +10,8 @@ usage: check_contact.py impact|punch|slide|stick HISTORY.csv
           (least-squares slope of momentum_x / M over t in [1, 2]) = g (sin - mu cos) within 1 %
   stick   tan(theta) = 0.2 < mu: drift of the bottom's mean displacement between t in [3, 3.5]
           and [3.5, 4] below 1e-6 of the block size; the plane carries the weight within 0.5 %
+  rest    free rigid box (weight 5) settled on a clamped block: over t in [3, 4] contact force
+          on the box and base reaction = weight within 0.5 %, box speed < 1e-4, balance < 1 %
   punch_implicit  prescribed punch on a block on rollers, implicit: force E* delta within 0.5 %
           at every record (delta = 0.01 t), base reaction = contact force to 1e-8, the punch's
           travel 0.01 t to 1e-12
@@ -63,6 +65,15 @@ elif kind == "punch":
     F, R = col("rb_punch_Fy"), col("R_base_y")
     check("|R_base_y - rb_punch_Fy| / max", np.abs(F - R).max() / np.abs(F).max(), 5e-3)
     check("energy balance", col("energy_balance_error").max(), 1e-4)
+elif kind == "rest":
+    late = t >= 3.0
+    weight = 0.5 * 10.0
+    check("contact force on the box vs weight (relative)",
+          np.abs(col("rb_box_Fy")[late] / weight - 1).max(), 5e-3)
+    check("base reaction vs weight (relative)", np.abs(col("R_base_y")[late] / weight - 1).max(),
+          5e-3)
+    check("box speed", np.abs(col("rb_box_vy")[late]).max(), 1e-4)
+    check("energy balance", col("energy_balance_error").max(), 1e-2)
 elif kind == "punch_implicit":
     e_star = 1000.0 / (1 - 0.3 ** 2)
     F, R, u = col("rb_punch_Fy"), col("R_base_y"), col("rb_punch_uy")
