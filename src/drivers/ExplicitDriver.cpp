@@ -155,6 +155,14 @@ ExplicitDriver::StepPlan ExplicitDriver::plan_steps(const Vector& d, double star
   o << "stage '" << stage_.name << "': stable time step " << plan.dt_crit << " (largest frequency "
     << stable_.largest_frequency() << " rad/time), dt = " << plan.dt;
   Log::info(o.str());
+  // Honest about the default's error: generalized values are not the physical ones.
+  for (const auto& bc : ops_.model().scene.boundary_conditions)
+    if (bc.type == "displacement" && bc.method == "transformation")
+      Log::info("stage '" + stage_.name + "': displacement condition '" + bc.name +
+                "' (method transformation) prescribes the particles' generalized values here: "
+                "stresses next to it are approximate (2-25 %, docs/boundary_conditions.md, "
+                "\"Explicit stages\"); method nitsche enforces it exactly at a smaller stable "
+                "step");
   if (fixed && fixed_dt > plan.dt_crit && !stage_.settings["allow_unstable_dt"].as<bool>())
     throw NumericalError("stage '" + stage_.name + "': dt = " + std::to_string(fixed_dt) +
                          " exceeds the stable time step " + std::to_string(plan.dt_crit) +
