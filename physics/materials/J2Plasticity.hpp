@@ -54,6 +54,14 @@ struct J2Parameters {
   double failure_strain = 0.0;
 };
 
+/// The law without yield (infinite yield stress, no hardening points): j2_update then returns
+/// the elastic predictor from the committed state (the explicit stable-step probes).
+EFG_PHYSICS_FUNCTION J2Parameters without_yield(J2Parameters p) {
+  p.yield_stress = 1e300;
+  p.curve_points = 0;
+  return p;
+}
+
 /// The state of j2_update at one point: `count` doubles.
 namespace j2_state {
 constexpr int count = 11;

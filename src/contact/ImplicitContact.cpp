@@ -16,7 +16,6 @@ ImplicitContact::ImplicitContact(const ModelOperators& ops)
       comm_(ops.model().maps.owned_dofs->getComm()) {
   const auto& model = ops.model();
   const auto& mesh = model.mesh;
-  const auto udim = static_cast<std::size_t>(dim_);
   for (const auto& spec : model.scene.contacts) {
     Pair pair;
     for (std::size_t b = 0; b < bodies_.count(); ++b)
@@ -41,17 +40,9 @@ ImplicitContact::ImplicitContact(const ModelOperators& ops)
       }
       for (std::size_t j = 0; j < part.cloud.owned_count; ++j) {
         const auto node = static_cast<std::size_t>(part.cloud.mesh_node[j]);
-        if (!(area[node] > 0)) continue;
-        Candidate c;
-        for (std::size_t k = 0; k < udim; ++k) c.X[k] = part.cloud.x(j)[k];
-        c.stiffness = spec.implicit_penalty * E / size[node] * area[node];
-        for (auto k = part.particle_values.offsets[j]; k < part.particle_values.offsets[j + 1];
-             ++k) {
-          c.nodes.push_back(ops.solid().overlap_node(
-              p)[static_cast<std::size_t>(part.particle_values.particles[k])]);
-          c.phi.push_back(part.particle_values.values[k]);
-        }
-        pair.candidates.push_back(std::move(c));
+        if (!(area[node] > 0)) continue;  // not on the part's surface
+        pair.candidates.push_back(
+            {particle_row(ops, p, j), spec.implicit_penalty * E / size[node] * area[node]});
       }
     }
     pairs_.push_back(std::move(pair));
@@ -76,92 +67,75 @@ void ImplicitContact::set_time(double t) {
 
 void ImplicitContact::add_couplings(CouplingGraph& graph) const {
   for (const auto& pair : pairs_)
-    for (const auto& c : pair.candidates) graph.add_clique(c.nodes.data(), c.nodes.size());
+    for (const auto& c : pair.candidates) graph.add_clique(c.row.nodes.data(), c.row.nodes.size());
 }
 
+template <class View>
 ImplicitContact::Touch ImplicitContact::touch(const Pair& p, const Candidate& c,
-                                              const Vector& d_overlap) const {
-  const auto udim = static_cast<std::size_t>(dim_);
-  const auto d = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
-  double x[3] = {c.X[0], c.X[1], c.X[2]};
-  for (std::size_t a = 0; a < c.nodes.size(); ++a)
-    for (std::size_t k = 0; k < udim; ++k)
-      x[k] += c.phi[a] * d(static_cast<std::size_t>(c.nodes[a]) * udim + k, 0);
+                                              const View& d) const {
+  const auto x = c.row.position(d, static_cast<std::size_t>(dim_));
   const auto& shape = bodies_.shape(p.body);
   const double zero[3] = {0, 0, 0};
   const double* u_body = displacement_.empty() ? zero : displacement_[p.body].data();
-  const auto near = contact::proximity(shape, x, u_body);
+  const auto near = contact::proximity(shape, x.data(), u_body);
   Touch t;
   t.gap = near.gap;
   for (int i = 0; i < 3; ++i) t.normal[i] = near.normal[i];
-  using Kind = contact::Shape::Kind;
-  const bool round = shape.kind == Kind::sphere || (shape.kind == Kind::cylinder && dim_ == 2);
-  if (round) {
-    const double rho = shape.radius + near.gap;  // distance from the center
-    if (rho > 0)
-      for (int i = 0; i < dim_; ++i)
-        for (int j = 0; j < dim_; ++j)
-          t.dn[i][j] = ((i == j ? 1.0 : 0.0) - near.normal[i] * near.normal[j]) / rho;
-  } else if (shape.kind == Kind::cylinder) {  // 3D: the axis direction does not turn n
-    const double rho = shape.radius + near.gap;
-    if (rho > 0)
-      for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j)
-          t.dn[i][j] = ((i == j ? 1.0 : 0.0) - near.normal[i] * near.normal[j] -
-                        shape.axis[i] * shape.axis[j]) /
-                       rho;
-  }
+  contact::normal_derivative(shape, near, t.dn);
   return t;
 }
 
 void ImplicitContact::add_residual(const Vector& d_overlap, Vector& r_overlap) const {
   const auto udim = static_cast<std::size_t>(dim_);
+  const auto d = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
   auto r = r_overlap.getLocalViewHost(Tpetra::Access::ReadWrite);
   for (const auto& pair : pairs_)
     for (const auto& c : pair.candidates) {
-      const auto t = touch(pair, c, d_overlap);
+      const auto t = touch(pair, c, d);
       if (!(t.gap < 0)) continue;
-      for (std::size_t a = 0; a < c.nodes.size(); ++a)
-        for (std::size_t i = 0; i < udim; ++i)  // r -= phi F, F = k (-g) n
-          r(static_cast<std::size_t>(c.nodes[a]) * udim + i, 0) +=
-              c.phi[a] * c.stiffness * t.gap * t.normal[i];
+      double minus_F[3];  // r -= phi F, F = k (-g) n
+      for (std::size_t i = 0; i < 3; ++i) minus_F[i] = c.stiffness * t.gap * t.normal[i];
+      c.row.spread(minus_F, udim, r);
     }
 }
 
 void ImplicitContact::add_tangent(const Vector& d_overlap, FEMatrix& K) const {
   const auto udim = static_cast<std::size_t>(dim_);
+  const auto d = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
   for (const auto& pair : pairs_)
     for (const auto& c : pair.candidates) {
-      const auto t = touch(pair, c, d_overlap);
+      const auto t = touch(pair, c, d);
       if (!(t.gap < 0)) continue;
       // d(k g n_i)/dx_j = k (n_i n_j + g dn_ij/dx_j); x_J = X_J + sum_K phi_K d_K.
       double B[3][3];
       for (std::size_t i = 0; i < udim; ++i)
         for (std::size_t j = 0; j < udim; ++j)
           B[i][j] = c.stiffness * (t.normal[i] * t.normal[j] + t.gap * t.dn[i][j]);
-      const std::size_t n = c.nodes.size();
+      const auto& nodes = c.row.nodes;
+      const auto& phi = c.row.phi;
+      const std::size_t n = nodes.size();
       std::vector<int> cols(n * udim);
       std::vector<double> vals(n * udim);
       for (std::size_t b = 0; b < n; ++b)
         for (std::size_t j = 0; j < udim; ++j)
-          cols[b * udim + j] = c.nodes[b] * dim_ + static_cast<int>(j);
+          cols[b * udim + j] = nodes[b] * dim_ + static_cast<int>(j);
       for (std::size_t a = 0; a < n; ++a)
         for (std::size_t i = 0; i < udim; ++i) {
           for (std::size_t b = 0; b < n; ++b)
-            for (std::size_t j = 0; j < udim; ++j)
-              vals[b * udim + j] = c.phi[a] * c.phi[b] * B[i][j];
-          K.sumIntoLocalValues(c.nodes[a] * dim_ + static_cast<int>(i),
-                               static_cast<int>(cols.size()), vals.data(), cols.data());
+            for (std::size_t j = 0; j < udim; ++j) vals[b * udim + j] = phi[a] * phi[b] * B[i][j];
+          K.sumIntoLocalValues(nodes[a] * dim_ + static_cast<int>(i), static_cast<int>(cols.size()),
+                               vals.data(), cols.data());
         }
     }
 }
 
 std::vector<std::array<double, 3>> ImplicitContact::body_forces(const Vector& d_overlap) const {
   const std::size_t nb = bodies_.count();
+  const auto d = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
   std::vector<double> local(3 * nb, 0.0), total(3 * nb, 0.0);
   for (const auto& pair : pairs_)
     for (const auto& c : pair.candidates) {
-      const auto t = touch(pair, c, d_overlap);
+      const auto t = touch(pair, c, d);
       if (!(t.gap < 0)) continue;
       for (std::size_t i = 0; i < 3; ++i)
         local[3 * pair.body + i] += c.stiffness * t.gap * t.normal[i];

@@ -17,6 +17,7 @@
 #include <array>
 #include <vector>
 
+#include "contact/ParticleRow.hpp"
 #include "contact/RigidBodies.hpp"
 #include "operators/CouplingGraph.hpp"
 #include "operators/ModelOperators.hpp"
@@ -43,10 +44,8 @@ class ImplicitContact {
 
  private:
   struct Candidate {
-    std::array<double, 3> X{};
+    ParticleRow row;
     double stiffness = 0;  ///< beta_J A_J
-    std::vector<int> nodes;
-    std::vector<double> phi;
   };
   struct Pair {
     std::size_t body;
@@ -56,7 +55,8 @@ class ImplicitContact {
   struct Touch {
     double gap = 0, normal[3] = {0, 0, 0}, dn[3][3] = {};
   };
-  Touch touch(const Pair& p, const Candidate& c, const Vector& d_overlap) const;
+  template <class View>
+  Touch touch(const Pair& p, const Candidate& c, const View& d) const;
 
   int dim_;
   RigidBodies bodies_;

@@ -6,8 +6,8 @@
 #include <cmath>
 #include <sstream>
 
+#include "contact/CoulombFriction.hpp"
 #include "core/Errors.hpp"
-#include "discretization/SmoothingFacets.hpp"
 
 namespace efg {
 
@@ -23,22 +23,14 @@ PenaltyContact::PenaltyContact(const ModelOperators& ops, const Vector& mass_own
       bodies_(bodies),
       comm_(ops.model().maps.owned_dofs->getComm()) {
   const auto& model = ops.model();
-  const auto& mesh = model.mesh;
-  const auto udim = static_cast<std::size_t>(dim_);
   const auto mass = mass_owned.getLocalViewHost(Tpetra::Access::ReadOnly);
   // Candidate: owned particle j of part p, with its mass and shape-function row.
   auto candidate = [&](std::size_t p, std::size_t j) {
-    const auto& part = model.parts[p];
     Candidate c;
-    for (std::size_t k = 0; k < udim; ++k) c.X[k] = part.cloud.x(j)[k];
+    c.row = particle_row(ops, p, j);
     c.mass = mass(static_cast<std::size_t>(model.maps.owned_dofs->getLocalElement(
-                      static_cast<GlobalOrdinal>(part.cloud.mesh_node[j]) * dim_)),
+                      static_cast<GlobalOrdinal>(model.parts[p].cloud.mesh_node[j]) * dim_)),
                   0);
-    for (auto k = part.particle_values.offsets[j]; k < part.particle_values.offsets[j + 1]; ++k) {
-      c.nodes.push_back(
-          ops.solid().overlap_node(p)[static_cast<std::size_t>(part.particle_values.particles[k])]);
-      c.phi.push_back(part.particle_values.values[k]);
-    }
     return c;
   };
   for (const auto& spec : model.scene.contacts) {
@@ -46,19 +38,13 @@ PenaltyContact::PenaltyContact(const ModelOperators& ops, const Vector& mass_own
     for (std::size_t b = 0; b < bodies.scene_count(); ++b)
       if (bodies.name(b) == spec.rigid_body) pair.body = b;
     pair.penalty = spec.penalty;
-    pair.mu_s = spec.static_friction;
-    pair.mu_d = spec.dynamic_friction;
-    pair.decay = spec.decay;
+    pair.friction = {spec.static_friction, spec.dynamic_friction, spec.decay};
     pair.damping = spec.damping;
     for (std::size_t p = 0; p < model.parts.size(); ++p) {
       const auto& part = model.parts[p];
       if (std::find(spec.parts.begin(), spec.parts.end(), part.part->name) == spec.parts.end())
         continue;
-      // Surface particles: the nodes of the part's boundary sides.
-      std::vector<char> on_surface(mesh.node_count(), 0);
-      for (const auto& [cell, side] : boundary_sides(mesh, part.part->blocks))
-        for (auto n : mesh.side_node_indices(cell, side))
-          on_surface[static_cast<std::size_t>(n)] = 1;
+      const auto on_surface = surface_nodes(model, p);
       for (std::size_t j = 0; j < part.cloud.owned_count; ++j)
         if (on_surface[static_cast<std::size_t>(part.cloud.mesh_node[j])])
           pair.candidates.push_back(candidate(p, j));
@@ -72,10 +58,9 @@ PenaltyContact::PenaltyContact(const ModelOperators& ops, const Vector& mass_own
     Pair pair;
     pair.body = bodies.wall(w);
     pair.penalty = spec.penalty;
-    pair.wall = true;
-    std::vector<char> in_set(mesh.node_count(), spec.node_set.empty() ? 1 : 0);
+    std::vector<char> in_set(model.mesh.node_count(), spec.node_set.empty() ? 1 : 0);
     if (!spec.node_set.empty())
-      for (auto n : mesh.find_node_set(spec.node_set)->nodes)
+      for (auto n : model.mesh.find_node_set(spec.node_set)->nodes)
         in_set[static_cast<std::size_t>(n)] = 1;
     for (std::size_t p = 0; p < model.parts.size(); ++p)
       for (std::size_t j = 0; j < model.parts[p].cloud.owned_count; ++j)
@@ -85,21 +70,13 @@ PenaltyContact::PenaltyContact(const ModelOperators& ops, const Vector& mass_own
   }
 }
 
-std::array<double, 3> PenaltyContact::position(const Candidate& c, const Vector& d_overlap) const {
-  const auto udim = static_cast<std::size_t>(dim_);
-  const auto d = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
-  std::array<double, 3> x = c.X;
-  for (std::size_t a = 0; a < c.nodes.size(); ++a)
-    for (std::size_t k = 0; k < udim; ++k)
-      x[k] += c.phi[a] * d(static_cast<std::size_t>(c.nodes[a]) * udim + k, 0);
-  return x;
-}
-
 void PenaltyContact::start(const Vector& d_overlap, const std::vector<RigidBodyState>& bodies) {
+  const auto d = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
+  const auto udim = static_cast<std::size_t>(dim_);
   for (auto& pair : pairs_) {
     pair.body_u_old = bodies[pair.body].displacement;
     for (auto& c : pair.candidates) {
-      c.x_old = c.x_new = position(c, d_overlap);
+      c.x_old = c.x_new = c.row.position(d, udim);
       c.ft_old = c.ft_new = {0.0, 0.0, 0.0};
     }
   }
@@ -108,8 +85,8 @@ void PenaltyContact::start(const Vector& d_overlap, const std::vector<RigidBodyS
 void PenaltyContact::add_forces(const Vector& d_overlap, double dt,
                                 std::vector<RigidBodyState>& bodies, Vector& f_overlap) {
   const auto udim = static_cast<std::size_t>(dim_);
+  const auto d = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
   auto f = f_overlap.getLocalViewHost(Tpetra::Access::ReadWrite);
-  // Per body: the force on it (dim) and the mass of its touching particles x penalty.
   // Per body: the force on it (3), penalty x the mass of its touching particles, and the total
   // normal force (the rigid walls' history column).
   const std::size_t nb = bodies_.count();
@@ -118,8 +95,9 @@ void PenaltyContact::add_forces(const Vector& d_overlap, double dt,
     const auto& shape = bodies_.shape(pair.body);
     const auto& u_body = bodies[pair.body].displacement;
     const double k_per_mass = pair.penalty / (dt * dt);
+    const bool friction = pair.friction.mu_s > 0 || pair.friction.mu_d > 0;
     for (auto& c : pair.candidates) {
-      c.x_new = position(c, d_overlap);
+      c.x_new = c.row.position(d, udim);
       const auto near = contact::proximity(shape, c.x_new.data(), u_body.data());
       c.active = near.gap < 0;
       if (!c.active) {
@@ -127,42 +105,23 @@ void PenaltyContact::add_forces(const Vector& d_overlap, double dt,
         continue;
       }
       const double k = k_per_mass * c.mass;
-      double v_n = 0;  // approach speed along the normal, relative to the body, over the step
-      for (std::size_t i = 0; i < udim; ++i)
-        v_n += ((c.x_new[i] - c.x_old[i]) - (u_body[i] - pair.body_u_old[i])) * near.normal[i];
-      v_n /= dt;
+      // The particle's motion relative to the body over the step: its normal part is the
+      // approach (damping), its tangential part the slip (friction).
+      double s[3] = {0, 0, 0}, v_n = 0;
+      for (std::size_t i = 0; i < udim; ++i) {
+        s[i] = (c.x_new[i] - c.x_old[i]) - (u_body[i] - pair.body_u_old[i]);
+        v_n += s[i] * near.normal[i] / dt;
+      }
       const double fn =
           std::max(0.0, -k * near.gap - 2.0 * pair.damping * std::sqrt(k * c.mass) * v_n);
-      std::array<double, 3> F{};
+      double F[3] = {0, 0, 0};
       for (std::size_t i = 0; i < udim; ++i) F[i] = fn * near.normal[i];
-      if (pair.mu_s > 0 || pair.mu_d > 0) {
-        // Tangential slip increment relative to the body, and the old tangential force turned
-        // into the new tangent plane.
-        double s[3] = {0, 0, 0}, s_n = 0, ft_n = 0;
-        for (std::size_t i = 0; i < udim; ++i) {
-          s[i] = (c.x_new[i] - c.x_old[i]) - (u_body[i] - pair.body_u_old[i]);
-          s_n += s[i] * near.normal[i];
-          ft_n += c.ft_old[i] * near.normal[i];
-        }
-        double ft[3] = {0, 0, 0}, ft2 = 0, slip2 = 0;
-        for (std::size_t i = 0; i < udim; ++i) {
-          const double st = s[i] - s_n * near.normal[i];
-          slip2 += st * st;
-          ft[i] = c.ft_old[i] - ft_n * near.normal[i] - k * st;
-          ft2 += ft[i] * ft[i];
-        }
-        const double mu =
-            pair.mu_d + (pair.mu_s - pair.mu_d) * std::exp(-pair.decay * std::sqrt(slip2) / dt);
-        const double limit = mu * fn, size = std::sqrt(ft2);
-        const double scale = size > limit ? limit / size : 1.0;
-        for (std::size_t i = 0; i < udim; ++i) {
-          c.ft_new[i] = ft[i] * scale;
-          F[i] += c.ft_new[i];
-        }
+      if (friction) {
+        contact::coulomb_return(pair.friction, c.ft_old.data(), s, near.normal, k, fn, dt, dim_,
+                                c.ft_new.data());
+        for (std::size_t i = 0; i < udim; ++i) F[i] += c.ft_new[i];
       }
-      for (std::size_t a = 0; a < c.nodes.size(); ++a)
-        for (std::size_t i = 0; i < udim; ++i)
-          f(static_cast<std::size_t>(c.nodes[a]) * udim + i, 0) += c.phi[a] * F[i];
+      c.row.spread(F, udim, f);
       for (std::size_t i = 0; i < udim; ++i) local[5 * pair.body + i] -= F[i];
       local[5 * pair.body + 3] += pair.penalty * c.mass;
       local[5 * pair.body + 4] += fn;

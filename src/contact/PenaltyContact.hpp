@@ -8,12 +8,10 @@
 //                   mass; stable for penalty <= 1 as the rigid walls, reducing the stable step by
 //                   sqrt(1 - penalty / 4)), c = 2 damping sqrt(k m_J) a viscous damping on the
 //                   normal approach speed v_n over the last step (never pulling);
-//   friction        elastic-slip (regularized stick) return map on the tangential force:
-//                   F_t* = P_t F_t^old - k s_t (s_t the tangential slip increment of the particle
-//                   relative to the body over the step), F_t = F_t* min(1, mu |F_n| / |F_t*|),
-//                   mu = mu_d + (mu_s - mu_d) exp(-decay |s_t| / dt) (LS-DYNA's decay form).
-// The force F = F_n + F_t acts on the particle as f_I += phi_I(X_J) F (work-consistent with the
-// shape functions; sum_I phi_I = 1, so the particles receive exactly F) and -F on the body: the
+//   friction        the elastic-slip return map of contact/CoulombFriction.hpp on the slip
+//                   increment of the particle relative to the body over the step.
+// The force F = F_n + F_t acts on the particle through its shape-function row (ParticleRow)
+// and -F on the body: the
 // momentum of particles plus free bodies is conserved to round-off. The friction state is
 // committed when the step is accepted. Search: with analytic bodies, every candidate is tested
 // each step, O(1) per particle (contact between deformable parts will need bins).
@@ -23,6 +21,8 @@
 #include <string>
 #include <vector>
 
+#include "contact/CoulombFriction.hpp"
+#include "contact/ParticleRow.hpp"
 #include "contact/RigidBodies.hpp"
 #include "operators/ModelOperators.hpp"
 
@@ -53,21 +53,18 @@ class PenaltyContact {
 
  private:
   struct Candidate {
-    std::array<double, 3> X{};
+    ParticleRow row;
     double mass = 0;
-    std::vector<int> nodes;
-    std::vector<double> phi;
     std::array<double, 3> x_old{}, ft_old{}, x_new{}, ft_new{};
     bool active = false;
   };
   struct Pair {
     std::size_t body = 0;
-    double penalty = 0, mu_s = 0, mu_d = 0, decay = 0, damping = 0;
-    bool wall = false;  ///< a rigid wall: every particle of its node set is a candidate
+    double penalty = 0, damping = 0;
+    contact::Friction friction;
     std::array<double, 3> body_u_old{};
     std::vector<Candidate> candidates;
   };
-  std::array<double, 3> position(const Candidate& c, const Vector& d_overlap) const;
 
   int dim_;
   const RigidBodies& bodies_;

@@ -99,4 +99,24 @@ inline Proximity proximity(const Shape& s, const double* x, const double* u) {
   return {};
 }
 
+/// dn/dx at a point with proximity p to shape s (translated bodies alike): (I - n n^T) / rho for
+/// a sphere or a 2D cylinder (a disc), rho the distance from the center; (I - n n^T - a a^T) /
+/// rho for a 3D cylinder of axis a; 0 for planes and box faces. The curvature term of the
+/// penalty contact's tangent.
+inline void normal_derivative(const Shape& s, const Proximity& p, double (&dn)[3][3]) {
+  for (auto& row : dn)
+    for (double& v : row) v = 0.0;
+  const bool disc_or_ball =
+      s.kind == Shape::Kind::sphere || (s.kind == Shape::Kind::cylinder && s.dim == 2);
+  if (!disc_or_ball && s.kind != Shape::Kind::cylinder) return;
+  const double rho = s.radius + p.gap;  // distance from the center or axis
+  if (!(rho > 0)) return;
+  const bool axial = !disc_or_ball;
+  for (int i = 0; i < s.dim; ++i)
+    for (int j = 0; j < s.dim; ++j)
+      dn[i][j] = ((i == j ? 1.0 : 0.0) - p.normal[i] * p.normal[j] -
+                  (axial ? s.axis[i] * s.axis[j] : 0.0)) /
+                 rho;
+}
+
 }  // namespace efg::contact

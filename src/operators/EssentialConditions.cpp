@@ -214,7 +214,10 @@ bool EssentialConditions::boundary_stress(const BoundaryPoint& p, const double (
   const auto& old_state = *reinterpret_cast<const State*>(&committed_[p.history]);
   auto& new_state = *reinterpret_cast<State*>(&trial_[p.history]);
   double cauchy[3][3];
-  return j2_stress_and_tangent<Dim>(p.law.j2, H, old_state, states_->step_time(), P, A, new_state,
+  // Elastic probes (the explicit stable-step estimate) see the elastic predictor here too, as
+  // the solid's points do (MaterialStates::elastic_probe).
+  const auto law = states_->elastic_probe() ? physics::without_yield(p.law.j2) : p.law.j2;
+  return j2_stress_and_tangent<Dim>(law, H, old_state, states_->step_time(), P, A, new_state,
                                     cauchy);
 }
 

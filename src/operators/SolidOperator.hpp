@@ -77,11 +77,8 @@ class SolidOperator {
   DevicePoints device(const PartData& p) const {
     DevicePoints d = p.device;
     d.material.step_time = history_.step_time();
-    if (history_.elastic_probe() && d.material.plastic) {
-      // No yield: an infinite yield stress without hardening points (MaterialStates).
-      d.material.j2.yield_stress = 1e300;
-      d.material.j2.curve_points = 0;
-    }
+    if (history_.elastic_probe() && d.material.plastic)  // MaterialStates::elastic_probe
+      d.material.j2 = physics::without_yield(d.material.j2);
     return d;
   }
   void report_inversion(const PartData& part, int point) const;

@@ -21,6 +21,12 @@ std::vector<double> reals(const YAML::Node& n) {
   return v;
 }
 
+bool nonzero(const std::vector<double>& v) {
+  double n2 = 0;
+  for (double x : v) n2 += x * x;
+  return n2 > 0;
+}
+
 RigidBodySpec read_body(const Scene& s, const YAML::Node& r, const YAML::Node& d,
                         const std::string& path) {
   RigidBodySpec b;
@@ -38,21 +44,15 @@ RigidBodySpec read_body(const Scene& s, const YAML::Node& r, const YAML::Node& d
   b.curve = r["curve"] ? r["curve"].as<std::string>() : "";
   b.thickness = r["thickness"].as<double>();
   b.gravity = reals(r["gravity"]);
-  if (b.shape == "plane") {
-    double n2 = 0;
-    for (double v : b.normal) n2 += v * v;
-    if (!(n2 > 0)) fail(s, d["normal"], path + ".normal", "expected a nonzero normal");
-  }
+  if (b.shape == "plane" && !nonzero(b.normal))
+    fail(s, d["normal"], path + ".normal", "expected a nonzero normal");
   if (b.shape == "box")
     for (std::size_t k = 0; k < std::min(b.lower.size(), b.upper.size()); ++k)
       if (!(b.upper[k] > b.lower[k]))
         fail(s, d["upper"], path + ".upper",
              "expected every entry above the lower corner's (an empty box)");
-  if (b.shape == "cylinder" && !b.axis.empty()) {
-    double a2 = 0;
-    for (double v : b.axis) a2 += v * v;
-    if (!(a2 > 0)) fail(s, d["axis"], path + ".axis", "expected a nonzero axis");
-  }
+  if (b.shape == "cylinder" && !b.axis.empty() && !nonzero(b.axis))
+    fail(s, d["axis"], path + ".axis", "expected a nonzero axis");
   if (r["mass"] && r["density"])
     fail(s, d["density"], path + ".density", "give mass or density, not both");
   if (r["mass"]) b.mass = r["mass"].as<double>();

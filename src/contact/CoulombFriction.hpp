@@ -1,0 +1,40 @@
+// Coulomb friction by an elastic-slip (regularized stick) return map, a plain function for the
+// penalty contact (no Trilinos). The old tangential force is turned into the new tangent plane
+// (its normal part removed), loaded by the tangential slip increment through the stick
+// stiffness k, and capped at mu F_n:
+//   F_t* = P_t F_t_old - k P_t s,   F_t = F_t* min(1, mu F_n / |F_t*|),
+//   mu = mu_d + (mu_s - mu_d) exp(-decay |P_t s| / dt)   (LS-DYNA's decay law).
+#pragma once
+
+#include <cmath>
+
+namespace efg::contact {
+
+struct Friction {
+  double mu_s = 0, mu_d = 0, decay = 0;
+};
+
+/// ft_new from ft_old, the slip increment s over dt, the unit normal n, the stick stiffness k
+/// and the normal force fn (>= 0).
+inline void coulomb_return(const Friction& law, const double* ft_old, const double* s,
+                           const double* n, double k, double fn, double dt, int dim,
+                           double* ft_new) {
+  double s_n = 0, ft_n = 0;
+  for (int i = 0; i < dim; ++i) {
+    s_n += s[i] * n[i];
+    ft_n += ft_old[i] * n[i];
+  }
+  double ft2 = 0, slip2 = 0;
+  for (int i = 0; i < dim; ++i) {
+    const double st = s[i] - s_n * n[i];
+    slip2 += st * st;
+    ft_new[i] = ft_old[i] - ft_n * n[i] - k * st;
+    ft2 += ft_new[i] * ft_new[i];
+  }
+  const double mu = law.mu_d + (law.mu_s - law.mu_d) * std::exp(-law.decay * std::sqrt(slip2) / dt);
+  const double limit = mu * fn, size = std::sqrt(ft2);
+  if (size > limit)
+    for (int i = 0; i < dim; ++i) ft_new[i] *= limit / size;
+}
+
+}  // namespace efg::contact
