@@ -60,3 +60,6 @@ if(_yaml_inc)
   target_include_directories(efg_yaml SYSTEM INTERFACE ${_yaml_inc})
 endif()
 target_link_libraries(efg_yaml INTERFACE yaml-cpp)
+
+# muParser (libmuparser-dev): expressions in scene values (src/expressions).
+find_package(muparser REQUIRED)

@@ -10,6 +10,7 @@ packages=(
   libptscotch-dev libscotch-dev  # Debian's Trilinos CMake config links them without depending on them
   libexodusii-dev libnetcdf-dev
   libyaml-cpp-dev libgtest-dev
+  libmuparser-dev        # expressions in scene values (issue 19)
   libsuitesparse-dev     # UMFPACK, the direct solver
   libopenblas0-serial    # one-thread optimized BLAS: UMFPACK's frontal matrices 1.7x faster than reference
   python3-netcdf4 python3-matplotlib python3-numpy

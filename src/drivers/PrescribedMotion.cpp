@@ -21,8 +21,13 @@ PrescribedMotion::PrescribedMotion(const Model& model)
         if (!c) continue;  // values from an exact solution are for static verification
         const int row =
             model.maps.owned_dofs->getLocalElement(static_cast<GlobalOrdinal>(node) * dim + i);
-        if (taken.insert(row).second)
-          dofs_.push_back({row, b, i, bc.type == "velocity", *c, bc.curve});
+        if (taken.insert(row).second) {
+          Dof dof{row, b, i, bc.type == "velocity", &*c, {}, bc.curve};
+          for (int k = 0; k < dim; ++k)
+            dof.X[static_cast<std::size_t>(k)] =
+                model.mesh.coordinates[static_cast<std::size_t>(node * dim + k)];
+          dofs_.push_back(dof);
+        }
       }
     }
   }
@@ -48,7 +53,7 @@ void PrescribedMotion::constrain_velocity(const LoadFactor& start, const LoadFac
   auto v = v_half.getLocalViewHost(Tpetra::Access::ReadWrite);
   for (const auto& c : dofs_) {
     const auto k = static_cast<std::size_t>(c.row);
-    v(k, 0) = c.velocity ? c.value * mid(c.curve) : c.value * (end(c.curve) - start(c.curve)) / dt;
+    v(k, 0) = c.velocity ? c.at(mid) : (c.at(end) - c.at(start)) / dt;
   }
 }
 
@@ -60,7 +65,7 @@ void PrescribedMotion::constrain_end(const LoadFactor& end, const Vector& v_half
   for (const auto& c : dofs_) {
     const auto k = static_cast<std::size_t>(c.row);
     a(k, 0) = 0.0;
-    v(k, 0) = c.velocity ? c.value * end(c.curve) : rate(k, 0);
+    v(k, 0) = c.velocity ? c.at(end) : rate(k, 0);
   }
 }
 

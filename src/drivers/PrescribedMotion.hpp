@@ -45,8 +45,10 @@ class PrescribedMotion {
     std::size_t condition;
     int direction;
     bool velocity;
-    double value;
+    const ScalarField* value;   // the scene's value (a number or an expression of x, y, z, t)
+    std::array<double, 3> X{};  // the node's reference position
     std::string curve;
+    double at(const LoadFactor& f) const { return value->at(X.data(), f.time()) * f(curve); }
   };
   std::vector<Dof> dofs_;
   std::size_t conditions_ = 0;

@@ -69,6 +69,7 @@ std::string describe(const GeneratorSpec& s) {
     o << (d ? "x" : "") << "[" << s.lower[static_cast<std::size_t>(d)] << ","
       << s.upper[static_cast<std::size_t>(d)] << "]";
   if (s.perturbation > 0) o << ", perturbation " << s.perturbation << " seed " << s.seed;
+  if (s.coordinate_map) o << ", mapped to " << s.map_text;
   return o.str();
 }
 
@@ -209,8 +210,13 @@ BackgroundMesh generate_mesh(const GeneratorSpec& s) {
   mesh.source = "generated " + describe(s);
   const std::size_t nodes = static_cast<std::size_t>(lat.n[0]) *
                             static_cast<std::size_t>(lat.n[1]) * static_cast<std::size_t>(lat.n[2]);
-  const auto xyz = lattice_coordinates(s, lat, nodes);  // 3 components, trimmed for 2D below
+  auto xyz = lattice_coordinates(s, lat, nodes);  // 3 components, trimmed for 2D below
   mesh.blocks.push_back(lattice_block(s, lat, xyz));
+  if (s.coordinate_map)  // after the cells are cut: their topology is the box's
+    for (std::size_t n = 0; n < nodes; ++n) {
+      const double box[3] = {xyz[3 * n], xyz[3 * n + 1], xyz[3 * n + 2]};
+      s.coordinate_map(box, &xyz[3 * n]);
+    }
   mesh.coordinates.resize(static_cast<std::size_t>(dim) * nodes);
   for (std::size_t n = 0; n < nodes; ++n)
     for (int d = 0; d < dim; ++d)

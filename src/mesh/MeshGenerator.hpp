@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <string>
 
 #include "mesh/BackgroundMesh.hpp"
@@ -21,6 +22,10 @@ struct GeneratorSpec {
   double perturbation = 0.0;
   std::uint64_t seed = 1;
   std::string block_name = "block_1";
+  /// Optional coordinate map of every node (box coordinates in, 3 entries each; mapped out), set
+  /// from the scene's mesh.generate.map expressions; `map_text` describes it.
+  std::function<void(const double* box, double* mapped)> coordinate_map;
+  std::string map_text;
 };
 
 /// Builds the mesh. Node sets and side sets are named xmin, xmax, ymin, ymax (zmin, zmax in 3D);

@@ -28,12 +28,14 @@ double curve_integral(const CurveSpec& c, double t0, double t1) {
 }
 
 LoadFactor curve_factor(const Scene& scene, double time, double no_curve) {
-  return [&scene, time, no_curve](const std::string& name) {
-    if (name.empty()) return no_curve;
-    for (const auto& c : scene.curves)
-      if (c.name == name) return curve_value(c, time);
-    throw std::logic_error("curve '" + name + "' not found after validation");
-  };
+  return LoadFactor(
+      [&scene, time, no_curve](const std::string& name) {
+        if (name.empty()) return no_curve;
+        for (const auto& c : scene.curves)
+          if (c.name == name) return curve_value(c, time);
+        throw std::logic_error("curve '" + name + "' not found after validation");
+      },
+      time);
 }
 
 }  // namespace efg

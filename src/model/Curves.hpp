@@ -11,9 +11,20 @@ namespace efg {
 
 double curve_value(const CurveSpec& curve, double time);
 
-/// The factor a load or condition is scaled by: curve name -> value now. Drivers decide what a
-/// load without a curve ("" ) gets (the implicit driver ramps it over the stage).
-using LoadFactor = std::function<double(const std::string& curve)>;
+/// The factor a load or condition is scaled by: curve name -> value now, and the time itself
+/// (for values written as expressions of t). Drivers decide what a load without a curve ("")
+/// gets (the implicit driver ramps it over the stage).
+class LoadFactor {
+ public:
+  LoadFactor(std::function<double(const std::string& curve)> factor, double time)
+      : factor_(std::move(factor)), time_(time) {}
+  double operator()(const std::string& curve) const { return factor_(curve); }
+  double time() const { return time_; }
+
+ private:
+  std::function<double(const std::string&)> factor_;
+  double time_;
+};
 
 /// The integral of curve c from t0 to t1 (exact: trapezoids between its breakpoints, constant
 /// beyond its ends as curve_value).

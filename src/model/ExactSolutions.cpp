@@ -1,5 +1,6 @@
 #include "model/ExactSolutions.hpp"
 
+#include <array>
 #include <map>
 #include <stdexcept>
 #include <vector>
@@ -203,6 +204,74 @@ ExactSolution bar_1d(const Scene& scene) {
   return s;
 }
 
+// verification.user_solution: the scene's expressions of x, y, z (each evaluated at a point padded
+// to three coordinates). Without stress expressions the stress is the part's linear elastic
+// stress of the displacement gradient, by central differences (step 1e-6 of the point's scale).
+ExactSolution user_solution(const Scene& scene, int dim) {
+  const auto& spec = *scene.user_solution;
+  if (spec.displacement.size() != static_cast<std::size_t>(dim))
+    throw InputError(
+        spec.displacement.front().where.substr(0, spec.displacement.front().where.rfind('[')) +
+        ": expected " + std::to_string(dim) + " expressions for a " + std::to_string(dim) +
+        "D mesh, found " + std::to_string(spec.displacement.size()));
+  const auto n = static_cast<std::size_t>(dim);
+  auto padded = [n](const double* X) {
+    std::array<double, 3> p{0, 0, 0};
+    for (std::size_t k = 0; k < n; ++k) p[k] = X[k];
+    return p;
+  };
+  ExactSolution s;
+  s.name = "user";
+  const auto u = spec.displacement;
+  s.displacement = [u, n, padded](const double* X, double* out) {
+    const auto p = padded(X);
+    for (std::size_t k = 0; k < 3; ++k) out[k] = k < n ? u[k].at(p.data(), 0.0) : 0.0;
+  };
+  if (!spec.stress.empty()) {
+    const auto sigma = spec.stress;  // Voigt: xx, yy, zz, yz, xz, xy
+    s.nominal_stress = [sigma, padded](const double* X, double(&S)[3][3]) {
+      const auto p = padded(X);
+      auto v = [&](std::size_t i) { return sigma[i].at(p.data(), 0.0); };
+      S[0][0] = v(0), S[1][1] = v(1), S[2][2] = v(2);
+      S[1][2] = S[2][1] = v(3), S[0][2] = S[2][0] = v(4), S[0][1] = S[1][0] = v(5);
+    };
+  } else {
+    const auto& m = first_material(scene);
+    const bool plane_stress = dim == 2 && scene.parts.front().plane_stress;
+    const double e = m.constants.at("youngs_modulus"), nu = m.constants.at("poissons_ratio");
+    const auto c = plane_stress ? lame_plane_stress(e, nu) : lame(e, nu);
+    const auto displacement = s.displacement;
+    s.nominal_stress = [c, n, displacement](const double* X, double(&S)[3][3]) {
+      double g[3][3] = {};
+      for (std::size_t j = 0; j < n; ++j) {
+        double xp[3] = {0, 0, 0}, xm[3] = {0, 0, 0}, up[3], um[3];
+        for (std::size_t k = 0; k < n; ++k) xp[k] = xm[k] = X[k];
+        const double h = 1e-6 * (1.0 + std::abs(X[j]));
+        xp[j] += h;
+        xm[j] -= h;
+        displacement(xp, up);
+        displacement(xm, um);
+        for (std::size_t i = 0; i < n; ++i) g[i][j] = (up[i] - um[i]) / (2 * h);
+      }
+      double tr = 0;
+      for (std::size_t i = 0; i < n; ++i) tr += g[i][i];
+      for (std::size_t i = 0; i < 3; ++i)
+        for (std::size_t j = 0; j < 3; ++j)
+          S[i][j] =
+              i < n && j < n ? c.mu * (g[i][j] + g[j][i]) + (i == j ? c.lambda * tr : 0.0) : 0.0;
+    };
+  }
+  if (!spec.body_force.empty()) {
+    const auto b = spec.body_force;
+    s.body_force = [b, n, padded](const double* X, double* out) {
+      const auto p = padded(X);
+      for (std::size_t k = 0; k < 3; ++k)
+        out[k] = k < n && k < b.size() ? b[k].at(p.data(), 0.0) : 0.0;
+    };
+  }
+  return s;
+}
+
 }  // namespace
 
 using ExactSolutionBuilder = std::function<ExactSolution(const Scene&, int)>;
@@ -231,6 +300,7 @@ std::vector<std::string> implemented_exact_solutions() {
 }
 
 ExactSolution make_exact_solution(const Scene& scene, int dimension) {
+  if (scene.exact_solution == "user") return user_solution(scene, dimension);
   const auto it = builders().find(scene.exact_solution);
   if (it == builders().end())  // the schema offers only implemented names (unit-tested)
     throw std::logic_error("no implementation of exact solution '" + scene.exact_solution + "'");

@@ -37,6 +37,7 @@ EssentialConditions::EssentialConditions(const Model& model, const SolidOperator
     : dim_(model.mesh.dimension),
       conditions_(model.scene.boundary_conditions.size()),
       overlap_dofs_(model.maps.overlap_dofs) {
+  timed_.resize(conditions_);
   states_ = &op.history();
   double largest_modulus = 0;
   for (const auto& m : model.scene.materials)
@@ -53,12 +54,14 @@ EssentialConditions::EssentialConditions(const Model& model, const SolidOperator
     setup.modulus = largest_modulus;
     for (std::size_t k = 0; k < 3; ++k)
       setup.mask[k] = bc.components[k].has_value() || bc.from_exact[k];
-    setup.prescribed = [&bc, exact](const double* X, std::size_t k) {
-      if (!bc.from_exact[k]) return bc.components[k].value_or(0.0);
+    setup.prescribed = [&bc, exact](const double* X, std::size_t k, double t) {
+      if (!bc.from_exact[k]) return bc.components[k] ? bc.components[k]->at(X, t) : 0.0;
       double u[3] = {0, 0, 0};
       exact->displacement(X, u);
       return u[k];
     };
+    for (const auto& component : bc.components)
+      if (component && component->uses_time()) timed_[c] = setup.prescribed;
     if (setup.method == 0) add_collocated_nodes(model, op, setup);
     const auto sides_found = add_boundary_points(model, op, setup);
     if (setup.method != 0 && sides_found == 0)
@@ -94,7 +97,8 @@ void EssentialConditions::add_collocated_nodes(const Model& model, const SolidOp
         nc.owned_row = owned_rows->getLocalElement(static_cast<GlobalOrdinal>(node) * dim_ + i);
         nc.component = i;
         nc.scale = s;
-        nc.base = setup.prescribed(d.cloud.x(row), static_cast<std::size_t>(i));
+        for (int k = 0; k < dim_; ++k) nc.X[static_cast<std::size_t>(k)] = d.cloud.x(row)[k];
+        nc.base = setup.prescribed(nc.X.data(), static_cast<std::size_t>(i), 0.0);
         nc.curve = bc.curve;
         for (auto k = d.particle_values.offsets[row]; k < d.particle_values.offsets[row + 1]; ++k) {
           nc.nodes.push_back(
@@ -156,8 +160,9 @@ long long EssentialConditions::add_boundary_points(const Model& model, const Sol
         b.weighted_normal[k] = pts[q].normal[k] * pts[q].weight * thickness;
       b.area = pts[q].weight * thickness;
       b.constrained = setup.mask;
+      for (std::size_t k = 0; k < udim; ++k) b.X[k] = pts[q].x[k];
       for (std::size_t k = 0; k < udim; ++k)
-        if (setup.mask[k]) b.base[k] = setup.prescribed(pts[q].x.data(), k);
+        if (setup.mask[k]) b.base[k] = setup.prescribed(b.X.data(), k, 0.0);
       b.curve = bc.curve;
       b.method = setup.method;
       b.beta = beta[q];
@@ -189,10 +194,19 @@ void EssentialConditions::add_couplings(CouplingGraph& graph) const {
 }
 
 void EssentialConditions::set_factor(const LoadFactor& factor) {
-  for (auto& c : nodes_) c.value = c.base * factor(c.curve);
+  const double t = factor.time();
+  for (auto& c : nodes_) {
+    if (const auto& timed = timed_[c.condition])
+      c.base = timed(c.X.data(), static_cast<std::size_t>(c.component), t);
+    c.value = c.base * factor(c.curve);
+  }
   for (auto& p : points_) {
     const double f = factor(p.curve);
-    for (std::size_t k = 0; k < 3; ++k) p.value[k] = p.base[k] * f;
+    for (std::size_t k = 0; k < 3; ++k) {
+      if (timed_[p.condition] && p.constrained[k])
+        p.base[k] = timed_[p.condition](p.X.data(), k, t);
+      p.value[k] = p.base[k] * f;
+    }
   }
 }
 

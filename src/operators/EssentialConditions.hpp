@@ -84,6 +84,7 @@ class EssentialConditions {
     int component;
     double scale, base, value = 0;
     std::string curve;
+    std::array<double, 3> X{};  // where the value is prescribed (values varying in time)
     std::vector<int> nodes;
     std::vector<double> phi;
   };
@@ -94,6 +95,7 @@ class EssentialConditions {
     std::array<bool, 3> constrained{};
     std::array<double, 3> base{}, value{};
     std::string curve;
+    std::array<double, 3> X{};
     int method;  // 0 transformation, 1 nitsche, 2 penalty
     double beta;
     MaterialLaw law;
@@ -138,8 +140,13 @@ class EssentialConditions {
     double beta_factor = 0;  ///< alpha E: beta = alpha E / h
     double modulus = 0;      ///< the largest Young's modulus (row scaling)
     std::array<bool, 3> mask{};
-    std::function<double(const double*, std::size_t)> prescribed;  ///< u_bar_k(X), unscaled
+    /// u_bar_k(X, t), unscaled (X: 3 entries)
+    std::function<double(const double*, std::size_t, double)> prescribed;
   };
+  using Prescribed = std::function<double(const double*, std::size_t, double)>;
+  /// Per condition: its u_bar(X, t) when a component is an expression of t (else empty): such
+  /// values are evaluated again at every set_factor.
+  std::vector<Prescribed> timed_;
   void add_collocated_nodes(const Model& model, const SolidOperator& op, const Setup& setup);
   long long add_boundary_points(const Model& model, const SolidOperator& op, const Setup& setup);
 

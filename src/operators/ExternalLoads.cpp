@@ -9,28 +9,6 @@
 #include "operators/SideQuadrature.hpp"
 
 namespace efg {
-namespace {
-
-// Adds phi_I(x_p) * value_p * weight_p for a batch of points of one part.
-void add_point_loads(const PartDiscretization& part, const std::vector<int>& overlap_node,
-                     const std::vector<double>& x, const std::vector<std::array<double, 3>>& value,
-                     const std::vector<double>& weight, int dim, Vector& f_overlap) {
-  if (weight.empty()) return;
-  const auto v =
-      evaluate_shape_functions(part.cloud, x.data(), weight.size(), false,
-                               [](std::size_t p) { return "load point " + std::to_string(p); });
-  auto f = f_overlap.getLocalViewHost(Tpetra::Access::ReadWrite);
-  for (std::size_t p = 0; p < weight.size(); ++p)
-    for (auto k = v.neighbors.offsets[p]; k < v.neighbors.offsets[p + 1]; ++k) {
-      const auto node = static_cast<std::size_t>(
-          overlap_node[static_cast<std::size_t>(v.neighbors.particles[k])]);
-      for (int i = 0; i < dim; ++i)
-        f(node * static_cast<std::size_t>(dim) + static_cast<std::size_t>(i), 0) +=
-            v.phi[k] * value[p][static_cast<std::size_t>(i)] * weight[p];
-    }
-}
-
-}  // namespace
 
 int part_of_block(const Scene& scene, const std::string& name) {
   for (std::size_t p = 0; p < scene.parts.size(); ++p)
@@ -42,31 +20,54 @@ int part_of_block(const Scene& scene, const std::string& name) {
 
 namespace {
 
-// Point loads gathered per part, then spread to the particles by the shape functions.
-struct PointLoads {
-  explicit PointLoads(std::size_t parts) : x(parts), w(parts), value(parts) {}
-  void add(std::size_t part, const double* point, int dim, const std::array<double, 3>& v,
-           double weight) {
-    x[part].insert(x[part].end(), point, point + dim);
-    value[part].push_back(v);
-    w[part].push_back(weight);
-  }
-  void scatter(const Model& model, const SolidOperator& op, Vector& f_overlap) const {
-    for (std::size_t p = 0; p < x.size(); ++p)
-      add_point_loads(model.parts[p], op.overlap_node(p), x[p], value[p], w[p],
-                      model.mesh.dimension, f_overlap);
-  }
-  std::vector<std::vector<double>> x, w;
-  std::vector<std::vector<std::array<double, 3>>> value;
-};
+using Points = ExternalLoads::Points;
 
-// Tractions and pressures on a side set, at the SCNI boundary points of its owned sides.
-void add_surface_load(const Model& model, const SolidOperator& op, const LoadSpec& spec,
-                      const ExactSolution* exact, Vector& f_overlap) {
+void add_point(Points& pts, std::size_t part, const double* x, int dim,
+               const std::array<double, 3>& normal, double weight) {
+  std::array<double, 3> p{0, 0, 0};
+  std::copy(x, x + dim, p.begin());
+  pts.x.push_back(p);
+  pts.normal.push_back(normal);
+  pts.weight.push_back(weight);
+  pts.part.push_back(part);
+}
+
+// The rows phi_I(x_p) of free points (sides, nodes), part by part, in overlap node numbering.
+void evaluate_rows(const Model& model, const SolidOperator& op, Points& pts) {
+  const auto udim = static_cast<std::size_t>(model.mesh.dimension);
+  pts.rows.offsets.assign(1, 0);
+  std::vector<std::vector<std::pair<LocalIndex, double>>> row(pts.weight.size());
+  for (std::size_t p = 0; p < model.parts.size(); ++p) {
+    std::vector<std::size_t> mine;
+    std::vector<double> x;
+    for (std::size_t q = 0; q < pts.weight.size(); ++q)
+      if (pts.part[q] == p) {
+        mine.push_back(q);
+        x.insert(x.end(), pts.x[q].begin(), pts.x[q].begin() + static_cast<std::ptrdiff_t>(udim));
+      }
+    if (mine.empty()) continue;
+    const auto v =
+        evaluate_shape_functions(model.parts[p].cloud, x.data(), mine.size(), false,
+                                 [](std::size_t q) { return "load point " + std::to_string(q); });
+    for (std::size_t i = 0; i < mine.size(); ++i)
+      for (auto k = v.neighbors.offsets[i]; k < v.neighbors.offsets[i + 1]; ++k)
+        row[mine[i]].emplace_back(
+            op.overlap_node(p)[static_cast<std::size_t>(v.neighbors.particles[k])], v.phi[k]);
+  }
+  for (const auto& r : row) {
+    for (const auto& [node, phi] : r) {
+      pts.rows.particles.push_back(node);
+      pts.rows.values.push_back(phi);
+    }
+    pts.rows.offsets.push_back(pts.rows.particles.size());
+  }
+}
+
+// Tractions and pressures: the SCNI boundary points of the set's owned sides.
+Points surface_points(const Model& model, const LoadSpec& spec) {
   const auto& mesh = model.mesh;
   const int dim = mesh.dimension;
-  const auto udim = static_cast<std::size_t>(dim);
-  PointLoads loads(model.parts.size());
+  Points pts;
   const auto* set = mesh.find_side_set(spec.set);
   for (std::size_t i = 0; i < set->cells.size(); ++i) {
     const auto cell = static_cast<std::size_t>(set->cells[i]);
@@ -77,29 +78,16 @@ void add_surface_load(const Model& model, const SolidOperator& op, const LoadSpe
     if (part < 0) continue;
     const double thickness =
         dim == 2 ? model.scene.parts[static_cast<std::size_t>(part)].thickness : 1.0;
-    for (const auto& q : side_quadrature(mesh, cell, set->sides[i])) {
-      std::array<double, 3> t{0, 0, 0};
-      if (spec.type == "pressure") {
-        for (std::size_t d = 0; d < 3; ++d) t[d] = -spec.value[0] * q.normal[d];
-      } else if (spec.from_exact) {
-        double P[3][3];
-        exact->nominal_stress(q.x.data(), P);
-        for (std::size_t a = 0; a < 3; ++a)
-          for (std::size_t b = 0; b < 3; ++b) t[a] += P[a][b] * q.normal[b];
-      } else {
-        for (std::size_t d = 0; d < udim; ++d) t[d] = spec.value[d];
-      }
-      loads.add(static_cast<std::size_t>(part), q.x.data(), dim, t, q.weight * thickness);
-    }
+    for (const auto& q : side_quadrature(mesh, cell, set->sides[i]))
+      add_point(pts, static_cast<std::size_t>(part), q.x.data(), dim, q.normal,
+                q.weight * thickness);
   }
-  loads.scatter(model, op, f_overlap);
+  return pts;
 }
 
 // A force on a node set, shared equally by its nodes (at each owned particle of the set).
-void add_nodal_force(const Model& model, const SolidOperator& op, const LoadSpec& spec,
-                     Vector& f_overlap) {
-  const auto udim = static_cast<std::size_t>(model.mesh.dimension);
-  PointLoads loads(model.parts.size());
+Points nodal_points(const Model& model, const LoadSpec& spec) {
+  Points pts;
   const auto* set = model.mesh.find_node_set(spec.set);
   const double share = 1.0 / static_cast<double>(set->nodes.size());
   for (auto node : set->nodes) {
@@ -109,21 +97,19 @@ void add_nodal_force(const Model& model, const SolidOperator& op, const LoadSpec
       const auto end = c.mesh_node.begin() + static_cast<std::ptrdiff_t>(c.owned_count);
       const auto it = std::find(c.mesh_node.begin(), end, node);
       if (it == end) continue;
-      std::array<double, 3> force{0, 0, 0};
-      for (std::size_t d = 0; d < udim; ++d) force[d] = spec.value[d];
-      loads.add(p, c.x(static_cast<std::size_t>(it - c.mesh_node.begin())), model.mesh.dimension,
-                force, share);
+      add_point(pts, p, c.x(static_cast<std::size_t>(it - c.mesh_node.begin())),
+                model.mesh.dimension, {0, 0, 0}, share);
     }
   }
-  loads.scatter(model, op, f_overlap);
+  return pts;
 }
 
-// A body force per unit volume over the named parts (all when none), at the integration points.
-void add_body_force(const Model& model, const SolidOperator& op, const LoadSpec& spec,
-                    const ExactSolution* exact, Vector& f_overlap) {
+// A body force over the named parts (all when none), at the parts' integration points (their
+// rows of phi_I exist already).
+Points body_points(const Model& model, const SolidOperator& op, const LoadSpec& spec) {
   const int dim = model.mesh.dimension;
-  const auto udim = static_cast<std::size_t>(dim);
-  auto f = f_overlap.getLocalViewHost(Tpetra::Access::ReadWrite);
+  Points pts;
+  pts.rows.offsets.assign(1, 0);
   for (std::size_t p = 0; p < model.parts.size(); ++p) {
     const auto& part = *model.parts[p].part;
     if (!spec.parts.empty() &&
@@ -132,44 +118,113 @@ void add_body_force(const Model& model, const SolidOperator& op, const LoadSpec&
     const auto& ip = model.parts[p].points;
     const double thickness = dim == 2 ? part.thickness : 1.0;
     for (std::size_t q = 0; q < ip.size(); ++q) {
-      double b[3] = {0, 0, 0};
-      if (spec.from_exact) {
-        if (exact->body_force) exact->body_force(&ip.x[q * udim], b);
-      } else {
-        for (std::size_t d = 0; d < udim; ++d) b[d] = spec.value[d];
-      }
+      add_point(pts, p, &ip.x[q * static_cast<std::size_t>(dim)], dim, {0, 0, 0},
+                ip.weight[q] * thickness);
       for (auto k = ip.values.offsets[q]; k < ip.values.offsets[q + 1]; ++k) {
-        const auto node = static_cast<std::size_t>(
+        pts.rows.particles.push_back(
             op.overlap_node(p)[static_cast<std::size_t>(ip.values.particles[k])]);
-        for (std::size_t i = 0; i < udim; ++i)
-          f(node * udim + i, 0) += ip.values.values[k] * b[i] * ip.weight[q] * thickness;
+        pts.rows.values.push_back(ip.values.values[k]);
       }
+      pts.rows.offsets.push_back(pts.rows.particles.size());
     }
   }
+  return pts;
+}
+
+// The load per unit weight at point q and time t.
+std::array<double, 3> load_value(const LoadSpec& spec, const ExactSolution* exact, int dim,
+                                 const Points& pts, std::size_t q, double t) {
+  std::array<double, 3> value{0, 0, 0};
+  const double* x = pts.x[q].data();
+  if (spec.type == "pressure") {
+    const double p = spec.value[0].at(x, t);
+    for (std::size_t d = 0; d < 3; ++d) value[d] = -p * pts.normal[q][d];
+  } else if (spec.from_exact && spec.type == "traction") {
+    double P[3][3];
+    exact->nominal_stress(x, P);
+    for (std::size_t a = 0; a < 3; ++a)
+      for (std::size_t b = 0; b < 3; ++b) value[a] += P[a][b] * pts.normal[q][b];
+  } else if (spec.from_exact) {
+    if (exact->body_force) exact->body_force(x, value.data());
+  } else {
+    for (std::size_t d = 0; d < static_cast<std::size_t>(dim); ++d)
+      value[d] = spec.value[d].at(x, t);
+  }
+  return value;
+}
+
+void scatter(const LoadSpec& spec, const ExactSolution* exact, int dim, const Points& pts, double t,
+             Vector& f_overlap) {
+  auto f = f_overlap.getLocalViewHost(Tpetra::Access::ReadWrite);
+  const auto udim = static_cast<std::size_t>(dim);
+  for (std::size_t q = 0; q < pts.weight.size(); ++q) {
+    const auto value = load_value(spec, exact, dim, pts, q, t);
+    for (auto k = pts.rows.offsets[q]; k < pts.rows.offsets[q + 1]; ++k) {
+      const auto node = static_cast<std::size_t>(pts.rows.particles[k]);
+      for (std::size_t i = 0; i < udim; ++i)
+        f(node * udim + i, 0) += pts.rows.values[k] * value[i] * pts.weight[q];
+    }
+  }
+}
+
+bool varies_in_time(const LoadSpec& spec) {
+  return std::any_of(spec.value.begin(), spec.value.end(),
+                     [](const ScalarField& v) { return v.uses_time(); });
 }
 
 }  // namespace
 
 ExternalLoads::ExternalLoads(const Model& model, const SolidOperator& op,
-                             const ExactSolution* exact) {
-  Tpetra::Export<> to_owned(model.maps.overlap_dofs, model.maps.owned_dofs);
+                             const ExactSolution* exact)
+    : exact_(exact),
+      dim_(model.mesh.dimension),
+      overlap_(model.maps.overlap_dofs),
+      owned_(model.maps.owned_dofs) {
+  Tpetra::Export<> to_owned(overlap_, owned_);
   for (const auto& spec : model.scene.loads) {
-    Vector f_overlap(model.maps.overlap_dofs);
-    if (spec.type == "traction" || spec.type == "pressure")
-      add_surface_load(model, op, spec, exact, f_overlap);
-    else if (spec.type == "nodal_force")
-      add_nodal_force(model, op, spec, f_overlap);
-    else if (spec.type == "body_force")
-      add_body_force(model, op, spec, exact, f_overlap);
-    auto owned = Teuchos::rcp(new Vector(model.maps.owned_dofs));
-    owned->doExport(f_overlap, to_owned, Tpetra::ADD);
-    loads_.push_back({spec.curve, owned});
+    Load load{&spec, Teuchos::null, {}};
+    if (spec.type == "body_force") {
+      load.points = body_points(model, op, spec);
+    } else {
+      load.points =
+          spec.type == "nodal_force" ? nodal_points(model, spec) : surface_points(model, spec);
+      evaluate_rows(model, op, load.points);
+    }
+    if (!varies_in_time(spec)) {  // assembled once for a unit factor; the points are dropped
+      Vector f_overlap(overlap_);
+      scatter(spec, exact_, dim_, load.points, 0.0, f_overlap);
+      load.force = Teuchos::rcp(new Vector(owned_));
+      load.force->doExport(f_overlap, to_owned, Tpetra::ADD);
+      load.points = Points{};
+    }
+    loads_.push_back(std::move(load));
   }
 }
 
 void ExternalLoads::assemble(const LoadFactor& factor, Vector& f_owned) const {
   f_owned.putScalar(0.0);
-  for (const auto& l : loads_) f_owned.update(factor(l.curve), *l.force, 1.0);
+  Teuchos::RCP<Vector> timed;
+  for (const auto& l : loads_) {
+    if (l.force.is_null()) {
+      if (timed.is_null()) timed = Teuchos::rcp(new Vector(overlap_));
+      Vector one(overlap_);
+      scatter(*l.spec, exact_, dim_, l.points, factor.time(), one);
+      timed->update(factor(l.spec->curve), one, 1.0);
+    } else {
+      f_owned.update(factor(l.spec->curve), *l.force, 1.0);
+    }
+  }
+  if (!timed.is_null()) {
+    Vector owned(owned_);
+    owned.doExport(*timed, Tpetra::Export<>(overlap_, owned_), Tpetra::ADD);
+    f_owned.update(1.0, owned, 1.0);
+  }
+}
+
+std::size_t ExternalLoads::timed_point_count() const {
+  std::size_t n = 0;
+  for (const auto& l : loads_) n += l.points.weight.size();
+  return n;
 }
 
 }  // namespace efg

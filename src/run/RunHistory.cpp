@@ -4,6 +4,8 @@
 
 #include <algorithm>
 
+#include "run/Probes.hpp"
+
 namespace efg {
 namespace {
 std::string short_name(const std::string& prefix, const std::string& name,
@@ -44,6 +46,7 @@ std::vector<std::string> history_names(const Scene& scene, int dimension) {
     for (std::size_t d = 0; d < dim; ++d)
       names.push_back(short_name("v_", set, std::string("_") + axes[d]));
   }
+  for (const auto& name : probe_names(scene, dimension)) names.push_back(name);
   return names;
 }
 
@@ -119,6 +122,7 @@ std::vector<double> RunHistory::values(const ModelOperators& ops, const RunState
     const double count = std::max(1.0, total[2 * dim]);
     for (std::size_t i = 0; i < 2 * dim; ++i) out.push_back(total[i] / count);
   }
+  for (double v : probe_values(model_, ops.solid(), d_overlap)) out.push_back(v);
   return out;
 }
 

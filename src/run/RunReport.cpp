@@ -10,9 +10,9 @@
 
 #include "core/DeviceArrays.hpp"
 #include "core/Errors.hpp"
-#include "run/RunSummary.hpp"
 #include "core/Threads.hpp"
 #include "core/Version.hpp"
+#include "run/RunSummary.hpp"
 
 namespace efg {
 namespace {
@@ -152,7 +152,8 @@ void write_run_report(const CommPtr& comm, const Model& model, const std::string
                       const std::string& results_path, const RunState& state,
                       const std::optional<ErrorNorms>& errors,
                       const std::vector<ReferenceCheck>& checks, double total_seconds,
-                      const std::vector<ImplicitStageReport>& implicit) {
+                      const std::vector<ImplicitStageReport>& implicit,
+                      const std::vector<std::pair<std::string, double>>& probes) {
   std::vector<double> local, global;
   for (const auto& phase : report_phases()) {
     const auto timer = Teuchos::TimeMonitor::lookupCounter("efg: " + phase);
@@ -186,6 +187,12 @@ void write_run_report(const CommPtr& comm, const Model& model, const std::string
       << ", \"energy_rel_error\": " << number(errors->energy_relative)
       << ", \"max_nodal_error\": " << number(errors->max_nodal) << "}";
   write_implicit_stages(o, implicit);
+  if (!probes.empty()) {
+    o << ",\n  \"probes\": {";
+    for (std::size_t i = 0; i < probes.size(); ++i)
+      o << (i ? ", " : "") << quoted(probes[i].first) << ": " << number(probes[i].second);
+    o << "}";
+  }
   o << ",\n  \"reference_values\": [";
   for (std::size_t i = 0; i < checks.size(); ++i)
     o << (i ? ", " : "") << "{\"name\": " << quoted(checks[i].name)

@@ -4,6 +4,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "drivers/ImplicitDriver.hpp"
@@ -38,7 +39,8 @@ void write_run_report(const CommPtr& comm, const Model& model, const std::string
                       const std::string& results_path, const RunState& state,
                       const std::optional<ErrorNorms>& errors,
                       const std::vector<ReferenceCheck>& checks, double total_seconds,
-                      const std::vector<ImplicitStageReport>& implicit = {});
+                      const std::vector<ImplicitStageReport>& implicit = {},
+                      const std::vector<std::pair<std::string, double>>& probes = {});
 
 /// The wall-time phases the report lists (Teuchos timer names without the "efg: " prefix).
 const std::vector<std::string>& report_phases();

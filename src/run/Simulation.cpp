@@ -145,8 +145,19 @@ RunOutcome run_stages(const CommPtr& comm, const Model& model, const std::string
   const double seconds =
       setup_seconds +
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  // The probes' values of the last record (history columns probe_*), logged and reported.
+  std::vector<std::pair<std::string, double>> probes;
+  const auto& names = recorder.global_names();
+  for (std::size_t i = 0; i < names.size() && i < recorder.last_globals().size(); ++i)
+    if (names[i].rfind("probe_", 0) == 0) {
+      probes.emplace_back(names[i], recorder.last_globals()[i]);
+      std::ostringstream o;
+      o.precision(10);
+      o << names[i] << " = " << recorder.last_globals()[i];
+      Log::info(o.str());
+    }
   write_run_report(comm, model, path + ".report.json", path, state, outcome.errors, checks, seconds,
-                   implicit_reports);
+                   implicit_reports, probes);
   Log::info("run report: " + path + ".report.json");
   return outcome;
 }

@@ -5,10 +5,12 @@
 
 #include <array>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "expressions/Expression.hpp"
 #include "mesh/MeshGenerator.hpp"
 
 namespace efg {
@@ -49,13 +51,29 @@ struct MaterialSpec {
   std::string hardening_curve;  ///< j2_plasticity: curve of yield stress over plastic strain
 };
 
+/// A scene value that may vary over position and time: a number, or an expression of x, y, z (and
+/// t where the key allows it) compiled once (src/expressions).
+struct ScalarField {
+  double constant = 0;
+  std::shared_ptr<const Expression> expression;  ///< null: the constant
+  std::string where;  ///< "file:line:col: key.path" of the value, for messages
+
+  bool varies() const { return expression != nullptr; }
+  bool uses_time() const { return expression && expression->uses_time(); }
+  /// The value at p (3 entries) and time t. Throws InputError naming `where`, the point and the
+  /// time when the expression is not finite there (a division by zero, a root of a negative).
+  double at(const double* p, double t) const;
+  /// Same value definition (number or expression text): conditions sharing a dof must agree.
+  bool same_as(const ScalarField& other) const;
+};
+
 struct BoundaryConditionSpec {
   std::string name;
   std::string type;  ///< displacement | velocity
   std::string node_set;
   std::string method;
   std::optional<double> penalty;  ///< alpha of beta = alpha E / h; method default when empty
-  std::array<std::optional<double>, 3> components;
+  std::array<std::optional<ScalarField>, 3> components;
   std::array<bool, 3> from_exact{false, false,
                                  false};  ///< components taken from the exact solution
   std::string curve;                      ///< empty: constant
@@ -66,7 +84,7 @@ struct LoadSpec {
   std::string type;  ///< traction | pressure | nodal_force | body_force
   std::string set;   ///< side set or node set; empty for body forces
   std::vector<std::string> parts;
-  std::vector<double> value;
+  std::vector<ScalarField> value;  ///< traction, body force, pressure: may vary in x, y, z, t
   bool from_exact = false;  ///< traction or body force from the verification block's exact solution
   std::string curve;
 };
@@ -74,7 +92,20 @@ struct LoadSpec {
 struct InitialConditionSpec {
   std::string type;
   std::string node_set;
-  std::vector<double> value;
+  std::vector<ScalarField> value;  ///< may vary in x, y, z
+};
+
+/// verification.user_solution: an exact solution written as expressions of x, y, z.
+struct UserSolutionSpec {
+  std::vector<ScalarField> displacement;
+  std::vector<ScalarField> stress;      ///< xx, yy, zz, yz, xz, xy (Voigt order); empty: from u
+  std::vector<ScalarField> body_force;  ///< empty: zero
+};
+
+/// A named point sampled at every record (displacement, strain, stress by MLS interpolation).
+struct ProbeSpec {
+  std::string name;
+  std::array<double, 3> point{0, 0, 0};
 };
 
 struct CurveSpec {
@@ -138,7 +169,8 @@ struct Scene {
   std::string directory;  ///< folder of the scene file, for relative paths
   std::string name;       ///< scene file name without folder and extension
   std::string title;
-  std::string mesh_file;  ///< resolved path, empty when generated
+  std::map<std::string, double> parameters;  ///< named constants (parameters:), usable in values
+  std::string mesh_file;                     ///< resolved path, empty when generated
   std::optional<GeneratorSpec> generator;
   std::vector<PartSpec> parts;
   std::vector<MaterialSpec> materials;
@@ -151,8 +183,10 @@ struct Scene {
   std::vector<ContactSpec> contacts;
   std::vector<StageSpec> stages;
   OutputSpec output;
-  YAML::Node verification;     ///< null when absent
-  std::string exact_solution;  ///< verification.exact_solution, empty when none
+  YAML::Node verification;                        ///< null when absent
+  std::string exact_solution;                     ///< verification.exact_solution, empty when none
+  std::optional<UserSolutionSpec> user_solution;  ///< exact_solution "user"
+  std::vector<ProbeSpec> probes;
 
   YAML::Node document;  ///< as written, with line marks (for cross-reference messages)
   YAML::Node resolved;  ///< validated, defaults filled (printed by `efg check`)

@@ -9,6 +9,7 @@
 
 #include "core/Errors.hpp"
 #include "scene/ContactInput.hpp"
+#include "scene/ExpressionChecks.hpp"
 #include "scene/SchemaValidator.hpp"
 #include "scene/Suggest.hpp"
 
@@ -131,6 +132,18 @@ class Checker {
       require_nodes(ic["node_set"], path + ".node_set", s_.initial_conditions[i].node_set);
       require_dimension(ic["value"], path + ".value", s_.initial_conditions[i].value.size());
     }
+    for (std::size_t i = 0; i < s_.probes.size(); ++i)
+      require_dimension(d["probes"][i]["point"], "probes[" + std::to_string(i) + "].point",
+                        d["probes"][i]["point"].size());
+    if (s_.user_solution) {
+      const auto& u = d["verification"]["user_solution"];
+      require_dimension(u["displacement"], "verification.user_solution.displacement",
+                        s_.user_solution->displacement.size());
+      if (!s_.user_solution->body_force.empty())
+        require_dimension(u["body_force"], "verification.user_solution.body_force",
+                          s_.user_solution->body_force.size());
+    }
+    check_expressions_at_nodes(s_, m_);
   }
 
  private:
@@ -298,8 +311,11 @@ class Checker {
 
   static bool same_prescription(const BoundaryConditionSpec& a, const BoundaryConditionSpec& b,
                                 std::size_t c) {
-    return a.type == b.type && a.components[c] == b.components[c] &&
-           a.from_exact[c] == b.from_exact[c] && a.curve == b.curve;
+    const auto& u = a.components[c];
+    const auto& v = b.components[c];
+    const bool same_value = u.has_value() == v.has_value() && (!u || u->same_as(*v));
+    return a.type == b.type && same_value && a.from_exact[c] == b.from_exact[c] &&
+           a.curve == b.curve;
   }
 
   // Two conditions prescribing one dof differently: one of them would silently win.

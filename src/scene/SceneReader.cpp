@@ -47,6 +47,8 @@ class SceneBuilder {
   void build() {
     const auto& r = s_.resolved;
     const auto& d = s_.document;
+    for (const auto& kv : r["parameters"])
+      s_.parameters[kv.first.as<std::string>()] = kv.second.as<double>();
     s_.title = r["title"].as<std::string>();
     build_mesh(r["mesh"], d["mesh"]);
     for (std::size_t i = 0; i < r["materials"].size(); ++i) build_material(r["materials"][i]);
@@ -56,10 +58,21 @@ class SceneBuilder {
     for (std::size_t i = 0; i < r["boundary_conditions"].size(); ++i)
       build_bc(r["boundary_conditions"][i], d["boundary_conditions"][i], i);
     for (std::size_t i = 0; i < r["loads"].size(); ++i) build_load(r["loads"][i], d["loads"][i], i);
-    for (const auto& ic : r["initial_conditions"])
+    for (std::size_t i = 0; i < r["initial_conditions"].size(); ++i) {
+      const auto& ic = r["initial_conditions"][i];
       s_.initial_conditions.push_back({ic["type"].as<std::string>(),
                                        ic["node_set"].as<std::string>(),
-                                       as_vector<double>(ic["value"])});
+                                       fields(ic["value"], d["initial_conditions"][i]["value"],
+                                              "initial_conditions[" + std::to_string(i) + "].value",
+                                              ExpressionVariables::position)});
+    }
+    for (const auto& p : r["probes"]) {
+      ProbeSpec probe;
+      probe.name = p["name"].as<std::string>();
+      for (std::size_t k = 0; k < p["point"].size(); ++k)
+        probe.point[k] = p["point"][k].as<double>();
+      s_.probes.push_back(probe);
+    }
     for (std::size_t i = 0; i < r["stages"].size(); ++i)
       build_stage(r["stages"][i], d["stages"][i], i);
     check_plasticity_input(s_);
@@ -77,6 +90,7 @@ class SceneBuilder {
       s_.verification = r["verification"];
       if (r["verification"]["exact_solution"])
         s_.exact_solution = r["verification"]["exact_solution"].as<std::string>();
+      build_user_solution(r["verification"], d["verification"]);
     }
     for (std::size_t i = 0; i < s_.boundary_conditions.size(); ++i) {
       const auto& bc = s_.boundary_conditions[i];
@@ -133,6 +147,21 @@ class SceneBuilder {
     spec.perturbation = g["perturbation"].as<double>();
     spec.seed = g["seed"].as<std::uint64_t>();
     spec.block_name = g["block_name"].as<std::string>();
+    if (g["map"]) {
+      if (g["map"].size() != dim)
+        fail(doc["generate"]["map"], "mesh.generate.map",
+             "expected " + std::to_string(dim) + " expressions, one per coordinate, found " +
+                 std::to_string(g["map"].size()));
+      const auto map = fields(g["map"], doc["generate"]["map"], "mesh.generate.map",
+                              ExpressionVariables::position);
+      spec.coordinate_map = [map](const double* box, double* mapped) {
+        for (std::size_t k = 0; k < map.size(); ++k) mapped[k] = map[k].at(box, 0.0);
+      };
+      for (std::size_t k = 0; k < map.size(); ++k)
+        spec.map_text += (k ? ", " : "(") + (map[k].varies() ? map[k].expression->text()
+                                                             : std::to_string(map[k].constant));
+      spec.map_text += ")";
+    }
     s_.generator = spec;
   }
 
@@ -251,7 +280,9 @@ class SceneBuilder {
     if (b["penalty"]) bc.penalty = b["penalty"].as<double>();
     const char* axes[3] = {"x", "y", "z"};
     for (std::size_t c = 0; c < 3; ++c)
-      if (b[axes[c]]) bc.components[c] = b[axes[c]].as<double>();
+      if (b[axes[c]])
+        bc.components[c] = field(b[axes[c]], doc[axes[c]], path + "." + axes[c],
+                                 ExpressionVariables::position_and_time);
     if (b["from_exact_solution"])
       for (const auto& c : b["from_exact_solution"]) {
         const auto axis = static_cast<std::size_t>(c.as<std::string>()[0] - 'x');
@@ -273,9 +304,13 @@ class SceneBuilder {
     load.type = l["type"].as<std::string>();
     load.set = l["side_set"] ? l["side_set"].as<std::string>() : opt_string(l, "node_set");
     if (l["parts"]) load.parts = as_vector<std::string>(l["parts"]);
+    const auto varying = load.type == "nodal_force" ? ExpressionVariables::none
+                                                    : ExpressionVariables::position_and_time;
     if (l["value"])
-      load.value = l["value"].IsSequence() ? as_vector<double>(l["value"])
-                                           : std::vector<double>{l["value"].as<double>()};
+      load.value =
+          l["value"].IsSequence()
+              ? fields(l["value"], doc["value"], path + ".value", varying)
+              : std::vector<ScalarField>{field(l["value"], doc["value"], path + ".value", varying)};
     load.from_exact = l["from_exact_solution"] && l["from_exact_solution"].as<bool>();
     if ((load.type == "traction" || load.type == "body_force") &&
         load.from_exact == !load.value.empty())
@@ -290,6 +325,62 @@ class SceneBuilder {
              "no part named '" + load.parts[k] + "'");
     }
     s_.loads.push_back(load);
+  }
+
+  // A number, or an expression compiled with the scene's parameters (validated already).
+  ScalarField field(const YAML::Node& resolved, const YAML::Node& doc, const std::string& path,
+                    ExpressionVariables variables) const {
+    ScalarField f;
+    f.where = schema::located_message(s_.file, doc, path, "");
+    f.where.erase(f.where.size() - 2);  // the empty message's ": "
+    double v = 0;
+    if (resolved.Tag() != "!" && YAML::convert<double>::decode(resolved, v)) {
+      f.constant = v;
+      return f;
+    }
+    auto e = std::make_shared<const Expression>(resolved.Scalar(), s_.parameters, variables);
+    if (!e->uses_position() && !e->uses_time())
+      f.constant = (*e)();
+    else
+      f.expression = std::move(e);
+    return f;
+  }
+
+  std::vector<ScalarField> fields(const YAML::Node& resolved, const YAML::Node& doc,
+                                  const std::string& path, ExpressionVariables variables) const {
+    std::vector<ScalarField> out;
+    for (std::size_t i = 0; i < resolved.size(); ++i)
+      out.push_back(field(resolved[i], doc[i], path + "[" + std::to_string(i) + "]", variables));
+    return out;
+  }
+
+  // verification.user_solution: needed exactly when exact_solution is user.
+  void build_user_solution(const YAML::Node& v, const YAML::Node& doc) {
+    const bool user = s_.exact_solution == "user";
+    if (user != static_cast<bool>(v["user_solution"]))
+      fail(user ? doc["exact_solution"] : doc["user_solution"],
+           user ? "verification.exact_solution" : "verification.user_solution",
+           user ? "exact_solution user needs verification.user_solution (the displacement as "
+                  "expressions)"
+                : "user_solution is read only with exact_solution: user");
+    if (!user) return;
+    const auto at_x = ExpressionVariables::position;
+    const auto& u = v["user_solution"];
+    const auto& ud = doc["user_solution"];
+    UserSolutionSpec spec;
+    spec.displacement = fields(u["displacement"], ud["displacement"],
+                               "verification.user_solution.displacement", at_x);
+    if (u["body_force"])
+      spec.body_force =
+          fields(u["body_force"], ud["body_force"], "verification.user_solution.body_force", at_x);
+    if (u["stress"]) {
+      for (const char* c : {"xx", "yy", "zz", "yz", "xz", "xy"}) {
+        const std::string path = std::string("verification.user_solution.stress.") + c;
+        spec.stress.push_back(u["stress"][c] ? field(u["stress"][c], ud["stress"][c], path, at_x)
+                                             : ScalarField{});
+      }
+    }
+    s_.user_solution = spec;
   }
 
   void build_stage(const YAML::Node& st, const YAML::Node& doc, std::size_t i) {

@@ -31,7 +31,15 @@ SpecPtr mesh_spec() {
                         .at_most(0.3),
                     "0")
           .optional("seed", integer("Seed of the perturbation's random numbers.").at_least(0), "1")
-          .optional("block_name", string("Name of the generated element block."), "block_1");
+          .optional("block_name", string("Name of the generated element block."), "block_1")
+          .optional("map",
+                    real_list("Coordinate map applied to every generated node: the new "
+                              "coordinates as expressions of the box coordinates x, y, z (e.g. "
+                              "[x*cos(y), x*sin(y)] bends [a, b] x [0, pi/2] into a quarter "
+                              "ring). Node and side sets keep their names.",
+                              "length")
+                        .items(2, 3)
+                        .varying(ExpressionVariables::position));
   return map("The background mesh: its nodes become the particles, its cells give nodal volumes, "
              "integration cells and node/side sets. Generated meshes have node and side sets xmin, "
              "xmax, ymin, ymax (zmin, zmax in 3D) and node set all.")
@@ -151,9 +159,10 @@ SpecPtr material_spec() {
 }
 
 std::vector<Key> component_keys(const std::string& what, const std::string& unit) {
-  return {optional_key("x", real(what + " in x.", unit)),
-          optional_key("y", real(what + " in y.", unit)),
-          optional_key("z", real(what + " in z (3D only).", unit))};
+  const auto v = ExpressionVariables::position_and_time;
+  return {optional_key("x", real(what + " in x.", unit).varying(v)),
+          optional_key("y", real(what + " in y.", unit).varying(v)),
+          optional_key("z", real(what + " in z (3D only).", unit).varying(v))};
 }
 
 SpecPtr boundary_condition_spec() {
@@ -211,13 +220,19 @@ SpecPtr load_spec() {
           {required_key("side_set", string("Side set the traction acts on.")),
            optional_key(
                "value",
-               real_list("Traction vector (force per reference area), one entry per dimension.",
+               real_list("Traction vector (force per reference area), one entry per dimension; "
+                         "each a number or an expression of x, y, z, t.",
                          "stress")
-                   .items(2, 3)),
+                   .items(2, 3)
+                   .varying(ExpressionVariables::position_and_time)),
            exact, curve})
       .variant("pressure",
                {required_key("side_set", string("Side set the pressure acts on.")),
-                required_key("value", real("Pressure, positive into the body.", "stress")), curve})
+                required_key("value", real("Pressure, positive into the body; a number or an "
+                                           "expression of x, y, z, t.",
+                                           "stress")
+                                          .varying(ExpressionVariables::position_and_time)),
+                curve})
       .variant("nodal_force",
                {required_key("node_set", string("Node set sharing the force equally.")),
                 required_key(
@@ -227,9 +242,11 @@ SpecPtr load_spec() {
       .variant("body_force",
                {optional_key("parts", string_list("Parts loaded; all when omitted.")),
                 optional_key("value",
-                             real_list("Force per unit reference volume, one entry per dimension.",
+                             real_list("Force per unit reference volume, one entry per "
+                                       "dimension; each a number or an expression of x, y, z, t.",
                                        "force/length^3")
-                                 .items(2, 3)),
+                                 .items(2, 3)
+                                 .varying(ExpressionVariables::position_and_time)),
                 exact, curve});
 }
 
@@ -237,9 +254,11 @@ SpecPtr initial_condition_spec() {
   return map("An initial condition on a node set.")
       .required("type", choice("Initial quantity.", {"velocity", "displacement"}))
       .required("node_set", string("Node set of the mesh."))
-      .required(
-          "value",
-          real_list("Vector value, one entry per dimension.", "length/time or length").items(2, 3));
+      .required("value", real_list("Vector value, one entry per dimension; each a number or an "
+                                   "expression of x, y, z.",
+                                   "length/time or length")
+                             .items(2, 3)
+                             .varying(ExpressionVariables::position));
 }
 
 SpecPtr curve_spec() {
@@ -368,10 +387,39 @@ SpecPtr verification_spec() {
           .required("quantity", string("What is measured, e.g. displacement_y@node_set:tip."))
           .required("value", real("Reference value.", "as the quantity"))
           .optional("tolerance", real("Relative tolerance.", "-").above(0), "0.01");
+  const auto at_x = ExpressionVariables::position;
+  auto user_solution =
+      map("An exact solution written in the scene (verification.exact_solution: user): the "
+          "displacement as expressions of x, y, z and, optionally, the stress and body force. "
+          "Error norms, from_exact_solution conditions and loads use it like a built-in one.")
+          .required("displacement",
+                    real_list("Exact displacement, one expression per dimension.", "length")
+                        .items(2, 3)
+                        .varying(at_x))
+          .optional("stress",
+                    map("Exact stress (Cauchy, small strain), for tractions taken from the "
+                        "exact solution; default: the part's linear elastic stress of the "
+                        "displacement's gradient (central differences).")
+                        .required("xx", real("sigma_xx.", "stress").varying(at_x))
+                        .required("yy", real("sigma_yy.", "stress").varying(at_x))
+                        .required("xy", real("sigma_xy.", "stress").varying(at_x))
+                        .optional("zz", real("sigma_zz (3D).", "stress").varying(at_x))
+                        .optional("yz", real("sigma_yz (3D).", "stress").varying(at_x))
+                        .optional("xz", real("sigma_xz (3D).", "stress").varying(at_x)))
+          .optional("body_force",
+                    real_list("Body force of the exact solution, one expression per dimension "
+                              "(default zero).",
+                              "force/length^3")
+                        .items(2, 3)
+                        .varying(at_x));
+  auto names = exact_solution_names();
+  names.push_back("user");
   return map("Optional: how the run checks itself (exact solution or reference values).")
       .optional("exact_solution",
-                choice("Named exact solution the error norms are measured against.",
-                       exact_solution_names()))
+                choice("Named exact solution the error norms are measured against; user: the "
+                       "one given in user_solution.",
+                       names))
+      .optional("user_solution", user_solution)
       .optional("parameters",
                 passthrough("Parameters of the exact solution; see docs/verification.md (e.g. "
                             "length, depth, load of the beam)."))
@@ -379,9 +427,20 @@ SpecPtr verification_spec() {
 }
 
 Spec build_scene_schema() {
+  auto probe =
+      map("A named point whose interpolated (MLS) displacement, strain and stress go to the "
+          "history file and the run report; reference_values may name them as "
+          "<field>_<component>@probe:<name>.")
+          .required("name", string("Probe name, unique."))
+          .required(
+              "point",
+              real_list("Reference coordinates, one entry per dimension.", "length").items(2, 3));
   SpecPtr root =
       map("An efg scene.")
           .optional("title", string("Free text written to the log and the Exodus title."), "\"\"")
+          .optional("parameters",
+                    passthrough("Named constants (name: number, or an expression of the earlier "
+                                "ones), usable in every number of the scene and in expressions."))
           .required("mesh", mesh_spec())
           .required("parts", list("Meshfree parts.", part_spec()).items(1, 1000000).unique_names())
           .required("materials",
@@ -409,6 +468,7 @@ Spec build_scene_schema() {
                         .unique_names(),
                     "[]")
           .optional("output", output_spec(), "{}")
+          .optional("probes", list("Points sampled at every record.", probe).unique_names(), "[]")
           .optional("verification", verification_spec());
   return *root;
 }

@@ -18,7 +18,9 @@ std::string Spec::type_name() const {
     case Type::list:
       return "list of maps";
     case Type::real:
-      return "real";
+      return expression == ExpressionVariables::none       ? "real"
+             : expression == ExpressionVariables::position ? "real or expression of x, y, z"
+                                                           : "real or expression of x, y, z, t";
     case Type::integer:
       return "integer";
     case Type::boolean:
@@ -28,6 +30,10 @@ std::string Spec::type_name() const {
     case Type::choice:
       return "choice";
     case Type::real_list:
+      if (expression != ExpressionVariables::none)
+        return expression == ExpressionVariables::position
+                   ? "list of reals or expressions of x, y, z"
+                   : "list of reals or expressions of x, y, z, t";
       return scalar_allowed ? "real or list of reals" : "list of reals";
     case Type::integer_list:
       return "list of integers";
@@ -88,6 +94,10 @@ Builder& Builder::items(std::size_t min, std::size_t max) {
 }
 Builder& Builder::scalar_allowed() {
   spec_.scalar_allowed = true;
+  return *this;
+}
+Builder& Builder::varying(ExpressionVariables variables) {
+  spec_.expression = variables;
   return *this;
 }
 Builder& Builder::key(const std::string& name, SpecPtr spec, bool required, std::string def) {

@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include "expressions/Expression.hpp"
+
 namespace efg::schema {
 
 enum class Type {
@@ -45,6 +47,9 @@ struct Spec {
   // numbers (also the items of real_list / integer_list)
   std::optional<double> min, max;
   bool min_exclusive = false, max_exclusive = false;
+  /// Numbers may always be written as expressions of the scene's parameters; keys that vary in
+  /// space (and time) also accept the variables x, y, z (and t): these stay text when resolved.
+  ExpressionVariables expression = ExpressionVariables::none;
   // choice, string_list
   std::vector<std::string> choices;
   // real_list, integer_list, string_list, list
@@ -75,6 +80,7 @@ class Builder {
   Builder& choices(std::vector<std::string> c);
   Builder& items(std::size_t min, std::size_t max);
   Builder& scalar_allowed();
+  Builder& varying(ExpressionVariables variables);
   Builder& key(const std::string& name, SpecPtr spec, bool required,
                std::string default_value = "");
   Builder& required(const std::string& name, SpecPtr spec) { return key(name, spec, true); }

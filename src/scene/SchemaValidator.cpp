@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <regex>
 #include <set>
 #include <sstream>
 
@@ -12,12 +13,13 @@
 namespace efg::schema {
 
 std::string located_message(const std::string& file, const YAML::Node& node,
-                            const std::string& path, const std::string& message) {
+                            const std::string& path, const std::string& message,
+                            int column_offset) {
   std::ostringstream o;
   o << file;
   if (node.IsDefined()) {  // a key the document lacks has no line to point at
     const auto mark = node.Mark();
-    if (mark.line >= 0) o << ":" << mark.line + 1 << ":" << mark.column + 1;
+    if (mark.line >= 0) o << ":" << mark.line + 1 << ":" << mark.column + 1 + column_offset;
   }
   o << ": " << (path.empty() ? "(top level)" : path) << ": " << message;
   return o.str();
@@ -46,6 +48,22 @@ bool is_quoted(const YAML::Node& node) {
   return node.Tag() == "!";
 }
 
+}  // namespace
+
+int expression_column_offset(const YAML::Node& node, int position) {
+  return (is_quoted(node) ? 1 : 0) + std::max(0, position);
+}
+
+namespace {
+
+const std::set<std::string>& reserved_parameter_names() {
+  static const std::set<std::string> names = {
+      "x",    "y",    "z",     "t",    "pi",   "_pi",  "_e",    "sin",   "cos",   "tan", "asin",
+      "acos", "atan", "atan2", "sinh", "cosh", "tanh", "asinh", "acosh", "atanh", "exp", "ln",
+      "log",  "log2", "log10", "sqrt", "abs",  "sign", "rint",  "min",   "max",   "sum", "avg"};
+  return names;
+}
+
 std::string first_sentence(const std::string& doc) {
   const auto end = doc.find(". ");
   return end == std::string::npos ? doc : doc.substr(0, end + 1);
@@ -54,6 +72,36 @@ std::string first_sentence(const std::string& doc) {
 class Validator {
  public:
   explicit Validator(std::string file) : file_(std::move(file)) {}
+
+  /// parameters: name -> number or expression of the earlier parameters, in file order.
+  YAML::Node read_parameters(const YAML::Node& node) {
+    YAML::Node out(YAML::NodeType::Map);
+    if (!node || node.IsNull()) return out;
+    if (!node.IsMap())
+      fail(node, "parameters",
+           "expected a map of named numbers (name: value), found " + describe_found(node));
+    for (const auto& kv : node) {
+      const auto name = kv.first.Scalar();
+      const auto path = "parameters." + name;
+      static const std::regex identifier("[A-Za-z][A-Za-z0-9_]*");
+      if (!std::regex_match(name, identifier))
+        fail(kv.first, path, "a parameter name starts with a letter and has letters, digits, _");
+      if (reserved_parameter_names().count(name))
+        fail(kv.first, path,
+             "'" + name + "' is a variable or function of expressions; choose another name");
+      if (parameters_.count(name))
+        fail(kv.first, path, "parameter '" + name + "' is defined twice");
+      if (!kv.second.IsScalar())
+        fail(kv.second, path,
+             "expected a real or an expression of earlier parameters, found " +
+                 describe_found(kv.second));
+      const double v =
+          constant_value(kv.second, path, "a real or an expression of earlier parameters");
+      parameters_[name] = v;
+      out[name] = v;
+    }
+    return out;
+  }
 
   YAML::Node check(const YAML::Node& node, const Spec& spec, const std::string& path) {
     switch (spec.type) {
@@ -84,12 +132,24 @@ class Validator {
     const std::string expected = "expected " + article(spec) + describe_expected(spec);
     if (!node.IsScalar()) fail(node, path, expected + ", found " + describe_found(node));
     switch (spec.type) {
-      case Type::real:
-        check_number(node, spec, path, false);
-        break;
-      case Type::integer:
-        check_number(node, spec, path, true);
-        break;
+      case Type::real: {
+        double v = 0;
+        if (spec.expression != ExpressionVariables::none) {
+          if (check_varying(node, spec, path, v)) return YAML::Clone(node);  // stays text
+          const bool below = spec.min && (spec.min_exclusive ? v <= *spec.min : v < *spec.min);
+          const bool above = spec.max && (spec.max_exclusive ? v >= *spec.max : v > *spec.max);
+          if (below || above)
+            fail(node, path,
+                 "expected a finite real " + spec.range_text() + ", found " + node.Scalar());
+          return is_plain_number(node) ? YAML::Clone(node) : YAML::Node(v);
+        }
+        v = check_number(node, spec, path, false);
+        return is_plain_number(node) ? YAML::Clone(node) : YAML::Node(v);
+      }
+      case Type::integer: {
+        const double v = check_number(node, spec, path, true);
+        return is_plain_number(node) ? YAML::Clone(node) : YAML::Node(static_cast<long long>(v));
+      }
       case Type::boolean: {
         bool b = false;
         if (is_quoted(node) || !YAML::convert<bool>::decode(node, b))
@@ -105,6 +165,11 @@ class Validator {
     return YAML::Clone(node);
   }
 
+  static bool is_plain_number(const YAML::Node& node) {
+    double v = 0;
+    return !is_quoted(node) && YAML::convert<double>::decode(node, v);
+  }
+
   static std::string article(const Spec& spec) {
     return spec.type == Type::integer ? "an " : (spec.type == Type::choice ? "" : "a ");
   }
@@ -114,6 +179,53 @@ class Validator {
     std::string text = spec.type_name();
     if (!spec.range_text().empty()) text += " " + spec.range_text();
     return text;
+  }
+
+  // The value of a constant expression (numbers and parameters); fails at the offending
+  // character with `expected` and the reason.
+  double constant_value(const YAML::Node& node, const std::string& path,
+                        const std::string& expected) {
+    try {
+      const Expression e(node.Scalar(), parameters_, ExpressionVariables::none);
+      const double v = e();
+      if (!std::isfinite(v))
+        fail(node, path,
+             "expected " + expected + ", found '" + node.Scalar() + "' = " + std::to_string(v) +
+                 " (not finite)");
+      return v;
+    } catch (const ExpressionError& e) {
+      throw InputError(
+          located_message(file_, node, path,
+                          "expected " + expected + ", found '" + node.Scalar() + "': " + e.what(),
+                          expression_column_offset(node, e.position())));
+    }
+  }
+
+  // A key that may vary: a number, a constant expression (resolved to its value) or an expression
+  // of the allowed variables (kept as text; evaluated at points by the scene/mesh checks).
+  // Returns true when the text stays an expression.
+  bool check_varying(const YAML::Node& node, const Spec& spec, const std::string& path,
+                     double& value) {
+    double number = 0;
+    if (!is_quoted(node) && YAML::convert<double>::decode(node, number) && std::isfinite(number)) {
+      value = number;
+      return false;
+    }
+    const std::string expected =
+        "a finite real or an expression of " +
+        std::string(spec.expression == ExpressionVariables::position ? "x, y, z" : "x, y, z, t") +
+        " and the parameters";
+    try {
+      const Expression e(node.Scalar(), parameters_, spec.expression);
+      if (e.uses_position() || e.uses_time()) return true;
+      value = constant_value(node, path, expected);
+      return false;
+    } catch (const ExpressionError& e) {
+      throw InputError(
+          located_message(file_, node, path,
+                          "expected " + expected + ", found '" + node.Scalar() + "': " + e.what(),
+                          expression_column_offset(node, e.position())));
+    }
   }
 
   double check_number(const YAML::Node& node, const Spec& spec, const std::string& path,
@@ -130,6 +242,15 @@ class Validator {
     const std::string expected = std::string("expected ") +
                                  (integral ? "an integer" : "a finite real") +
                                  (spec.range_text().empty() ? "" : " " + spec.range_text());
+    double plain = 0;
+    const bool plain_number = !is_quoted(node) && YAML::convert<double>::decode(node, plain);
+    if (!ok && !plain_number) {  // text: an expression of the parameters
+      value = constant_value(node, path,
+                             std::string(integral ? "an integer" : "a finite real") +
+                                 (spec.range_text().empty() ? "" : " " + spec.range_text()) +
+                                 " or an expression of the parameters");
+      ok = !integral || value == std::round(value);
+    }
     if (!ok) fail(node, path, expected + ", found " + describe_found(node));
     const bool below = spec.min && (spec.min_exclusive ? value <= *spec.min : value < *spec.min);
     const bool above = spec.max && (spec.max_exclusive ? value >= *spec.max : value > *spec.max);
@@ -295,12 +416,18 @@ class Validator {
   }
 
   std::string file_;
+  std::map<std::string, double> parameters_;
 };
 
 }  // namespace
 
 YAML::Node validate(const YAML::Node& document, const Spec& spec, const std::string& file) {
-  return Validator(file).check(document, spec, "");
+  Validator v(file);
+  const bool has_parameters = document.IsMap() && document["parameters"];
+  const auto parameters = v.read_parameters(has_parameters ? document["parameters"] : YAML::Node());
+  auto out = v.check(document, spec, "");
+  if (has_parameters) out["parameters"] = parameters;
+  return out;
 }
 
 }  // namespace efg::schema

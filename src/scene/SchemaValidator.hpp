@@ -14,7 +14,12 @@ namespace efg::schema {
 YAML::Node validate(const YAML::Node& document, const Spec& spec, const std::string& file);
 
 /// "FILE:LINE:COL: PATH: MESSAGE" for a node of a parsed document (line and column 1-based).
+/// column_offset: characters right of the node's first one (an expression's faulty character).
 std::string located_message(const std::string& file, const YAML::Node& node,
-                            const std::string& path, const std::string& message);
+                            const std::string& path, const std::string& message,
+                            int column_offset = 0);
+
+/// Column offset of character `position` of an expression written as this scalar (quotes skipped).
+int expression_column_offset(const YAML::Node& node, int position);
 
 }  // namespace efg::schema

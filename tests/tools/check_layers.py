@@ -4,7 +4,7 @@ top-level folders must go from a higher layer to a lower one (or stay inside its
 no cycle can form. The order, lowest first:
 
   tensor < materials                     physics kernels (physics/), free of Trilinos
-  core < geometry < mesh < parallel < io < scene < discretization
+  core < expressions < geometry < mesh < parallel < io < scene < discretization
   < model                                model data the operators read (scene, mesh, parts,
                                          curves, exact solutions)
   < solvers < operators < verification   verification: error norms of a solution
@@ -17,7 +17,7 @@ import os
 import re
 import sys
 
-ORDER = ["tensor", "materials", "core", "geometry", "mesh", "parallel", "io", "scene",
+ORDER = ["tensor", "materials", "core", "expressions", "geometry", "mesh", "parallel", "io", "scene",
          "discretization", "model", "solvers", "operators", "verification", "contact", "drivers",
          "run",
          "app"]

@@ -1,0 +1,131 @@
+#include "run/Probes.hpp"
+
+#include <Teuchos_CommHelpers.hpp>
+
+#include <limits>
+#include <sstream>
+
+#include "discretization/ShapeFunctions.hpp"
+#include "model/MaterialLaws.hpp"
+
+namespace efg {
+namespace {
+
+const char* tensor_components(int dim) {
+  return dim == 2 ? "xx yy xy" : "xx yy zz yz xz xy";
+}
+
+std::vector<std::pair<int, int>> tensor_indices(int dim) {
+  if (dim == 2) return {{0, 0}, {1, 1}, {0, 1}};
+  return {{0, 0}, {1, 1}, {2, 2}, {1, 2}, {0, 2}, {0, 1}};
+}
+
+// Stress columns only when every part's law is elastic (a plastic law's stress needs the
+// history of a point that has none).
+bool elastic_parts(const Scene& scene) {
+  for (const auto& part : scene.parts)
+    if (scene.find_material(part.material)->model == "j2_plasticity") return false;
+  return true;
+}
+
+// The (part, rank) that evaluates a probe: the owner of the nearest particle; -1 on other ranks.
+int nearest_part(const Model& model, const double* point) {
+  const auto udim = static_cast<std::size_t>(model.mesh.dimension);
+  double best = std::numeric_limits<double>::max();
+  int best_part = -1;
+  for (std::size_t p = 0; p < model.parts.size(); ++p)
+    for (std::size_t j = 0; j < model.parts[p].cloud.owned_count; ++j) {
+      double d2 = 0;
+      for (std::size_t k = 0; k < udim; ++k) {
+        const double e = model.parts[p].cloud.x(j)[k] - point[k];
+        d2 += e * e;
+      }
+      if (d2 < best) {
+        best = d2;
+        best_part = static_cast<int>(p);
+      }
+    }
+  const auto& comm = *model.maps.owned_dofs->getComm();
+  double global_best = 0;
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_MIN, best, Teuchos::outArg(global_best));
+  const int candidate = best == global_best ? comm.getRank() : comm.getSize();
+  int winner = 0;
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_MIN, candidate, Teuchos::outArg(winner));
+  return comm.getRank() == winner ? best_part : -1;
+}
+
+template <int Dim>
+void stress_at(const physics::SolidMaterial& m, const double (&g)[3][3], double (&s)[3][3]) {
+  double H[Dim][Dim], P[Dim][Dim] = {};  // stays 0 at an inverted point (det F <= 0)
+  for (int i = 0; i < Dim; ++i)
+    for (int j = 0; j < Dim; ++j) H[i][j] = g[i][j];
+  physics::stress<Dim>(m, H, P);
+  for (int i = 0; i < Dim; ++i)
+    for (int j = 0; j < Dim; ++j) s[i][j] = P[i][j];
+}
+
+}  // namespace
+
+std::vector<std::string> probe_names(const Scene& scene, int dimension) {
+  std::vector<std::string> names;
+  const std::string axes = "xyz";
+  const bool stress = elastic_parts(scene);
+  for (const auto& probe : scene.probes) {
+    const auto prefix = "probe_" + probe.name + "_";
+    for (int d = 0; d < dimension; ++d)
+      names.push_back(prefix + "u" + axes[static_cast<std::size_t>(d)]);
+    for (const char* kind : {"e", "s"}) {
+      if (*kind == 's' && !stress) continue;
+      std::istringstream components(tensor_components(dimension));
+      for (std::string c; components >> c;) names.push_back(prefix + kind + c);
+    }
+  }
+  return names;
+}
+
+std::vector<double> probe_values(const Model& model, const SolidOperator& op,
+                                 const Vector& d_overlap) {
+  const int dim = model.mesh.dimension;
+  const auto udim = static_cast<std::size_t>(dim);
+  const bool with_stress = elastic_parts(model.scene);
+  const auto pairs = tensor_indices(dim);
+  const std::size_t per_probe = udim + pairs.size() * (with_stress ? 2 : 1);
+  std::vector<double> local(per_probe * model.scene.probes.size(), 0.0);
+  const auto d = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
+  for (std::size_t i = 0; i < model.scene.probes.size(); ++i) {
+    const auto& probe = model.scene.probes[i];
+    const int p = nearest_part(model, probe.point.data());
+    if (p < 0) continue;
+    const auto part = static_cast<std::size_t>(p);
+    const auto v =
+        evaluate_shape_functions(model.parts[part].cloud, probe.point.data(), 1, true,
+                                 [&](std::size_t) { return "probe '" + probe.name + "'"; });
+    double u[3] = {0, 0, 0}, g[3][3] = {};
+    for (auto k = v.neighbors.offsets[0]; k < v.neighbors.offsets[1]; ++k) {
+      const auto n = static_cast<std::size_t>(
+          op.overlap_node(part)[static_cast<std::size_t>(v.neighbors.particles[k])]);
+      for (std::size_t a = 0; a < udim; ++a) {
+        u[a] += v.phi[k] * d(n * udim + a, 0);
+        for (std::size_t b = 0; b < udim; ++b) g[a][b] += d(n * udim + a, 0) * v.grad[k * udim + b];
+      }
+    }
+    double* out = &local[i * per_probe];
+    for (std::size_t a = 0; a < udim; ++a) *out++ = u[a];
+    for (const auto& [a, b] : pairs) *out++ = 0.5 * (g[a][b] + g[b][a]);
+    if (!with_stress) continue;
+    const auto law = material_law(model.scene, *model.parts[part].part, dim);
+    double s[3][3] = {};
+    if (dim == 2)
+      stress_at<2>(law.elastic, g, s);
+    else
+      stress_at<3>(law.elastic, g, s);
+    for (const auto& [a, b] : pairs) *out++ = s[a][b];
+  }
+  std::vector<double> global(local.size(), 0.0);
+  if (!local.empty())
+    Teuchos::reduceAll(*model.maps.owned_dofs->getComm(), Teuchos::REDUCE_SUM,
+                       static_cast<int>(local.size()), local.data(), global.data());
+  return global;
+}
+
+}  // namespace efg
