@@ -2,6 +2,7 @@
 
 #include <muParser.h>
 
+#include <algorithm>
 #include <cmath>
 #include <regex>
 
@@ -93,17 +94,21 @@ Expression::Expression(const std::string& text, const std::map<std::string, doub
     }
     if (variables == ExpressionVariables::position_and_time) p.DefineVar("t", &compiled_->t);
     p.SetExpr(text);
-    const auto used = p.GetUsedVar();  // parses the whole text: every syntax error surfaces here
+    // Eval parses with the defined names only (every syntax error and unknown name surfaces
+    // here) and compiles to bytecode; GetUsedVar afterwards (it tolerates unknown names).
+    p.Eval();
+    const auto used = p.GetUsedVar();
     uses_time_ = used.count("t") > 0;
     uses_position_ = used.count("x") + used.count("y") + used.count("z") > 0;
-    p.Eval();  // compiles to bytecode
     if (p.GetNumResults() != 1)
       throw ExpressionError(
           "one value expected, found " + std::to_string(p.GetNumResults()) + " separated by ','",
           static_cast<int>(text.find(',')));
   } catch (const mu::ParserError& e) {
     // GetPos is muParser's 0-based index of the offending token (-1 when unknown).
-    throw ExpressionError(reason(e, variables), e.GetPos());
+    // at the end of the text muParser may point one past it
+    throw ExpressionError(reason(e, variables),
+                          std::min(e.GetPos(), static_cast<int>(text.size())));
   }
 }
 

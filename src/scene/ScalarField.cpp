@@ -12,8 +12,9 @@ double ScalarField::at(const double* p, double t) const {
   if (!std::isfinite(v)) {
     std::ostringstream o;
     o.precision(10);
-    o << where << ": '" << expression->text() << "' is " << v << " at (" << p[0] << ", " << p[1]
-      << ", " << p[2] << ")";
+    o << where << ": '" << expression->text() << "' is " << (std::isnan(v) ? "nan" : "")
+      << (std::isnan(v) ? "" : std::to_string(v).substr(0, std::isinf(v) && v < 0 ? 4 : 3))
+      << " at (" << p[0] << ", " << p[1] << ", " << p[2] << ")";
     if (expression->uses_time()) o << ", t = " << t;
     o << "; expected a finite value everywhere it is used";
     throw InputError(o.str());

@@ -20,7 +20,7 @@ TEST(LinearSolve, OneNewtonStepSolvesTheLinearBeam) {
   const auto model =
       build_model(comm, parse_scene(test::beam_scene(32, 8, 0.0), "linear_solve.yaml"));
   StaticProblem problem(model);
-  problem.set_load_factor([](const std::string&) { return 1.0; });
+  problem.set_load_factor(LoadFactor([](const std::string&) { return 1.0; }, 1.0));
   Vector d(model.maps.owned_dofs), r0(model.maps.owned_dofs), r1(model.maps.owned_dofs),
       dx(model.maps.owned_dofs);
   auto K = problem.create_matrix();

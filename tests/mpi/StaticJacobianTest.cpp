@@ -21,7 +21,7 @@ TEST_P(StaticJacobian, MatchesCentralDifferences) {
   const std::string text = test::beam_scene(16, 4, 0.2, GetParam());
   const auto model = build_model(comm, parse_scene(text, "jacobian.yaml"));
   StaticProblem problem(model);
-  problem.set_load_factor([](const std::string&) { return 1.0; });
+  problem.set_load_factor(LoadFactor([](const std::string&) { return 1.0; }, 1.0));
   Vector d(model.maps.owned_dofs), v(model.maps.owned_dofs), Kv(model.maps.owned_dofs);
   d.randomize(-1e-3, 1e-3);
   v.randomize(-1.0, 1.0);
