@@ -9,7 +9,7 @@ packages=(
   trilinos-all-dev libopenmpi-dev openmpi-bin
   libptscotch-dev libscotch-dev  # Debian's Trilinos CMake config links them without depending on them
   libexodusii-dev libnetcdf-dev
-  libyaml-cpp-dev libgtest-dev
+  libyaml-cpp-dev libgtest-dev python3-yaml
   libmuparser-dev        # expressions in scene values (issue 19)
   libsuitesparse-dev     # UMFPACK, the direct solver
   libopenblas0-serial    # one-thread optimized BLAS: UMFPACK's frontal matrices 1.7x faster than reference

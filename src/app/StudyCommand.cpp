@@ -95,9 +95,12 @@ std::vector<std::vector<std::string>> combinations(const std::vector<Sweep>& swe
 
 // The scene text of one run: the sweep values set, the generated mesh refined by factor^level;
 // `h` receives the largest cell size.
-std::string level_scene(const std::string& text, const std::vector<Sweep>& sweeps,
-                        const std::vector<std::string>& combo, const CommandLine& cl, int level,
-                        double& h) {
+// The mesh sizes come from the validated base scene (they may be expressions of parameters);
+// with a coordinate map, h is the cell size of the box before the map (its ratios between levels,
+// all the rate fits use, are those of the mapped mesh).
+std::string level_scene(const std::string& text, const GeneratorSpec& base,
+                        const std::vector<Sweep>& sweeps, const std::vector<std::string>& combo,
+                        const CommandLine& cl, int level, double& h) {
   YAML::Node doc = YAML::Load(text);
   for (std::size_t i = 0; i < sweeps.size(); ++i)
     node_at(doc, sweeps[i].key, cl.scene) = YAML::Load(combo[i]);
@@ -105,11 +108,9 @@ std::string level_scene(const std::string& text, const std::vector<Sweep>& sweep
   auto cells = doc["mesh"]["generate"]["cells"];
   h = 0;
   for (std::size_t d = 0; d < cells.size(); ++d) {
-    const int n = static_cast<int>(std::lround(cells[d].as<int>() * scale));
+    const int n = static_cast<int>(std::lround(base.cells[d] * scale));
     cells[d] = n;
-    h = std::max(h, (doc["mesh"]["generate"]["upper"][d].as<double>() -
-                     doc["mesh"]["generate"]["lower"][d].as<double>()) /
-                        n);
+    h = std::max(h, (base.upper[d] - base.lower[d]) / n);
   }
   YAML::Emitter out;
   out << doc;
@@ -140,7 +141,7 @@ void study_command(const CommPtr& comm, const CommandLine& cl) {
   for (const auto& combo : combinations(sweeps))
     for (int level = 0; level < cl.levels; ++level) {
       double h = 0;
-      const auto scene_text = level_scene(text, sweeps, combo, cl, level, h);
+      const auto scene_text = level_scene(text, *base.generator, sweeps, combo, cl, level, h);
       std::string label = base.name;
       for (const auto& v : combo) label += "_" + v;
       label += "_L" + std::to_string(level);

@@ -1,7 +1,5 @@
 #include "operators/ExternalLoads.hpp"
 
-#include <Tpetra_Export.hpp>
-
 #include <algorithm>
 
 #include "core/Errors.hpp"
@@ -153,16 +151,17 @@ std::array<double, 3> load_value(const LoadSpec& spec, const ExactSolution* exac
   return value;
 }
 
-void scatter(const LoadSpec& spec, const ExactSolution* exact, int dim, const Points& pts, double t,
-             Vector& f_overlap) {
+// f_overlap += scale * sum over points of phi_I(x_p) value(x_p, t) w_p.
+void scatter(const LoadSpec& spec, const ExactSolution* exact, int dim, const Points& pts,
+             double t, double scale, Vector& f_overlap) {
   auto f = f_overlap.getLocalViewHost(Tpetra::Access::ReadWrite);
   const auto udim = static_cast<std::size_t>(dim);
   for (std::size_t q = 0; q < pts.weight.size(); ++q) {
-    const auto value = load_value(spec, exact, dim, pts, q, t);
+    auto value = load_value(spec, exact, dim, pts, q, t);
+    for (auto& v : value) v *= scale * pts.weight[q];
     for (auto k = pts.rows.offsets[q]; k < pts.rows.offsets[q + 1]; ++k) {
       const auto node = static_cast<std::size_t>(pts.rows.particles[k]);
-      for (std::size_t i = 0; i < udim; ++i)
-        f(node * udim + i, 0) += pts.rows.values[k] * value[i] * pts.weight[q];
+      for (std::size_t i = 0; i < udim; ++i) f(node * udim + i, 0) += pts.rows.values[k] * value[i];
     }
   }
 }
@@ -179,8 +178,8 @@ ExternalLoads::ExternalLoads(const Model& model, const SolidOperator& op,
     : exact_(exact),
       dim_(model.mesh.dimension),
       overlap_(model.maps.overlap_dofs),
-      owned_(model.maps.owned_dofs) {
-  Tpetra::Export<> to_owned(overlap_, owned_);
+      owned_(model.maps.owned_dofs),
+      to_owned_(Teuchos::rcp(new Tpetra::Export<>(overlap_, owned_))) {
   for (const auto& spec : model.scene.loads) {
     Load load{&spec, Teuchos::null, {}};
     if (spec.type == "body_force") {
@@ -192,9 +191,9 @@ ExternalLoads::ExternalLoads(const Model& model, const SolidOperator& op,
     }
     if (!varies_in_time(spec)) {  // assembled once for a unit factor; the points are dropped
       Vector f_overlap(overlap_);
-      scatter(spec, exact_, dim_, load.points, 0.0, f_overlap);
+      scatter(spec, exact_, dim_, load.points, 0.0, 1.0, f_overlap);
       load.force = Teuchos::rcp(new Vector(owned_));
-      load.force->doExport(f_overlap, to_owned, Tpetra::ADD);
+      load.force->doExport(f_overlap, *to_owned_, Tpetra::ADD);
       load.points = Points{};
     }
     loads_.push_back(std::move(load));
@@ -207,16 +206,14 @@ void ExternalLoads::assemble(const LoadFactor& factor, Vector& f_owned) const {
   for (const auto& l : loads_) {
     if (l.force.is_null()) {
       if (timed.is_null()) timed = Teuchos::rcp(new Vector(overlap_));
-      Vector one(overlap_);
-      scatter(*l.spec, exact_, dim_, l.points, factor.time(), one);
-      timed->update(factor(l.spec->curve), one, 1.0);
+      scatter(*l.spec, exact_, dim_, l.points, factor.time(), factor(l.spec->curve), *timed);
     } else {
       f_owned.update(factor(l.spec->curve), *l.force, 1.0);
     }
   }
   if (!timed.is_null()) {
     Vector owned(owned_);
-    owned.doExport(*timed, Tpetra::Export<>(overlap_, owned_), Tpetra::ADD);
+    owned.doExport(*timed, *to_owned_, Tpetra::ADD);
     f_owned.update(1.0, owned, 1.0);
   }
 }

@@ -6,6 +6,8 @@
 // weight, normal, shape-function row) and evaluates its expressions there at every assembly.
 #pragma once
 
+#include <Tpetra_Export.hpp>
+
 #include <string>
 #include <vector>
 
@@ -45,6 +47,7 @@ class ExternalLoads {
   const ExactSolution* exact_;
   int dim_;
   Teuchos::RCP<const Map> overlap_, owned_;
+  Teuchos::RCP<const Tpetra::Export<>> to_owned_;
 };
 
 /// Index of the scene part whose blocks contain block `name`, or -1.

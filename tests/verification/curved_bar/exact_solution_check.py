@@ -315,10 +315,22 @@ def symbolic_checks(chk):
     loc = {"x": x, "y": y, "a": a, "b": b, "P": P, "E": E, "nu": nu,
            "log": sp.log, "sqrt": sp.sqrt, "sin": sp.sin, "cos": sp.cos,
            "arctan2": sp.atan2, "pi": sp.pi}
+    # the derived constants as plain symbols (sympy's integrate stalls on the full expressions),
+    # and their definitions, substituted last to first to reach a, b, P, E, nu
+    definitions = []
     for name, expr in CONSTANTS:
-        loc[name] = sp.sympify(to_python(expr), locals=loc)
-    F = {k: sp.sympify(to_python(v), locals=loc) for k, v in FIELDS.items()}
-    T = {k: sp.sympify(to_python(v), locals=loc) for k, v in TRACTION.items()}
+        definitions.append((sp.Symbol(name), sp.sympify(to_python(expr), locals=loc)))
+        loc[name] = definitions[-1][0]
+
+    def full(e):
+        for sym, value in reversed(definitions):
+            e = e.subs(sym, value)
+        return e
+
+    Fs = {k: sp.sympify(to_python(v), locals=loc) for k, v in FIELDS.items()}
+    Ts = {k: sp.sympify(to_python(v), locals=loc) for k, v in TRACTION.items()}
+    F = {k: full(v) for k, v in Fs.items()}
+    T = {k: full(v) for k, v in Ts.items()}
 
     def is_zero(e):
         # logs split into ln of symbols, then numerator of the rational function must expand to 0
@@ -334,12 +346,10 @@ def symbolic_checks(chk):
             chk.failed.append("symbolic: " + label)
 
     def definite(integrand, var):
-        G = sp.integrate(integrand, var)  # antiderivative; checked, then evaluated at a and b
-        zero(f"     antiderivative of {label_of(integrand)}", sp.diff(G, var) - integrand)
-        return G.subs(var, b) - G.subs(var, a)
-
-    def label_of(e):
-        return str(e)[:40]
+        """integrand with the constants as symbols; result with them substituted"""
+        G = sp.integrate(integrand, var)  # antiderivative, checked, then evaluated at a and b
+        zero(f"     d/d{var} antiderivative - ({str(integrand)[:36]})", sp.diff(G, var) - integrand)
+        return full(G.subs(var, b) - G.subs(var, a))
 
     hxx = (F["sxx"] - nu * F["syy"]) / E
     hyy = (F["syy"] - nu * F["sxx"]) / E
@@ -357,10 +367,10 @@ def symbolic_checks(chk):
         zero(f"(iii) t_y on r = {name}", (F["sxy"] * cs + F["syy"] * sn).subs(sub))
     zero("(iv) t_x + sxy(x, 0)", T["t_x"] + F["sxy"].subs(y, 0))
     zero("(iv) t_y + syy(x, 0)", T["t_y"] + F["syy"].subs(y, 0))
-    zero("(iv) integral_a^b t_x dx + P", definite(T["t_x"], x) + P)
-    zero("(iv) fixed end: integral_a^b -sxx(0, y) dy - P", definite(-F["sxx"].subs(x, 0), y) - P)
+    zero("(iv) integral_a^b t_x dx + P", definite(Ts["t_x"], x) + P)
+    zero("(iv) fixed end: integral_a^b -sxx(0, y) dy - P", definite(-Fs["sxx"].subs(x, 0), y) - P)
     zero("(iv) fixed end: integral_a^b y sxx(0, y) dy (moment)",
-         definite(y * F["sxx"].subs(x, 0), y))
+         definite(y * Fs["sxx"].subs(x, 0), y))
     r0 = (a + b) / 2
     u_th = -F["u_x"]  # at theta = pi/2: e_theta = -e_x
     zero("(v) u_r = u_y at (0, r0)", F["u_y"].subs({x: 0, y: r0}))
