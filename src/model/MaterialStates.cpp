@@ -1,5 +1,7 @@
 #include "model/MaterialStates.hpp"
 
+#include "model/GradedMaterials.hpp"
+
 namespace efg {
 
 MaterialStates::MaterialStates(const Model& model) {
@@ -8,6 +10,14 @@ MaterialStates::MaterialStates(const Model& model) {
     s.law = material_law(model.scene, *d.part, model.mesh.dimension);
     const MaterialLaw& law = s.law;
     s.count = law.state_count();
+    const auto scale = modulus_scale(*model.scene.find_material(d.part->material),
+                                     d.points.x.data(), d.points.size(), model.mesh.dimension);
+    if (!scale.empty()) {
+      s.modulus_scale = DeviceView<double*>("efg::modulus scale", scale.size());
+      auto host = Kokkos::create_mirror_view(s.modulus_scale);
+      for (std::size_t q = 0; q < scale.size(); ++q) host(q) = scale[q];
+      Kokkos::deep_copy(s.modulus_scale, host);
+    }
     if (s.count > 0) {
       const std::size_t points = d.points.size(), count = static_cast<std::size_t>(s.count);
       s.committed = DeviceView<double**>("efg::history committed", points, count);

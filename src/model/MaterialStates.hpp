@@ -23,6 +23,8 @@ class MaterialStates {
     MaterialLaw law;  ///< the part's law (the operators read it from here)
     int count = 0;    ///< doubles per point (0: none)
     DeviceView<double**> committed, trial;
+    /// Graded elastic material: E(x_q)/E_ref per integration point (empty view otherwise).
+    DeviceView<double*> modulus_scale;
   };
 
   /// One block per part of the model, sized by its law, set to the law's initial state.

@@ -8,6 +8,7 @@
 #include "io/ExodusReader.hpp"
 #include "mesh/MeshGenerator.hpp"
 #include "mesh/MeshValidation.hpp"
+#include "model/GradedMaterials.hpp"
 #include "parallel/Collective.hpp"
 #include "parallel/MeshBroadcast.hpp"
 #include "parallel/RootBroadcast.hpp"
@@ -58,6 +59,7 @@ Model build_model(const CommPtr& comm, Scene scene) {
   {
     Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewCounter("efg: scene and mesh"));
     model.mesh = load_mesh(comm, model.scene);
+    set_graded_references(model.scene, model.mesh);
   }
   {
     Teuchos::TimeMonitor timer(

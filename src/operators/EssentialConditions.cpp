@@ -1,5 +1,7 @@
 #include "operators/EssentialConditions.hpp"
 
+#include "model/GradedMaterials.hpp"
+
 #include <Teuchos_CommHelpers.hpp>
 #include <Tpetra_Export.hpp>
 #include <Tpetra_MultiVector.hpp>
@@ -153,6 +155,8 @@ long long EssentialConditions::add_boundary_points(const Model& model, const Sol
           return "boundary point " + std::to_string(q) + " of condition '" + bc.name + "'";
         });
     const MaterialLaw& law = op.history().part(p).law;
+    const auto scale = modulus_scale(*model.scene.find_material(d.part->material), x.data(),
+                                     pts.size(), dim_);  // graded material: E(x)/E_ref
     for (std::size_t q = 0; q < pts.size(); ++q) {
       BoundaryPoint b;
       b.condition = setup.index;
@@ -167,6 +171,10 @@ long long EssentialConditions::add_boundary_points(const Model& model, const Sol
       b.method = setup.method;
       b.beta = beta[q];
       b.law = law;
+      if (!scale.empty()) {
+        b.law.elastic.lambda *= scale[q];
+        b.law.elastic.mu *= scale[q];
+      }
       if (law.plastic) {
         b.history = committed_.size();
         double initial[physics::j2_state::count];

@@ -19,7 +19,20 @@ struct PointMaterial {
   physics::J2Parameters j2;
   DeviceView<double**> committed, trial;  ///< points x j2_state::count (plastic parts)
   double step_time = 0.0;                 ///< time increment of the step (rate term)
+  /// Graded elastic parts: E(x_q)/E_ref scales lambda and mu at q (empty: uniform part).
+  DeviceView<double*> modulus_scale;
+  bool graded = false;
 };
+
+/// The elastic law at q: the part's, scaled at a graded point.
+KOKKOS_INLINE_FUNCTION physics::SolidMaterial elastic_at(const PointMaterial& m, int q) {
+  physics::SolidMaterial e = m.elastic;
+  if (m.graded) {
+    e.lambda *= m.modulus_scale(q);
+    e.mu *= m.modulus_scale(q);
+  }
+  return e;
+}
 
 namespace point_material_detail {
 // A point's history is one row of a row-major view: its doubles are contiguous, so the row can
@@ -40,7 +53,7 @@ template <int Dim>
 KOKKOS_INLINE_FUNCTION bool point_stress(const PointMaterial& m, int q, const double (&H)[Dim][Dim],
                                          double (&P)[Dim][Dim],
                                          double (*A)[Dim][Dim][Dim] = nullptr) {
-  if (!m.plastic) return physics::stress<Dim>(m.elastic, H, P, A);
+  if (!m.plastic) return physics::stress<Dim>(elastic_at(m, q), H, P, A);
   using namespace point_material_detail;
   double cauchy[3][3];
   if (A)
@@ -57,7 +70,7 @@ KOKKOS_INLINE_FUNCTION bool point_stress(const PointMaterial& m, int q, const do
 template <int Dim>
 KOKKOS_INLINE_FUNCTION double point_energy(const PointMaterial& m, int q,
                                            const double (&H)[Dim][Dim]) {
-  if (!m.plastic) return physics::strain_energy<Dim>(m.elastic, H);
+  if (!m.plastic) return physics::strain_energy<Dim>(elastic_at(m, q), H);
   using namespace point_material_detail;
   double P[Dim][Dim], next[physics::j2_state::count], cauchy[3][3];
   if (!physics::j2_update<double, Dim>(m.j2, H, row(m.committed, q), m.step_time, P, next, cauchy))
@@ -70,7 +83,7 @@ template <int Dim>
 KOKKOS_INLINE_FUNCTION void point_cauchy_stress(const PointMaterial& m, int q,
                                                 const double (&H)[Dim][Dim],
                                                 double (&sigma)[3][3]) {
-  if (!m.plastic) return physics::cauchy_stress<Dim>(m.elastic, H, sigma);
+  if (!m.plastic) return physics::cauchy_stress<Dim>(elastic_at(m, q), H, sigma);
   using namespace point_material_detail;
   double P[Dim][Dim], next[physics::j2_state::count];
   if (!physics::j2_update<double, Dim>(m.j2, H, row(m.committed, q), m.step_time, P, next, sigma))

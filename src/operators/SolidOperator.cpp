@@ -64,8 +64,14 @@ SolidOperator::SolidOperator(const Model& model) : dim_(model.mesh.dimension), h
     p.device.slot = slot;
     const auto& states = history_.part(parts_.size());
     const MaterialLaw& law = states.law;
-    p.device.material =
-        PointMaterial{law.elastic, law.plastic, law.j2, states.committed, states.trial, 0.0};
+    p.device.material = PointMaterial{law.elastic,
+                                      law.plastic,
+                                      law.j2,
+                                      states.committed,
+                                      states.trial,
+                                      0.0,
+                                      states.modulus_scale,
+                                      states.modulus_scale.extent(0) > 0};
     p.small_strain = d.part->section.formulation == Formulation::small_strain;
     p.points = ip.size();
     p.x = ip.x;

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "discretization/ShapeFunctions.hpp"
+#include "model/GradedMaterials.hpp"
 #include "model/MaterialLaws.hpp"
 
 namespace efg {
@@ -113,7 +114,13 @@ std::vector<double> probe_values(const Model& model, const SolidOperator& op,
     for (std::size_t a = 0; a < udim; ++a) *out++ = u[a];
     for (const auto& [a, b] : pairs) *out++ = 0.5 * (g[a][b] + g[b][a]);
     if (!with_stress) continue;
-    const auto law = material_law(model.scene, *model.parts[part].part, dim);
+    auto law = material_law(model.scene, *model.parts[part].part, dim);
+    const auto scale = modulus_scale(*model.scene.find_material(model.parts[part].part->material),
+                                     probe.point.data(), 1, 3);
+    if (!scale.empty()) {  // graded material: E at the probe
+      law.elastic.lambda *= scale[0];
+      law.elastic.mu *= scale[0];
+    }
     double s[3][3] = {};
     if (dim == 2)
       stress_at<2>(law.elastic, g, s);

@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <set>
+#include <sstream>
+
+#include "core/Errors.hpp"
 
 namespace efg {
 namespace {
@@ -49,6 +52,32 @@ class NodeEvaluation {
           nodes.insert(n);
     return {nodes.begin(), nodes.end()};
   }
+  std::vector<LocalIndex> part_nodes(const Scene& scene, const std::string& material) const {
+    std::set<LocalIndex> nodes;
+    for (const auto& part : scene.parts) {
+      if (part.material != material) continue;
+      for (const auto& b : mesh_.blocks)
+        if (std::find(part.blocks.begin(), part.blocks.end(), b.name) != part.blocks.end())
+          nodes.insert(b.connectivity.begin(), b.connectivity.end());
+    }
+    return {nodes.begin(), nodes.end()};
+  }
+  // A graded modulus must be positive wherever its material is.
+  void check_positive(const ScalarField& f, const std::vector<LocalIndex>& nodes) const {
+    const auto dim = static_cast<std::size_t>(mesh_.dimension);
+    for (auto n : nodes) {
+      double X[3] = {0, 0, 0};
+      for (std::size_t k = 0; k < dim; ++k)
+        X[k] = mesh_.coordinates[static_cast<std::size_t>(n) * dim + k];
+      if (const double v = f.at(X, 0.0); !(v > 0)) {
+        std::ostringstream o;
+        o << f.where << ": expected a positive value everywhere in the material's parts, found '"
+          << f.expression->text() << "' = " << v << " at (" << X[0] << ", " << X[1] << ", " << X[2]
+          << ")";
+        throw InputError(o.str());
+      }
+    }
+  }
   std::vector<LocalIndex> all_nodes() const {
     std::vector<LocalIndex> nodes(mesh_.node_count());
     for (std::size_t n = 0; n < nodes.size(); ++n) nodes[n] = static_cast<LocalIndex>(n);
@@ -76,6 +105,9 @@ void check_expressions_at_nodes(const Scene& scene, const BackgroundMesh& mesh) 
       at.check(load.value, at.all_nodes());  // a superset of the parts' nodes
   }
   for (const auto& ic : scene.initial_conditions) at.check(ic.value, at.node_set(ic.node_set));
+  for (const auto& m : scene.materials)
+    if (m.youngs_modulus_field)
+      at.check_positive(*m.youngs_modulus_field, at.part_nodes(scene, m.name));
   if (scene.user_solution) {
     const auto nodes = at.all_nodes();
     at.check(scene.user_solution->displacement, nodes);

@@ -22,6 +22,22 @@ enum class SpacingMeasure { cells, neighbors };
 enum class Integration { scni, nodal, gauss };
 enum class Formulation { small_strain, total_lagrangian };
 
+/// A scene value that may vary over position and time: a number, or an expression of x, y, z (and
+/// t where the key allows it) compiled once (src/expressions).
+struct ScalarField {
+  double constant = 0;
+  std::shared_ptr<const Expression> expression;  ///< null: the constant
+  std::string where;  ///< "file:line:col: key.path" of the value, for messages
+
+  bool varies() const { return expression != nullptr; }
+  bool uses_time() const { return expression && expression->uses_time(); }
+  /// The value at p (3 entries) and time t. Throws InputError naming `where`, the point and the
+  /// time when the expression is not finite there (a division by zero, a root of a negative).
+  double at(const double* p, double t) const;
+  /// Same value definition (number or expression text): conditions sharing a dof must agree.
+  bool same_as(const ScalarField& other) const;
+};
+
 struct SectionSpec {
   Basis basis = Basis::linear;
   KernelType kernel = KernelType::cubic_spline;
@@ -48,23 +64,11 @@ struct MaterialSpec {
   std::string model;
   std::optional<double> density;
   std::map<std::string, double> constants;  ///< model constants by key name
+  /// A graded Young's modulus E(x, y, z) (elastic laws); constants["youngs_modulus"] then holds
+  /// the largest value over the nodes of the material's parts (set by build_model), the
+  /// reference the per-point scale E(x)/E_ref is taken against.
+  std::optional<ScalarField> youngs_modulus_field;
   std::string hardening_curve;  ///< j2_plasticity: curve of yield stress over plastic strain
-};
-
-/// A scene value that may vary over position and time: a number, or an expression of x, y, z (and
-/// t where the key allows it) compiled once (src/expressions).
-struct ScalarField {
-  double constant = 0;
-  std::shared_ptr<const Expression> expression;  ///< null: the constant
-  std::string where;  ///< "file:line:col: key.path" of the value, for messages
-
-  bool varies() const { return expression != nullptr; }
-  bool uses_time() const { return expression && expression->uses_time(); }
-  /// The value at p (3 entries) and time t. Throws InputError naming `where`, the point and the
-  /// time when the expression is not finite there (a division by zero, a root of a negative).
-  double at(const double* p, double t) const;
-  /// Same value definition (number or expression text): conditions sharing a dof must agree.
-  bool same_as(const ScalarField& other) const;
 };
 
 struct BoundaryConditionSpec {

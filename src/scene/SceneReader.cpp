@@ -51,7 +51,8 @@ class SceneBuilder {
       s_.parameters[kv.first.as<std::string>()] = kv.second.as<double>();
     s_.title = r["title"].as<std::string>();
     build_mesh(r["mesh"], d["mesh"]);
-    for (std::size_t i = 0; i < r["materials"].size(); ++i) build_material(r["materials"][i]);
+    for (std::size_t i = 0; i < r["materials"].size(); ++i)
+      build_material(r["materials"][i], d["materials"][i], i);
     for (std::size_t i = 0; i < r["parts"].size(); ++i) build_part(r["parts"][i], d["parts"][i], i);
     for (std::size_t i = 0; i < r["curves"].size(); ++i)
       build_curve(r["curves"][i], d["curves"][i], i);
@@ -165,7 +166,7 @@ class SceneBuilder {
     s_.generator = spec;
   }
 
-  void build_material(const YAML::Node& m) {
+  void build_material(const YAML::Node& m, const YAML::Node& doc, std::size_t i) {
     MaterialSpec mat;
     mat.name = m["name"].as<std::string>();
     mat.model = m["model"].as<std::string>();
@@ -174,7 +175,14 @@ class SceneBuilder {
       const auto key = kv.first.as<std::string>();
       if (key == "hardening_curve")
         mat.hardening_curve = kv.second.as<std::string>();
-      else if (key != "name" && key != "model" && key != "density")
+      else if (double number = 0;
+               key == "youngs_modulus" && !YAML::convert<double>::decode(kv.second, number)) {
+        // an expression of x, y, z (validated): a graded material
+        mat.youngs_modulus_field =
+            field(kv.second, doc[key], "materials[" + std::to_string(i) + "]." + key,
+                  ExpressionVariables::position);
+        mat.constants[key] = 0.0;  // the reference, set by build_model from the mesh
+      } else if (key != "name" && key != "model" && key != "density")
         mat.constants[key] = kv.second.as<double>();
     }
     s_.materials.push_back(mat);

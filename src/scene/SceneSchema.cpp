@@ -112,6 +112,15 @@ SpecPtr part_spec() {
 
 SpecPtr material_spec() {
   auto youngs = real("Young's modulus.", "stress").above(0);
+  // Elastic laws may be graded: E an expression of x, y, z (nu fixed).
+  auto graded_youngs =
+      real(
+          "Young's modulus: a number, or an expression of x, y, z for a graded material (lambda "
+          "and mu scale with E at every integration point; nu stays; penalties and stable-step "
+          "scales take the largest E of the part).",
+          "stress")
+          .above(0)
+          .varying(ExpressionVariables::position);
   auto poisson = real("Poisson's ratio.", "-").above(-1.0).below(0.5);
   return map("A material model. Keys after model depend on the model.")
       .required("name", string("Material name, unique."))
@@ -120,16 +129,19 @@ SpecPtr material_spec() {
       .optional("density",
                 real("Mass density (needed by explicit stages).", "mass/length^3").above(0))
       .discriminated_by("model")
-      .variant("linear_elastic",
-               {required_key("youngs_modulus", youngs), required_key("poissons_ratio", poisson)})
-      .variant(
-          "neo_hookean",
-          {required_key("youngs_modulus",
-                        real("Small-strain Young's modulus; mu = E/(2(1+nu)).", "stress").above(0)),
-           required_key("poissons_ratio",
-                        real("Small-strain Poisson's ratio; kappa = E/(3(1-2nu)).", "-")
-                            .above(-1.0)
-                            .below(0.5))})
+      .variant("linear_elastic", {required_key("youngs_modulus", graded_youngs),
+                                  required_key("poissons_ratio", poisson)})
+      .variant("neo_hookean",
+               {required_key("youngs_modulus",
+                             real("Small-strain Young's modulus; mu = E/(2(1+nu)); a number or an "
+                                  "expression of x, y, z (graded, as for linear_elastic).",
+                                  "stress")
+                                 .above(0)
+                                 .varying(ExpressionVariables::position)),
+                required_key("poissons_ratio",
+                             real("Small-strain Poisson's ratio; kappa = E/(3(1-2nu)).", "-")
+                                 .above(-1.0)
+                                 .below(0.5))})
       .variant(
           "j2_plasticity",
           {required_key("youngs_modulus", youngs), required_key("poissons_ratio", poisson),

@@ -8,6 +8,7 @@
 
 #include "discretization/ShapeFunctions.hpp"
 #include "mesh/GaussRules.hpp"
+#include "model/GradedMaterials.hpp"
 
 namespace efg {
 
@@ -101,6 +102,9 @@ ErrorNorms error_norms(const Model& model, const SolidOperator& op, const Vector
     const auto& w = quadrature.w;
     const auto v = evaluate_shape_functions(part.cloud, x.data(), w.size(), true);
     const auto& nodes = op.overlap_node(p);
+    // Graded materials: C scales with E(x_q)/E_ref at each Gauss point.
+    const auto scale =
+        modulus_scale(*model.scene.find_material(part.part->material), x.data(), w.size(), dim);
     // a(e, e) with the elasticity tensor: eps : C : eps = lambda tr(eps)^2 + 2 mu eps : eps.
     auto energy = [&](const double(&g)[3][3]) {
       double tr = 0, ee = 0;
@@ -130,8 +134,9 @@ ErrorNorms error_norms(const Model& model, const SolidOperator& op, const Vector
         local[1] += w[q] * u[i] * u[i];
         for (std::size_t j = 0; j < udim; ++j) e[i][j] = gh[i][j] - g[i][j];
       }
-      local[2] += w[q] * energy(e);
-      local[3] += w[q] * energy(g);
+      const double c = scale.empty() ? 1.0 : scale[q];
+      local[2] += c * w[q] * energy(e);
+      local[3] += c * w[q] * energy(g);
     }
     max_nodal = std::max(max_nodal, largest_nodal_error(part, nodes, exact, udim, d));
   }
