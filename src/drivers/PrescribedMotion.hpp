@@ -48,7 +48,11 @@ class PrescribedMotion {
     const ScalarField* value;   // the scene's value (a number or an expression of x, y, z, t)
     std::array<double, 3> X{};  // the node's reference position
     std::string curve;
-    double at(const LoadFactor& f) const { return value->at(X.data(), f.time()) * f(curve); }
+    /// The value at f's time; an expression of t without a curve is not scaled (no ramp).
+    double at(const LoadFactor& f) const {
+      const double v = value->at(X.data(), f.time());
+      return value->uses_time() && curve.empty() ? v : v * f(curve);
+    }
   };
   std::vector<Dof> dofs_;
   std::size_t conditions_ = 0;

@@ -203,13 +203,17 @@ void EssentialConditions::add_couplings(CouplingGraph& graph) const {
 
 void EssentialConditions::set_factor(const LoadFactor& factor) {
   const double t = factor.time();
+  // An expression of t is the value at that time: no default ramp without a curve.
+  auto scale = [&](std::size_t condition, const std::string& curve) {
+    return timed_[condition] && curve.empty() ? 1.0 : factor(curve);
+  };
   for (auto& c : nodes_) {
     if (const auto& timed = timed_[c.condition])
       c.base = timed(c.X.data(), static_cast<std::size_t>(c.component), t);
-    c.value = c.base * factor(c.curve);
+    c.value = c.base * scale(c.condition, c.curve);
   }
   for (auto& p : points_) {
-    const double f = factor(p.curve);
+    const double f = scale(p.condition, p.curve);
     for (std::size_t k = 0; k < 3; ++k) {
       if (timed_[p.condition] && p.constrained[k])
         p.base[k] = timed_[p.condition](p.X.data(), k, t);

@@ -206,7 +206,9 @@ void ExternalLoads::assemble(const LoadFactor& factor, Vector& f_owned) const {
   for (const auto& l : loads_) {
     if (l.force.is_null()) {
       if (timed.is_null()) timed = Teuchos::rcp(new Vector(overlap_));
-      scatter(*l.spec, exact_, dim_, l.points, factor.time(), factor(l.spec->curve), *timed);
+      // An expression of t is the value at that time: no default ramp without a curve.
+      const double f = l.spec->curve.empty() ? 1.0 : factor(l.spec->curve);
+      scatter(*l.spec, exact_, dim_, l.points, factor.time(), f, *timed);
     } else {
       f_owned.update(factor(l.spec->curve), *l.force, 1.0);
     }

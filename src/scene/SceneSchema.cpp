@@ -115,7 +115,7 @@ SpecPtr material_spec() {
   // Elastic laws may be graded: E an expression of x, y, z (nu fixed).
   auto graded_youngs =
       real(
-          "Young's modulus: a number, or an expression of x, y, z for a graded material (lambda "
+          "Young's modulus. A number, or an expression of x, y, z for a graded material (lambda "
           "and mu scale with E at every integration point; nu stays; penalties and stable-step "
           "scales take the largest E of the part).",
           "stress")

@@ -144,6 +144,25 @@ TEST(Expression, Bar1dEqualsItsExpressions) {
   expect_equal(builtin, user, 48.0 * 48.0 * 48.0 / 3e7, 48.0 * 48.0);
 }
 
+TEST(Expression, HomogeneousStretchEqualsItsExpressions) {
+  // Linear elastic, plane strain, stretches 1.01 and 0.98: P_ii = lambda tr(eps) + 2 mu eps_ii.
+  const auto builtin = make_exact_solution(
+      scene_with("  exact_solution: homogeneous_stretch\n  parameters: {stretch: [1.01, 0.98]}\n",
+                 "nu: 0.3", "strain"),
+      2);
+  const auto user = make_exact_solution(scene_with(R"Y(  exact_solution: user
+  user_solution:
+    displacement: ["0.01*x", "-0.02*y"]
+    stress:
+      xx: "E*nu/((1 + nu)*(1 - 2*nu))*(0.01 - 0.02) + E/(1 + nu)*0.01"
+      yy: "E*nu/((1 + nu)*(1 - 2*nu))*(0.01 - 0.02) - E/(1 + nu)*0.02"
+      xy: 0
+)Y",
+                                                   "nu: 0.3", "strain"),
+                                        2);
+  expect_equal(builtin, user, 1.0, 1e6);
+}
+
 TEST(Expression, UserSolutionOfTheWrongDimensionIsAnInputError) {
   const auto scene = scene_with(R"Y(  exact_solution: user
   user_solution:
