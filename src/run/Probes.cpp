@@ -8,6 +8,7 @@
 #include "discretization/ShapeFunctions.hpp"
 #include "model/GradedMaterials.hpp"
 #include "model/MaterialLaws.hpp"
+#include "model/PointOwner.hpp"
 
 namespace efg {
 namespace {
@@ -27,32 +28,6 @@ bool elastic_parts(const Scene& scene) {
   for (const auto& part : scene.parts)
     if (scene.find_material(part.material)->model == "j2_plasticity") return false;
   return true;
-}
-
-// The (part, rank) that evaluates a probe: the owner of the nearest particle; -1 on other ranks.
-int nearest_part(const Model& model, const double* point) {
-  const auto udim = static_cast<std::size_t>(model.mesh.dimension);
-  double best = std::numeric_limits<double>::max();
-  int best_part = -1;
-  for (std::size_t p = 0; p < model.parts.size(); ++p)
-    for (std::size_t j = 0; j < model.parts[p].cloud.owned_count; ++j) {
-      double d2 = 0;
-      for (std::size_t k = 0; k < udim; ++k) {
-        const double e = model.parts[p].cloud.x(j)[k] - point[k];
-        d2 += e * e;
-      }
-      if (d2 < best) {
-        best = d2;
-        best_part = static_cast<int>(p);
-      }
-    }
-  const auto& comm = *model.maps.owned_dofs->getComm();
-  double global_best = 0;
-  Teuchos::reduceAll(comm, Teuchos::REDUCE_MIN, best, Teuchos::outArg(global_best));
-  const int candidate = best == global_best ? comm.getRank() : comm.getSize();
-  int winner = 0;
-  Teuchos::reduceAll(comm, Teuchos::REDUCE_MIN, candidate, Teuchos::outArg(winner));
-  return comm.getRank() == winner ? best_part : -1;
 }
 
 template <int Dim>
@@ -95,7 +70,7 @@ std::vector<double> probe_values(const Model& model, const SolidOperator& op,
   const auto d = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
   for (std::size_t i = 0; i < model.scene.probes.size(); ++i) {
     const auto& probe = model.scene.probes[i];
-    const int p = nearest_part(model, probe.point.data());
+    const int p = evaluating_part(model, probe.point.data());
     if (p < 0) continue;
     const auto part = static_cast<std::size_t>(p);
     const auto v =

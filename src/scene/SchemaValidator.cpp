@@ -185,14 +185,19 @@ class Validator {
   // character with `expected` and the reason.
   double constant_value(const YAML::Node& node, const std::string& path,
                         const std::string& expected) {
+    const double v = compile(node, path, expected, ExpressionVariables::none)();
+    if (!std::isfinite(v))
+      fail(node, path,
+           "expected " + expected + ", found '" + node.Scalar() + "' = " + std::to_string(v) +
+               " (not finite)");
+    return v;
+  }
+
+  // The scalar compiled as an expression; a compile error fails at its faulty character.
+  Expression compile(const YAML::Node& node, const std::string& path, const std::string& expected,
+                     ExpressionVariables variables) const {
     try {
-      const Expression e(node.Scalar(), parameters_, ExpressionVariables::none);
-      const double v = e();
-      if (!std::isfinite(v))
-        fail(node, path,
-             "expected " + expected + ", found '" + node.Scalar() + "' = " + std::to_string(v) +
-                 " (not finite)");
-      return v;
+      return Expression(node.Scalar(), parameters_, variables);
     } catch (const ExpressionError& e) {
       throw InputError(
           located_message(file_, node, path,
@@ -215,17 +220,10 @@ class Validator {
         "a finite real or an expression of " +
         std::string(spec.expression == ExpressionVariables::position ? "x, y, z" : "x, y, z, t") +
         " and the parameters";
-    try {
-      const Expression e(node.Scalar(), parameters_, spec.expression);
-      if (e.uses_position() || e.uses_time()) return true;
-      value = constant_value(node, path, expected);
-      return false;
-    } catch (const ExpressionError& e) {
-      throw InputError(
-          located_message(file_, node, path,
-                          "expected " + expected + ", found '" + node.Scalar() + "': " + e.what(),
-                          expression_column_offset(node, e.position())));
-    }
+    const auto e = compile(node, path, expected, spec.expression);
+    if (e.uses_position() || e.uses_time()) return true;
+    value = constant_value(node, path, expected);
+    return false;
   }
 
   double check_number(const YAML::Node& node, const Spec& spec, const std::string& path,

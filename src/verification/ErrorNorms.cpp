@@ -9,6 +9,7 @@
 #include "discretization/ShapeFunctions.hpp"
 #include "mesh/GaussRules.hpp"
 #include "model/GradedMaterials.hpp"
+#include "model/PointOwner.hpp"
 
 namespace efg {
 
@@ -156,26 +157,10 @@ std::array<double, 3> displacement_at(const Model& model, const SolidOperator& o
   const int dim = model.mesh.dimension;
   const auto udim = static_cast<std::size_t>(dim);
   // The rank owning the particle nearest to the point evaluates (it has the whole support).
-  double best = std::numeric_limits<double>::max();
-  int best_part = -1;
-  for (std::size_t p = 0; p < model.parts.size(); ++p)
-    for (std::size_t j = 0; j < model.parts[p].cloud.owned_count; ++j) {
-      double d2 = 0;
-      for (std::size_t k = 0; k < udim; ++k)
-        d2 += std::pow(model.parts[p].cloud.x(j)[k] - point[k], 2);
-      if (d2 < best) {
-        best = d2;
-        best_part = static_cast<int>(p);
-      }
-    }
+  const int best_part = evaluating_part(model, point);
   const auto& comm = *model.maps.owned_dofs->getComm();
-  // Lowest distance wins; ties go to the lowest rank.
-  double global_best = 0;
-  Teuchos::reduceAll(comm, Teuchos::REDUCE_MIN, best, Teuchos::outArg(global_best));
-  int candidate = best == global_best ? comm.getRank() : comm.getSize(), winner = 0;
-  Teuchos::reduceAll(comm, Teuchos::REDUCE_MIN, candidate, Teuchos::outArg(winner));
   double local[3] = {0, 0, 0}, global[3] = {0, 0, 0};
-  if (comm.getRank() == winner && best_part >= 0) {
+  if (best_part >= 0) {
     const auto& part = model.parts[static_cast<std::size_t>(best_part)];
     const auto v = evaluate_shape_functions(part.cloud, point, 1, false);
     const auto d = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
