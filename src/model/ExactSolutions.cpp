@@ -46,16 +46,12 @@ class Parameters {
   }
   double number(const std::string& key, double fallback) const {
     if (!node_ || !node_[key]) return fallback;
-    double v = 0;
-    if (!YAML::convert<double>::decode(node_[key], v))
-      throw InputError(schema::located_message(
-          scene_.file, node_[key], "verification.parameters." + key, "expected a number"));
-    return v;
+    return value(node_[key], "verification.parameters." + key);
   }
   std::vector<double> numbers(const std::string& key, std::vector<double> fallback) const {
     if (!node_ || !node_[key]) return fallback;
     std::vector<double> v;
-    for (const auto& item : node_[key]) v.push_back(item.as<double>());
+    for (const auto& item : node_[key]) v.push_back(value(item, "verification.parameters." + key));
     if (v.size() != fallback.size())
       throw InputError(
           schema::located_message(scene_.file, node_[key], "verification.parameters." + key,
@@ -67,6 +63,23 @@ class Parameters {
   const Scene& scene_;
   YAML::Node node_;
   std::set<std::string> allowed_;
+
+  // A number, or an expression of the scene's parameters (as every number of a scene).
+  double value(const YAML::Node& node, const std::string& path) const {
+    double v = 0;
+    if (node.IsScalar() && node.Tag() != "!" && YAML::convert<double>::decode(node, v)) return v;
+    try {
+      if (node.IsScalar()) {
+        v = Expression(node.Scalar(), scene_.parameters, ExpressionVariables::none)();
+        if (std::isfinite(v)) return v;
+      }
+    } catch (const ExpressionError& e) {
+      throw InputError(schema::located_message(scene_.file, node, path,
+                                               std::string("expected a number: ") + e.what(),
+                                               schema::expression_column_offset(node, e.position())));
+    }
+    throw InputError(schema::located_message(scene_.file, node, path, "expected a number"));
+  }
 };
 
 const MaterialSpec& first_material(const Scene& s) {

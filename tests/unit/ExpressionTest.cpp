@@ -91,8 +91,9 @@ void expect_equal(const ExactSolution& a, const ExactSolution& b, double scale_u
 
 TEST(Expression, TimoshenkoBeamEqualsItsExpressions) {
   const auto builtin = make_exact_solution(
-      scene_with("  exact_solution: timoshenko_beam\n  parameters: {length: 48, depth: 12, load: "
-                 "1000}\n"),
+      // the built-in's parameters given by the scene's parameters (any number may be one)
+      scene_with("  exact_solution: timoshenko_beam\n  parameters: {length: L, depth: \"2*D/2\", "
+                 "load: P}\n"),
       2);
   const auto user = make_exact_solution(scene_with(R"Y(  exact_solution: user
   user_solution:
