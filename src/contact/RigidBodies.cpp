@@ -45,14 +45,14 @@ contact::Shape shape_of(const RigidBodySpec& b, int dim) {
 RigidBodies::RigidBodies(const Scene& scene, int dim) : scene_(scene), dim_(dim) {
   for (const auto& b : scene.rigid_bodies)
     bodies_.push_back({b.name, b.motion, b.curve, b.velocity, b.gravity, shape_of(b, dim),
-                       rigid_body_mass(b, dim)});
+                       rigid_body_mass(b, dim), b.force});
   scene_count_ = bodies_.size();
   for (const auto& w : scene.rigid_walls) {
     RigidBodySpec plane;
     plane.shape = "plane";
     plane.point = w.point;
     plane.normal = w.normal;
-    bodies_.push_back({"wall " + w.name, "fixed", "", {}, {}, shape_of(plane, dim), 0.0});
+    bodies_.push_back({"wall " + w.name, "fixed", "", {}, {}, shape_of(plane, dim), 0.0, {}});
   }
 }
 
@@ -76,7 +76,7 @@ void RigidBodies::move(std::vector<RigidBodyState>& states, double time, double 
     auto& s = states[b];
     if (spec.motion == "free") {
       for (int k = 0; k < dim_; ++k) {
-        s.velocity[k] += 0.5 * dt * (s.force[k] / bodies_[b].mass + gravity(b, k));
+        s.velocity[k] += 0.5 * dt * acceleration(b, k, s, time);
         s.displacement[k] += dt * s.velocity[k];
       }
     } else if (spec.motion == "prescribed") {
@@ -88,11 +88,17 @@ void RigidBodies::move(std::vector<RigidBodyState>& states, double time, double 
   }
 }
 
-void RigidBodies::finish(std::vector<RigidBodyState>& states, double dt) const {
+void RigidBodies::finish(std::vector<RigidBodyState>& states, double time_end, double dt) const {
   for (std::size_t b = 0; b < bodies_.size(); ++b)
     if (bodies_[b].motion == "free")
       for (int k = 0; k < dim_; ++k)
-        states[b].velocity[k] += 0.5 * dt * (states[b].force[k] / bodies_[b].mass + gravity(b, k));
+        states[b].velocity[k] += 0.5 * dt * acceleration(b, k, states[b], time_end);
+}
+
+double RigidBodies::applied_force(std::size_t b, int k, double time) const {
+  const auto& f = bodies_[b].force;
+  if (static_cast<std::size_t>(k) >= f.size()) return 0.0;
+  return f[static_cast<std::size_t>(k)] * curve_factor(scene_, time, 1.0)(bodies_[b].curve);
 }
 
 std::array<double, 3> RigidBodies::prescribed_travel(std::size_t b, double t0, double t1) const {
@@ -105,13 +111,15 @@ std::array<double, 3> RigidBodies::prescribed_travel(std::size_t b, double t0, d
   return u;
 }
 
-double RigidBodies::gravity_work(const std::vector<RigidBodyState>& before,
-                                 const std::vector<RigidBodyState>& after) const {
+double RigidBodies::applied_work(const std::vector<RigidBodyState>& before,
+                                 const std::vector<RigidBodyState>& after, double t0,
+                                 double t1) const {
   double work = 0;
   for (std::size_t b = 0; b < bodies_.size(); ++b)
     if (is_free(b))
       for (int k = 0; k < dim_; ++k)
-        work += bodies_[b].mass * gravity(b, k) *
+        work += (bodies_[b].mass * gravity(b, k) +
+                 0.5 * (applied_force(b, k, t0) + applied_force(b, k, t1))) *
                 (after[b].displacement[k] - before[b].displacement[k]);
   return work;
 }

@@ -39,16 +39,17 @@ class RigidBodies {
   /// First half of a step from `time` over dt, with the forces of the last evaluation.
   void move(std::vector<RigidBodyState>& states, double time, double dt) const;
   /// Second half, with the forces of the new evaluation (in states[b].force).
-  void finish(std::vector<RigidBodyState>& states, double dt) const;
+  void finish(std::vector<RigidBodyState>& states, double time_end, double dt) const;
   /// Displacement of a prescribed body from time t0 to t1: velocity x the integral of its curve
   /// (exact for the piecewise-linear curves; zero for fixed and free bodies). Implicit stages.
   std::array<double, 3> prescribed_travel(std::size_t b, double t0, double t1) const;
   /// Kinetic energy of the free bodies (prescribed motions are driven from outside: their
   /// energy is the work they do on the particles).
   double kinetic_energy(const std::vector<RigidBodyState>& states) const;
-  /// Work of the free bodies' gravity from the `before` states to `after` (external work).
-  double gravity_work(const std::vector<RigidBodyState>& before,
-                      const std::vector<RigidBodyState>& after) const;
+  /// Work of the free bodies' gravity and applied forces from the `before` states (time t0) to
+  /// `after` (t1): external work (the applied force by the trapezoid rule over the step).
+  double applied_work(const std::vector<RigidBodyState>& before,
+                      const std::vector<RigidBodyState>& after, double t0, double t1) const;
   /// Momentum of the free bodies, per direction.
   std::array<double, 3> momentum(const std::vector<RigidBodyState>& states) const;
 
@@ -58,10 +59,17 @@ class RigidBodies {
     std::vector<double> velocity, gravity;
     contact::Shape shape;
     double mass;
+    std::vector<double> force;  // applied (free bodies), x curve
   };
   double gravity(std::size_t b, int k) const {
     const auto& g = bodies_[b].gravity;
     return static_cast<std::size_t>(k) < g.size() ? g[static_cast<std::size_t>(k)] : 0.0;
+  }
+  /// The applied force on free body b at `time`, component k.
+  double applied_force(std::size_t b, int k, double time) const;
+  /// Acceleration of free body b from its contact force, gravity and applied force.
+  double acceleration(std::size_t b, int k, const RigidBodyState& s, double time) const {
+    return (s.force[k] + applied_force(b, k, time)) / bodies_[b].mass + gravity(b, k);
   }
   const Scene& scene_;
   int dim_;

@@ -14,6 +14,7 @@ void RigidContact::begin(const std::vector<RigidBodyState>& carried, double time
 
 void RigidContact::move(double time, double dt) {
   previous_ = states_;
+  step_start_ = time;
   bodies_.move(states_, time, dt);
 }
 
@@ -22,14 +23,14 @@ void RigidContact::add_forces(const Vector& d_overlap, double dt, Vector& f_over
 }
 
 RigidContact::Work RigidContact::finish(double dt) {
-  bodies_.finish(states_, dt);
+  bodies_.finish(states_, step_start_ + dt, dt);
   Work work;
   for (std::size_t b = 0; b < bodies_.count(); ++b)
     if (bodies_.is_free(b))
       for (std::size_t k = 0; k < 3; ++k)
         work.contact += 0.5 * (previous_[b].force[k] + states_[b].force[k]) *
                         (states_[b].displacement[k] - previous_[b].displacement[k]);
-  work.gravity = bodies_.gravity_work(previous_, states_);
+  work.gravity = bodies_.applied_work(previous_, states_, step_start_, step_start_ + dt);
   return work;
 }
 

@@ -28,7 +28,7 @@ class RigidContact {
   void add_forces(const Vector& d_overlap, double dt, Vector& f_overlap);
   /// Second half of a step: the free bodies' velocities. The work over the step on the free
   /// bodies: of the contact forces (trapezoidal, as the particles' wall work) and of gravity
-  /// (external work).
+  /// and applied forces (external work, `gravity`).
   struct Work {
     double contact = 0, gravity = 0;
   };
@@ -49,6 +49,7 @@ class RigidContact {
   RigidBodies bodies_;
   PenaltyContact contact_;
   std::vector<RigidBodyState> states_, previous_;
+  double step_start_ = 0.0;  // time of the step under way (applied forces of free bodies)
 };
 
 }  // namespace efg

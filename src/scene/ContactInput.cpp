@@ -44,6 +44,7 @@ RigidBodySpec read_body(const Scene& s, const YAML::Node& r, const YAML::Node& d
   b.curve = r["curve"] ? r["curve"].as<std::string>() : "";
   b.thickness = r["thickness"].as<double>();
   b.gravity = reals(r["gravity"]);
+  b.force = reals(r["force"]);
   if (b.shape == "plane" && !nonzero(b.normal))
     fail(s, d["normal"], path + ".normal", "expected a nonzero normal");
   if (b.shape == "box")
@@ -62,11 +63,16 @@ RigidBodySpec read_body(const Scene& s, const YAML::Node& r, const YAML::Node& d
          "a free rigid body needs mass or density (its motion follows from the contact forces)");
   if (b.motion == "prescribed" && b.velocity.empty())
     fail(s, d["motion"], path + ".motion", "a prescribed motion needs velocity");
-  if (!b.curve.empty() && b.motion != "prescribed")
+  if (!b.curve.empty() && b.motion != "prescribed" && b.force.empty())
     fail(s, d["curve"], path + ".curve",
-         "curve scales a prescribed velocity; motion is " + b.motion);
+         "curve scales a prescribed velocity or a free body's force; motion is " + b.motion +
+             (b.motion == "free" ? " without force" : ""));
   if (!b.curve.empty() && !s.find_curve(b.curve))
     fail(s, d["curve"], path + ".curve", "no curve named '" + b.curve + "' in curves");
+  if (!b.force.empty() && b.motion != "free")
+    fail(s, d["force"], path + ".force",
+         "an applied force moves free bodies only; motion is " + b.motion +
+             "; expected motion: free");
   if (!b.gravity.empty() && b.motion != "free")
     fail(s, d["gravity"], path + ".gravity",
          "gravity moves free bodies only; motion is " + b.motion + "; expected motion: free");

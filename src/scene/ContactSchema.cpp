@@ -21,13 +21,18 @@ SpecPtr rigid_body_spec() {
                           "scaled by curve).",
                           "length/time")
                     .items(2, 3))
-      .optional("curve", string("Curve scaling the prescribed velocity over time; constant "
-                                "velocity when omitted."))
+      .optional("curve", string("Curve scaling the prescribed velocity (prescribed) or the applied "
+                                "force (free) over time; constant when omitted."))
       .optional("mass", real("Mass of the body (2D: of its thickness).", "mass").above(0))
       .optional("density", real("Density: the mass is density x volume (sphere, box; 2D cylinder: "
                                 "density x pi r^2 x thickness).",
                                 "mass/length^3")
                                .above(0))
+      .optional("force",
+                real_list("Free bodies: an applied force (e.g. a blank holder's), scaled by curve; "
+                          "its work is external work.",
+                          "force")
+                    .items(2, 3))
       .optional("gravity",
                 real_list("Free bodies: body force per unit mass (e.g. [0, -9.81]); its work is "
                           "external work.",

@@ -140,6 +140,7 @@ struct RigidBodySpec {
   double density = 0;                 ///< given (0: none): mass = density x volume
   double thickness = 1;               ///< 2D: out-of-plane length of the body (its mass)
   std::vector<double> gravity;        ///< free bodies: a body load per unit mass (empty: none)
+  std::vector<double> force;  ///< free bodies: an applied force (blank holder), x curve if any
 };
 
 /// Penalty contact of the surface particles of deformable parts with a rigid body.
