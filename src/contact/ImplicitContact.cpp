@@ -129,22 +129,34 @@ void ImplicitContact::add_tangent(const Vector& d_overlap, FEMatrix& K) const {
     }
 }
 
-std::vector<std::array<double, 3>> ImplicitContact::body_forces(const Vector& d_overlap) const {
+std::vector<BodyResultant> ImplicitContact::body_forces(const Vector& d_overlap) const {
   const std::size_t nb = bodies_.count();
   const auto d = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
-  std::vector<double> local(3 * nb, 0.0), total(3 * nb, 0.0);
+  std::vector<double> local(6 * nb, 0.0), total(6 * nb, 0.0);  // force, moment per body
+  const double zero[3] = {0, 0, 0};
   for (const auto& pair : pairs_)
     for (const auto& c : pair.candidates) {
       const auto t = touch(pair, c, d);
       if (!(t.gap < 0)) continue;
-      for (std::size_t i = 0; i < 3; ++i)
-        local[3 * pair.body + i] += c.stiffness * t.gap * t.normal[i];
+      double F[3];
+      for (std::size_t i = 0; i < 3; ++i) {
+        F[i] = c.stiffness * t.gap * t.normal[i];
+        local[6 * pair.body + i] += F[i];
+      }
+      const auto x = c.row.position(d, static_cast<std::size_t>(dim_));
+      contact::add_moment(bodies_.shape(pair.body),
+                          displacement_.empty() ? zero : displacement_[pair.body].data(), x.data(),
+                          F, &local[6 * pair.body + 3]);
     }
   if (nb > 0)
     Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, static_cast<int>(local.size()), local.data(),
                        total.data());
-  std::vector<std::array<double, 3>> out(nb);
-  for (std::size_t b = 0; b < nb; ++b) out[b] = {total[3 * b], total[3 * b + 1], total[3 * b + 2]};
+  std::vector<BodyResultant> out(nb);
+  for (std::size_t b = 0; b < nb; ++b)
+    for (std::size_t i = 0; i < 3; ++i) {
+      out[b].force[i] = total[6 * b + i];
+      out[b].moment[i] = total[6 * b + 3 + i];
+    }
   return out;
 }
 

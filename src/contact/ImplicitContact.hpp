@@ -40,7 +40,7 @@ class ImplicitContact {
   /// K += dr/dd (assembly mode).
   void add_tangent(const Vector& d_overlap, FEMatrix& K) const;
   /// The contact force on every body at d (summed over ranks; collective).
-  std::vector<std::array<double, 3>> body_forces(const Vector& d_overlap) const;
+  std::vector<BodyResultant> body_forces(const Vector& d_overlap) const;
 
  private:
   struct Candidate {

@@ -87,10 +87,11 @@ void PenaltyContact::add_forces(const Vector& d_overlap, double dt,
   const auto udim = static_cast<std::size_t>(dim_);
   const auto d = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
   auto f = f_overlap.getLocalViewHost(Tpetra::Access::ReadWrite);
-  // Per body: the force on it (3), penalty x the mass of its touching particles, and the total
-  // normal force (the rigid walls' history column).
+  // Per body: the force on it (3), penalty x the mass of its touching particles, the total
+  // normal force (the rigid walls' history column) and the moment about its reference point (3).
+  constexpr std::size_t kPer = 8;
   const std::size_t nb = bodies_.count();
-  std::vector<double> local(5 * nb, 0.0), total(5 * nb, 0.0);
+  std::vector<double> local(kPer * nb, 0.0), total(kPer * nb, 0.0);
   for (auto& pair : pairs_) {
     const auto& shape = bodies_.shape(pair.body);
     const auto& u_body = bodies[pair.body].displacement;
@@ -122,9 +123,12 @@ void PenaltyContact::add_forces(const Vector& d_overlap, double dt,
         for (std::size_t i = 0; i < udim; ++i) F[i] += c.ft_new[i];
       }
       c.row.spread(F, udim, f);
-      for (std::size_t i = 0; i < udim; ++i) local[5 * pair.body + i] -= F[i];
-      local[5 * pair.body + 3] += pair.penalty * c.mass;
-      local[5 * pair.body + 4] += fn;
+      const double on_body[3] = {-F[0], -F[1], -F[2]};
+      for (std::size_t i = 0; i < udim; ++i) local[kPer * pair.body + i] += on_body[i];
+      local[kPer * pair.body + 3] += pair.penalty * c.mass;
+      local[kPer * pair.body + 4] += fn;
+      contact::add_moment(shape, u_body.data(), c.x_new.data(), on_body,
+                          &local[kPer * pair.body + 5]);
     }
   }
   if (nb > 0)
@@ -132,15 +136,18 @@ void PenaltyContact::add_forces(const Vector& d_overlap, double dt,
                        total.data());
   wall_forces_.assign(nb - bodies_.scene_count(), 0.0);
   for (std::size_t b = 0; b < nb; ++b) {
-    for (std::size_t i = 0; i < 3; ++i) bodies[b].force[i] = total[5 * b + i];
-    if (b >= bodies_.scene_count()) wall_forces_[b - bodies_.scene_count()] = total[5 * b + 4];
+    for (std::size_t i = 0; i < 3; ++i) {
+      bodies[b].force[i] = total[kPer * b + i];
+      bodies[b].moment[i] = total[kPer * b + 5 + i];
+    }
+    if (b >= bodies_.scene_count()) wall_forces_[b - bodies_.scene_count()] = total[kPer * b + 4];
     // A free body's own contact frequency: omega^2 dt^2 = sum k_J dt^2 / M = penalty sum m_J / M;
     // central differences need it below 4, kept below 1 with the particles' share.
-    if (bodies_.is_free(b) && total[5 * b + 3] > bodies_.mass(b)) {
+    if (bodies_.is_free(b) && total[kPer * b + 3] > bodies_.mass(b)) {
       std::ostringstream o;
       o << "rigid body '" << bodies_.name(b) << "' (mass " << bodies_.mass(b)
         << ") is too light for its contact: penalty x the mass of the particles it touches is "
-        << total[5 * b + 3] << "; its contact would be unstable at this time step (give it more "
+        << total[kPer * b + 3] << "; its contact would be unstable at this time step (give it more "
         << "mass or lower the contact's penalty)";
       throw NumericalError(o.str());
     }

@@ -1,6 +1,7 @@
 // The state of one rigid body a run carries from step to step and stage to stage: the
 // displacement of its reference point from the scene's position and its velocity (translation
-// only), and the contact force on it at the last evaluation.
+// only), and the contact force on it at the last evaluation with its moment about the body's
+// reference point (contact::reference_point, moved with the body).
 #pragma once
 
 #include <array>
@@ -8,7 +9,12 @@
 namespace efg {
 
 struct RigidBodyState {
-  std::array<double, 3> displacement{}, velocity{}, force{};
+  std::array<double, 3> displacement{}, velocity{}, force{}, moment{};
+};
+
+/// The contact force on a body and its moment about the body's reference point.
+struct BodyResultant {
+  std::array<double, 3> force{}, moment{};
 };
 
 }  // namespace efg

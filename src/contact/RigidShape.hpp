@@ -18,6 +18,27 @@ struct Shape {
   double lower[3] = {0, 0, 0}, upper[3] = {0, 0, 0};  ///< axis-aligned box
 };
 
+/// The point a body's moments are taken about (moved with the body): a plane's point, the centre
+/// of a sphere or cylinder, the centre of a box.
+inline void reference_point(const Shape& s, double (&c)[3]) {
+  for (int k = 0; k < 3; ++k)
+    c[k] = s.kind == Shape::Kind::plane ? s.point[k]
+           : s.kind == Shape::Kind::box ? 0.5 * (s.lower[k] + s.upper[k])
+                                        : s.center[k];
+}
+
+/// M += (x - (reference point + u_body)) x F: the moment of a force F on the body applied at x
+/// (2D: only M[2] is nonzero).
+inline void add_moment(const Shape& s, const double* u_body, const double* x, const double* F,
+                       double* M) {
+  double c[3], r[3] = {0, 0, 0};
+  reference_point(s, c);
+  for (int k = 0; k < s.dim; ++k) r[k] = x[k] - (c[k] + u_body[k]);
+  M[0] += r[1] * F[2] - r[2] * F[1];
+  M[1] += r[2] * F[0] - r[0] * F[2];
+  M[2] += r[0] * F[1] - r[1] * F[0];
+}
+
 struct Proximity {
   double gap = 0;                ///< signed distance, negative inside
   double normal[3] = {0, 0, 0};  ///< outward unit normal of the surface nearest x

@@ -79,7 +79,7 @@ void StaticProblem::jacobian(const Vector& d_owned, FEMatrix& K) {
   K.endModify();
 }
 
-std::vector<std::array<double, 3>> StaticProblem::body_forces(const Vector& d_owned) {
+std::vector<BodyResultant> StaticProblem::body_forces(const Vector& d_owned) {
   if (!contact_) return {};
   to_overlap(d_owned, d_overlap_);
   return contact_->body_forces(d_overlap_);

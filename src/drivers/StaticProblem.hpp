@@ -44,7 +44,7 @@ class StaticProblem {
   void commit_history(const Vector& d_owned);
 
   /// The contact force on every rigid body at d (collective; empty without contacts).
-  std::vector<std::array<double, 3>> body_forces(const Vector& d_owned);
+  std::vector<BodyResultant> body_forces(const Vector& d_owned);
 
   /// Reactions of every boundary condition at d (after a converged solve).
   std::vector<std::array<double, 3>> reactions(const Vector& d_owned);

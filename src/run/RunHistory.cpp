@@ -33,10 +33,14 @@ std::vector<std::string> history_names(const Scene& scene, int dimension) {
   // it, its displacement and velocity.
   if (!scene.rigid_bodies.empty())
     for (std::size_t d = 0; d < dim; ++d) names.push_back(std::string("momentum_") + axes[d]);
-  for (const auto& b : scene.rigid_bodies)
+  // ... and the moment of the contact forces about its reference point (2D: z only).
+  for (const auto& b : scene.rigid_bodies) {
     for (const char* what : {"_F", "_u", "_v"})
       for (std::size_t d = 0; d < dim; ++d)
         names.push_back(short_name("rb_", b.name, std::string(what) + axes[d]));
+    for (std::size_t d = dim == 2 ? 2 : 0; d < 3; ++d)
+      names.push_back(short_name("rb_", b.name, std::string("_M") + axes[d]));
+  }
   for (const auto& bc : scene.boundary_conditions)
     for (std::size_t d = 0; d < dim; ++d)
       names.push_back(short_name("R_", bc.name, std::string("_") + axes[d]));
@@ -90,6 +94,7 @@ std::vector<double> RunHistory::values(const ModelOperators& ops, const RunState
     const auto& s = b < state.bodies.size() ? state.bodies[b] : none;
     for (const auto* v : {&s.force, &s.displacement, &s.velocity})
       for (std::size_t d = 0; d < dim; ++d) out.push_back((*v)[d]);
+    for (std::size_t d = dim == 2 ? 2 : 0; d < 3; ++d) out.push_back(s.moment[d]);
   }
   for (std::size_t c = 0; c < model_.scene.boundary_conditions.size(); ++c)
     for (std::size_t d = 0; d < dim; ++d)

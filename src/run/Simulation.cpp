@@ -113,7 +113,8 @@ RunOutcome run_stages(const CommPtr& comm, const Model& model, const std::string
           const auto places = problem->body_displacements();
           if (!forces.empty()) state.bodies.resize(forces.size());
           for (std::size_t b = 0; b < forces.size(); ++b) {
-            state.bodies[b].force = forces[b];
+            state.bodies[b].force = forces[b].force;
+            state.bodies[b].moment = forces[b].moment;
             state.bodies[b].displacement = places[b];
             state.bodies[b].velocity = {0.0, 0.0, 0.0};  // static
           }

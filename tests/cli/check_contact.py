@@ -11,7 +11,10 @@ usage: check_contact.py impact|punch|slide|stick HISTORY.csv
   stick   tan(theta) = 0.2 < mu: drift of the bottom's mean displacement between t in [3, 3.5]
           and [3.5, 4] below 1e-6 of the block size; the plane carries the weight within 0.5 %
   rest    free rigid box (weight 5) settled on a clamped block: over t in [3, 4] contact force
-          on the box and base reaction = weight within 0.5 %, box speed < 1e-4, balance < 1 %
+          on the box and base reaction = weight within 0.5 %, box speed < 1e-4, balance < 1 %,
+          no contact moment about the centred box
+  pressed the same with an applied force 5 instead of the weight and the box's centre 0.2 off
+          the block's axis: contact moment about it -1 within 0.5 %
   punch_implicit  prescribed punch on a block on rollers, implicit: force E* delta within 0.5 %
           at every record (delta = 0.01 t), base reaction = contact force to 1e-8, the punch's
           travel 0.01 t to 1e-12
@@ -65,8 +68,14 @@ elif kind == "punch":
     F, R = col("rb_punch_Fy"), col("R_base_y")
     check("|R_base_y - rb_punch_Fy| / max", np.abs(F - R).max() / np.abs(F).max(), 5e-3)
     check("energy balance", col("energy_balance_error").max(), 1e-4)
-elif kind == "rest":
+elif kind in ("rest", "pressed"):
     late = t >= 3.0
+    if kind == "pressed":  # resultant at the block's axis x = 0.5, box centre at x = 0.7
+        check("contact moment about the box centre vs (0.5 - 0.7) x 5 (relative)",
+              np.abs(col("rb_box_Mz")[late] / -1.0 - 1).max(), 5e-3)
+    else:  # box centred over the block: no moment
+        check("contact moment about the box centre / (weight x box width)",
+              np.abs(col("rb_box_Mz")[late]).max() / (5.0 * 1.4), 1e-6)
     weight = 0.5 * 10.0
     check("contact force on the box vs weight (relative)",
           np.abs(col("rb_box_Fy")[late] / weight - 1).max(), 5e-3)
@@ -82,6 +91,13 @@ elif kind == "punch_implicit":
     check("force vs E* delta (relative)",
           np.abs(F[late] / (e_star * 0.01 * t[late]) - 1).max(), 5e-3)
     check("|R_base_y - rb_punch_Fy| / max", np.abs(F - R).max() / np.abs(F).max(), 1e-8)
+    if kind == "punch_implicit":
+        # The uniform pressure's resultant acts at the middle of the top in its current place,
+        # x = 0.5 (1 + eps_xx), eps_xx = nu / (1 - nu) x 0.01 t (plane strain, sigma_xx = 0, the
+        # block free to widen); the punch's centre is at x = 1.
+        x_f = 0.5 * (1 + 0.3 / 0.7 * 0.01 * t)
+        check("contact moment vs (x_F - 1) F (relative to max F)",
+              np.abs(col("rb_punch_Mz") - (x_f - 1.0) * F).max() / np.abs(F).max(), 1e-4)
 elif kind in ("slide", "stick"):
     tan, mu, g, M = (0.5 if kind == "slide" else 0.2), 0.3, 1.0, 0.5
     th = math.atan(tan)
