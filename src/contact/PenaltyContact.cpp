@@ -70,11 +70,27 @@ PenaltyContact::PenaltyContact(const ModelOperators& ops, const Vector& mass_own
   }
 }
 
+// The displacement of the body's surface point at x by its turn since the last commit,
+// dtheta x (x - centre): zero for bodies that do not rotate.
+std::array<double, 3> PenaltyContact::body_turn(const Pair& pair, const RigidBodyState& body,
+                                                const contact::Shape& shape, const double* x) {
+  std::array<double, 3> turn{};
+  double c[3], r[3] = {0, 0, 0}, dt[3];
+  contact::reference_point(shape, c);
+  for (int k = 0; k < 3; ++k) dt[k] = body.rotation[k] - pair.body_rotation_old[k];
+  for (int k = 0; k < shape.dim; ++k) r[k] = x[k] - (c[k] + body.displacement[k]);
+  turn[0] = dt[1] * r[2] - dt[2] * r[1];
+  turn[1] = dt[2] * r[0] - dt[0] * r[2];
+  turn[2] = dt[0] * r[1] - dt[1] * r[0];
+  return turn;
+}
+
 void PenaltyContact::start(const Vector& d_overlap, const std::vector<RigidBodyState>& bodies) {
   const auto d = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
   const auto udim = static_cast<std::size_t>(dim_);
   for (auto& pair : pairs_) {
     pair.body_u_old = bodies[pair.body].displacement;
+    pair.body_rotation_old = bodies[pair.body].rotation;
     for (auto& c : pair.candidates) {
       c.x_old = c.x_new = c.row.position(d, udim);
       c.ft_old = c.ft_new = {0.0, 0.0, 0.0};
@@ -106,11 +122,13 @@ void PenaltyContact::add_forces(const Vector& d_overlap, double dt,
         continue;
       }
       const double k = k_per_mass * c.mass;
-      // The particle's motion relative to the body over the step: its normal part is the
+      // The particle's motion relative to the body's surface point over the step (translation,
+      // and the turn of a rotating body: dtheta x r from its centre): its normal part is the
       // approach (damping), its tangential part the slip (friction).
+      const auto turn = body_turn(pair, bodies[pair.body], shape, c.x_new.data());
       double s[3] = {0, 0, 0}, v_n = 0;
       for (std::size_t i = 0; i < udim; ++i) {
-        s[i] = (c.x_new[i] - c.x_old[i]) - (u_body[i] - pair.body_u_old[i]);
+        s[i] = (c.x_new[i] - c.x_old[i]) - (u_body[i] - pair.body_u_old[i]) - turn[i];
         v_n += s[i] * near.normal[i] / dt;
       }
       const double fn =
@@ -157,6 +175,7 @@ void PenaltyContact::add_forces(const Vector& d_overlap, double dt,
 void PenaltyContact::commit(const std::vector<RigidBodyState>& bodies) {
   for (auto& pair : pairs_) {
     pair.body_u_old = bodies[pair.body].displacement;
+    pair.body_rotation_old = bodies[pair.body].rotation;
     for (auto& c : pair.candidates) {
       c.x_old = c.x_new;
       c.ft_old = c.ft_new;

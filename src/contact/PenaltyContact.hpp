@@ -62,9 +62,12 @@ class PenaltyContact {
     std::size_t body = 0;
     double penalty = 0, damping = 0;
     contact::Friction friction;
-    std::array<double, 3> body_u_old{};
+    std::array<double, 3> body_u_old{}, body_rotation_old{};
     std::vector<Candidate> candidates;
   };
+
+  static std::array<double, 3> body_turn(const Pair& pair, const RigidBodyState& body,
+                                         const contact::Shape& shape, const double* x);
 
   int dim_;
   const RigidBodies& bodies_;

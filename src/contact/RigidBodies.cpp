@@ -44,15 +44,18 @@ contact::Shape shape_of(const RigidBodySpec& b, int dim) {
 
 RigidBodies::RigidBodies(const Scene& scene, int dim) : scene_(scene), dim_(dim) {
   for (const auto& b : scene.rigid_bodies)
-    bodies_.push_back({b.name, b.motion, b.curve, b.velocity, b.gravity, shape_of(b, dim),
-                       rigid_body_mass(b, dim), b.force});
+    bodies_.push_back(
+        {b.name, b.motion, b.curve, b.velocity, b.gravity, shape_of(b, dim),
+         rigid_body_mass(b, dim), b.force, b.angular_velocity,
+         rigid_body_mass(b, dim) * b.radius * b.radius * (b.shape == "sphere" ? 0.4 : 0.5)});
   scene_count_ = bodies_.size();
   for (const auto& w : scene.rigid_walls) {
     RigidBodySpec plane;
     plane.shape = "plane";
     plane.point = w.point;
     plane.normal = w.normal;
-    bodies_.push_back({"wall " + w.name, "fixed", "", {}, {}, shape_of(plane, dim), 0.0, {}});
+    bodies_.push_back(
+        {"wall " + w.name, "fixed", "", {}, {}, shape_of(plane, dim), 0.0, {}, {}, 0.0});
   }
 }
 
@@ -64,6 +67,9 @@ std::vector<RigidBodyState> RigidBodies::initial_states(double time) const {
     const double c = spec.motion == "prescribed" ? factor(spec.curve) : 1.0;
     for (std::size_t k = 0; k < spec.velocity.size(); ++k)
       states[b].velocity[k] = spec.velocity[k] * c;
+    const auto& w = spec.angular_velocity;  // 2D: about z
+    for (std::size_t k = 0; k < w.size(); ++k)
+      states[b].angular_velocity[w.size() == 1 ? 2 : k] = w[k];
   }
   return states;
 }
@@ -79,6 +85,11 @@ void RigidBodies::move(std::vector<RigidBodyState>& states, double time, double 
         s.velocity[k] += 0.5 * dt * acceleration(b, k, s, time);
         s.displacement[k] += dt * s.velocity[k];
       }
+      if (rotates(b))
+        for (std::size_t k = 0; k < 3; ++k) {
+          s.angular_velocity[k] += 0.5 * dt * s.moment[k] / spec.inertia;
+          s.rotation[k] += dt * s.angular_velocity[k];
+        }
     } else if (spec.motion == "prescribed") {
       for (std::size_t k = 0; k < spec.velocity.size(); ++k) {
         s.displacement[k] += dt * spec.velocity[k] * mid(spec.curve);
@@ -90,9 +101,13 @@ void RigidBodies::move(std::vector<RigidBodyState>& states, double time, double 
 
 void RigidBodies::finish(std::vector<RigidBodyState>& states, double time_end, double dt) const {
   for (std::size_t b = 0; b < bodies_.size(); ++b)
-    if (bodies_[b].motion == "free")
+    if (bodies_[b].motion == "free") {
       for (int k = 0; k < dim_; ++k)
         states[b].velocity[k] += 0.5 * dt * acceleration(b, k, states[b], time_end);
+      if (rotates(b))
+        for (std::size_t k = 0; k < 3; ++k)
+          states[b].angular_velocity[k] += 0.5 * dt * states[b].moment[k] / bodies_[b].inertia;
+    }
 }
 
 double RigidBodies::applied_force(std::size_t b, int k, double time) const {
@@ -127,9 +142,13 @@ double RigidBodies::applied_work(const std::vector<RigidBodyState>& before,
 double RigidBodies::kinetic_energy(const std::vector<RigidBodyState>& states) const {
   double e = 0;
   for (std::size_t b = 0; b < bodies_.size(); ++b)
-    if (is_free(b))
+    if (is_free(b)) {
       for (int k = 0; k < dim_; ++k)
         e += 0.5 * bodies_[b].mass * states[b].velocity[k] * states[b].velocity[k];
+      for (std::size_t k = 0; k < 3; ++k)
+        e += 0.5 * bodies_[b].inertia * states[b].angular_velocity[k] *
+             states[b].angular_velocity[k];
+    }
   return e;
 }
 

@@ -5,7 +5,10 @@
 //               body, g its gravity)
 //   prescribed: u^(n+1) = u^n + dt v_bar c(t + dt/2),  v^(n+1) = v_bar c(t + dt)
 //   fixed:      never moves.
-// Translation only: a body does not rotate (its friction moment is not integrated yet).
+// Rotation: free round bodies given an angular_velocity (2D discs, spheres: their shape does not
+// change when they turn) integrate omega in the same form with the moment M of their contact
+// forces about the centre: omega += dt/2 M / I, rotation += dt omega (I = m R^2/2, 2 m R^2/5).
+// Other bodies translate only.
 // The scene's rigid walls (rigid_walls, LS-DYNA *RIGIDWALL_PLANAR) are fixed planes appended
 // after the scene's bodies: one contact code path for walls and bodies.
 #pragma once
@@ -32,6 +35,7 @@ class RigidBodies {
   const std::string& name(std::size_t b) const { return bodies_[b].name; }
   const contact::Shape& shape(std::size_t b) const { return bodies_[b].shape; }
   bool is_free(std::size_t b) const { return bodies_[b].motion == "free"; }
+  bool rotates(std::size_t b) const { return !bodies_[b].angular_velocity.empty(); }
   double mass(std::size_t b) const { return bodies_[b].mass; }
 
   /// States at the start of a run at `time`: initial velocity (free), v_bar c(time) (prescribed).
@@ -59,7 +63,9 @@ class RigidBodies {
     std::vector<double> velocity, gravity;
     contact::Shape shape;
     double mass;
-    std::vector<double> force;  // applied (free bodies), x curve
+    std::vector<double> force;             // applied (free bodies), x curve
+    std::vector<double> angular_velocity;  // initial; empty: does not rotate
+    double inertia = 0;                    // about the centre (rotating bodies)
   };
   double gravity(std::size_t b, int k) const {
     const auto& g = bodies_[b].gravity;

@@ -10,6 +10,9 @@ namespace efg {
 
 struct RigidBodyState {
   std::array<double, 3> displacement{}, velocity{}, force{}, moment{};
+  /// Rotating bodies: angular velocity and the rotation accumulated (sum of omega dt; the angle
+  /// about z in 2D), both about the reference point.
+  std::array<double, 3> angular_velocity{}, rotation{};
 };
 
 /// The contact force on a body and its moment about the body's reference point.

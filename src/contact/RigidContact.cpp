@@ -29,7 +29,9 @@ RigidContact::Work RigidContact::finish(double dt) {
     if (bodies_.is_free(b))
       for (std::size_t k = 0; k < 3; ++k)
         work.contact += 0.5 * (previous_[b].force[k] + states_[b].force[k]) *
-                        (states_[b].displacement[k] - previous_[b].displacement[k]);
+                            (states_[b].displacement[k] - previous_[b].displacement[k]) +
+                        0.5 * (previous_[b].moment[k] + states_[b].moment[k]) *
+                            (states_[b].rotation[k] - previous_[b].rotation[k]);
   work.gravity = bodies_.applied_work(previous_, states_, step_start_, step_start_ + dt);
   return work;
 }

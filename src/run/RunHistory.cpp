@@ -38,8 +38,9 @@ std::vector<std::string> history_names(const Scene& scene, int dimension) {
     for (const char* what : {"_F", "_u", "_v"})
       for (std::size_t d = 0; d < dim; ++d)
         names.push_back(short_name("rb_", b.name, std::string(what) + axes[d]));
-    for (std::size_t d = dim == 2 ? 2 : 0; d < 3; ++d)
-      names.push_back(short_name("rb_", b.name, std::string("_M") + axes[d]));
+    for (const char* what : {"_M", "_w"})  // contact moment, angular velocity
+      for (std::size_t d = dim == 2 ? 2 : 0; d < 3; ++d)
+        names.push_back(short_name("rb_", b.name, std::string(what) + axes[d]));
   }
   for (const auto& bc : scene.boundary_conditions)
     for (std::size_t d = 0; d < dim; ++d)
@@ -94,7 +95,8 @@ std::vector<double> RunHistory::values(const ModelOperators& ops, const RunState
     const auto& s = b < state.bodies.size() ? state.bodies[b] : none;
     for (const auto* v : {&s.force, &s.displacement, &s.velocity})
       for (std::size_t d = 0; d < dim; ++d) out.push_back((*v)[d]);
-    for (std::size_t d = dim == 2 ? 2 : 0; d < 3; ++d) out.push_back(s.moment[d]);
+    for (const auto* v : {&s.moment, &s.angular_velocity})
+      for (std::size_t d = dim == 2 ? 2 : 0; d < 3; ++d) out.push_back((*v)[d]);
   }
   for (std::size_t c = 0; c < model_.scene.boundary_conditions.size(); ++c)
     for (std::size_t d = 0; d < dim; ++d)

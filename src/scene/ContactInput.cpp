@@ -45,6 +45,7 @@ RigidBodySpec read_body(const Scene& s, const YAML::Node& r, const YAML::Node& d
   b.thickness = r["thickness"].as<double>();
   b.gravity = reals(r["gravity"]);
   b.force = reals(r["force"]);
+  b.angular_velocity = reals(r["angular_velocity"]);
   if (b.shape == "plane" && !nonzero(b.normal))
     fail(s, d["normal"], path + ".normal", "expected a nonzero normal");
   if (b.shape == "box")
@@ -69,6 +70,23 @@ RigidBodySpec read_body(const Scene& s, const YAML::Node& r, const YAML::Node& d
              (b.motion == "free" ? " without force" : ""));
   if (!b.curve.empty() && !s.find_curve(b.curve))
     fail(s, d["curve"], path + ".curve", "no curve named '" + b.curve + "' in curves");
+  if (!b.angular_velocity.empty()) {
+    const auto at = d["angular_velocity"];
+    const auto key = path + ".angular_velocity";
+    if (b.motion != "free")
+      fail(s, at, key, "rotation moves free bodies only; motion is " + b.motion);
+    const bool round = b.shape == "sphere" || (b.shape == "cylinder" && b.center.size() == 2);
+    if (!round)
+      fail(s, at, key,
+           "rotation is integrated for round bodies only (a 2D cylinder, a sphere); shape is " +
+               b.shape + (b.shape == "cylinder" ? " in 3D" : ""));
+    const std::size_t entries = b.center.size() == 2 ? 1 : 3;
+    if (b.angular_velocity.size() != entries)
+      fail(s, at, key,
+           "expected " + std::to_string(entries) + " entries (" +
+               (entries == 1 ? "about z in 2D" : "a vector in 3D") + "), found " +
+               std::to_string(b.angular_velocity.size()));
+  }
   if (!b.force.empty() && b.motion != "free")
     fail(s, d["force"], path + ".force",
          "an applied force moves free bodies only; motion is " + b.motion +

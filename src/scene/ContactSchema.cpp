@@ -28,6 +28,14 @@ SpecPtr rigid_body_spec() {
                                 "density x pi r^2 x thickness).",
                                 "mass/length^3")
                                .above(0))
+      .optional(
+          "angular_velocity",
+          real_list("Free round bodies (2D cylinder, i.e. a disc; 3D sphere): initial angular "
+                    "velocity (2D: one entry, about z; 3D: three). Given, the body rotates "
+                    "under the moment of its contact forces (I = m R^2 / 2 for a disc, "
+                    "2 m R^2 / 5 for a sphere); omitted, it only translates.",
+                    "1/time")
+              .items(1, 3))
       .optional("force",
                 real_list("Free bodies: an applied force (e.g. a blank holder's), scaled by curve; "
                           "its work is external work.",

@@ -141,6 +141,9 @@ struct RigidBodySpec {
   double thickness = 1;               ///< 2D: out-of-plane length of the body (its mass)
   std::vector<double> gravity;        ///< free bodies: a body load per unit mass (empty: none)
   std::vector<double> force;  ///< free bodies: an applied force (blank holder), x curve if any
+  /// Free round bodies (2D disc, 3D sphere): the initial angular velocity; given, the body
+  /// rotates under the moment of its contact forces (empty: translation only).
+  std::vector<double> angular_velocity;
 };
 
 /// Penalty contact of the surface particles of deformable parts with a rigid body.

@@ -13,6 +13,9 @@ usage: check_contact.py impact|punch|slide|stick HISTORY.csv
   rest    free rigid box (weight 5) settled on a clamped block: over t in [3, 4] contact force
           on the box and base reaction = weight within 0.5 %, box speed < 1e-4, balance < 1 %,
           no contact moment about the centred box
+  roll    free disc spinning at omega0 on an elastic block with friction: angular momentum about
+          the contact point conserved (mean over t >= 0.5 within 1 %, every record within 6 %),
+          mean rolling speed and -omega R over t >= 0.5 = -omega0 R / 3 within 2 %
   pressed the same with an applied force 5 instead of the weight and the box's centre 0.2 off
           the block's axis: contact moment about it -1 within 0.5 %
   punch_implicit  prescribed punch on a block on rollers, implicit: force E* delta within 0.5 %
@@ -68,6 +71,20 @@ elif kind == "punch":
     F, R = col("rb_punch_Fy"), col("R_base_y")
     check("|R_base_y - rb_punch_Fy| / max", np.abs(F - R).max() / np.abs(F).max(), 5e-3)
     check("energy balance", col("energy_balance_error").max(), 1e-4)
+elif kind == "roll":
+    m, R, w0 = 0.5, 0.25, -4.0
+    inertia = 0.5 * m * R * R
+    vx, w = col("rb_disc_vx"), col("rb_disc_wz")
+    L0 = inertia * w0
+    late = t >= 0.5
+    L = (inertia * w - m * R * vx) / L0 - 1
+    # the bounce on the elastic ground moves the contact patch: L oscillates by about 5 %
+    check("angular momentum about the contact point, largest deviation", np.abs(L).max(), 6e-2)
+    check("angular momentum about the contact point, mean over t >= 0.5", L[late].mean(), 1e-2)
+    v_roll = -w0 * R / 3
+    check("mean rolling speed vs -omega0 R / 3 (relative)", vx[late].mean() / v_roll - 1, 2e-2)
+    check("mean -omega R vs -omega0 R / 3 (relative)", (-w[late] * R).mean() / v_roll - 1, 2e-2)
+    check("energy balance", col("energy_balance_error").max(), 1e-2)
 elif kind in ("rest", "pressed"):
     late = t >= 3.0
     if kind == "pressed":  # resultant at the block's axis x = 0.5, box centre at x = 0.7
