@@ -8,8 +8,8 @@ SpecPtr rigid_body_spec() {
   auto point = [](const std::string& doc) { return real_list(doc, "length").items(2, 3); };
   return map("A rigid body of analytic shape: fixed, moved by a prescribed velocity, or free "
              "(translation under its contact forces; a round body given an angular_velocity also "
-             "turns); implicit stages take "
-             "fixed bodies only. Particles of the parts named by a contact may not enter it.")
+             "turns); implicit stages take fixed and prescribed bodies. Particles of the parts "
+             "named by a contact may not enter it.")
       .required("name", string("Body name, unique."))
       .required("shape", choice("Analytic shape.", {"plane", "sphere", "cylinder", "box"}))
       .optional("motion",
