@@ -52,10 +52,12 @@ class NodeEvaluation {
           nodes.insert(n);
     return {nodes.begin(), nodes.end()};
   }
-  std::vector<LocalIndex> part_nodes(const Scene& scene, const std::string& material) const {
+  // Nodes of the parts selected by `take` (by material, or by name).
+  template <class Take>
+  std::vector<LocalIndex> part_nodes(const Scene& scene, Take take) const {
     std::set<LocalIndex> nodes;
     for (const auto& part : scene.parts) {
-      if (part.material != material) continue;
+      if (!take(part)) continue;
       for (const auto& b : mesh_.blocks)
         if (std::find(part.blocks.begin(), part.blocks.end(), b.name) != part.blocks.end())
           nodes.insert(b.connectivity.begin(), b.connectivity.end());
@@ -102,12 +104,17 @@ void check_expressions_at_nodes(const Scene& scene, const BackgroundMesh& mesh) 
     if (load.type == "traction" || load.type == "pressure")
       at.check(load.value, at.side_set_nodes(load.set));
     else if (load.type == "body_force")
-      at.check(load.value, at.all_nodes());  // a superset of the parts' nodes
+      at.check(load.value, at.part_nodes(scene, [&](const PartSpec& p) {
+        return load.parts.empty() ||
+               std::find(load.parts.begin(), load.parts.end(), p.name) != load.parts.end();
+      }));
   }
   for (const auto& ic : scene.initial_conditions) at.check(ic.value, at.node_set(ic.node_set));
   for (const auto& m : scene.materials)
     if (m.youngs_modulus_field)
-      at.check_positive(*m.youngs_modulus_field, at.part_nodes(scene, m.name));
+      at.check_positive(*m.youngs_modulus_field, at.part_nodes(scene, [&](const PartSpec& p) {
+        return p.material == m.name;
+      }));
   if (scene.user_solution) {
     const auto nodes = at.all_nodes();
     at.check(scene.user_solution->displacement, nodes);

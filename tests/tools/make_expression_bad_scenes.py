@@ -47,13 +47,18 @@ cases = [
  ("constant_not_finite", "a modulus of 1/0", {"YOUNG": "\"1/0\""}, "materials[0].youngs_modulus", "found '1/0' = inf (not finite)"),
  ("user_solution_nan", "an exact solution with sqrt(x - 1) at x = 0", {"VERIF": "verification:\n  exact_solution: user\n  user_solution:\n    displacement: [\"sqrt(x-1)\", 0]"}, "verification.user_solution.displacement[0]", "'sqrt(x-1)' is nan at (0, 0, 0)"),
  ("integer_not_whole", "a cell count of L/3", {"CELLS": "\"L/3\""}, "mesh.generate.cells[0]", "expected an integer >= 1"),
+ ("body_force_singular_in_part", "a body force 1/(x - L), infinite on the part's nodes at x = L", {"LOAD": "1", "IC": "0", "VERIF": "", "PARAMS": ""}, "loads[1].value[0]", "'1/(x-L)' is inf at (10, 0, 0)"),
 ]
 defaults = {"PARAMS": "", "CELLS": "10", "YOUNG": "2e5", "BCY": "0", "LOAD": "1", "IC": "0", "VERIF": ""}
-LOCS = {'missing_paren': ('"sin(x"', 6), 'unknown_variable': ('"2*q"', 3), 'unknown_function': ('"foo(x)"', 1), 'time_in_initial_value': ('"t*x"', 1), 'too_many_arguments': ('"sin(x, y)"', 9), 'too_few_arguments': ('"atan2(y)"', 8), 'doubled_operator': ('"2**x"', 3), 'empty': ('[0, ""]', 5), 'assignment': ('"x = 2"', 3), 'two_values': ('"1, 2"', 2), 'extra_parenthesis': ('"(x+1))"', 6), 'trailing_letter': ('"3x"', 2), 'division_by_zero_at_point': ('"1/(x-L)"', 0), 'root_of_negative_at_point': ('"sqrt(5-x)"', 0), 'log_of_zero_at_point': ('"ln(x)"', 0), 'singular_in_time': ('"1/(t-5e-4)"', 0), 'parameter_unknown': ('"2*b"', 3), 'parameter_reserved': ('x: 3', 0), 'constant_not_finite': ('"1/0"', 0), 'user_solution_nan': ('"sqrt(x-1)"', 0), 'integer_not_whole': ('"L/3"', 0)}
+LOCS = {'missing_paren': ('"sin(x"', 6), 'unknown_variable': ('"2*q"', 3), 'unknown_function': ('"foo(x)"', 1), 'time_in_initial_value': ('"t*x"', 1), 'too_many_arguments': ('"sin(x, y)"', 9), 'too_few_arguments': ('"atan2(y)"', 8), 'doubled_operator': ('"2**x"', 3), 'empty': ('[0, ""]', 5), 'assignment': ('"x = 2"', 3), 'two_values': ('"1, 2"', 2), 'extra_parenthesis': ('"(x+1))"', 6), 'trailing_letter': ('"3x"', 2), 'division_by_zero_at_point': ('"1/(x-L)"', 0), 'root_of_negative_at_point': ('"sqrt(5-x)"', 0), 'log_of_zero_at_point': ('"ln(x)"', 0), 'singular_in_time': ('"1/(t-5e-4)"', 0), 'parameter_unknown': ('"2*b"', 3), 'parameter_reserved': ('x: 3', 0), 'constant_not_finite': ('"1/0"', 0), 'user_solution_nan': ('"sqrt(x-1)"', 0), 'integer_not_whole': ('"L/3"', 0),
+        'body_force_singular_in_part': ('"1/(x-L)"', 0)}
 for name, what, subs, path, message in cases:
     text = base
     for k, v in {**defaults, **subs}.items():
         text = text.replace(k, v)
+    if name == "body_force_singular_in_part":  # a second load: a body force on the part
+        text = text.replace("initial_conditions:", "  - {name: g, type: body_force, parts: [p], "
+                            "value: [\"1/(x-L)\", 0]}\ninitial_conditions:")
     text = "\n".join(l for l in text.split("\n") if l.strip() != "")
     fname = f"expression_{name}.yaml"
     marker, offset = LOCS[name]
