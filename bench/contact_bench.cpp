@@ -17,16 +17,8 @@
 #include "operators/LumpedMass.hpp"
 #include "scene/SceneReader.hpp"
 
-namespace {
-double seconds_since(std::chrono::steady_clock::time_point t) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-}
-}  // namespace
-
 int main(int argc, char** argv) {
-  int cells = 40;
-  for (int i = 1; i + 1 < argc; ++i)
-    if (std::strcmp(argv[i], "--cells") == 0) cells = std::atoi(argv[i + 1]);
+  const int cells = static_cast<int>(bench_option(argc, argv, "--cells", 40));
   int library_argc = 1;
   Tpetra::ScopeGuard scope(&library_argc, &argv);
   const auto comm = Tpetra::getDefaultComm();

@@ -12,14 +12,12 @@
 #include <cstring>
 
 #include "ExplicitStep.hpp"
-#include "run/RunSummary.hpp"
 #include "operators/ModelOperators.hpp"
+#include "run/RunSummary.hpp"
 #include "scene/SceneReader.hpp"
 
 int main(int argc, char** argv) {
-  long long max_particles = 100000;
-  for (int i = 1; i + 1 < argc; ++i)
-    if (std::strcmp(argv[i], "--max-particles") == 0) max_particles = std::atoll(argv[i + 1]);
+  const long long max_particles = bench_option(argc, argv, "--max-particles", 100000);
   int library_argc = 1;
   Tpetra::ScopeGuard scope(&library_argc, &argv);
   const auto comm = Tpetra::getDefaultComm();

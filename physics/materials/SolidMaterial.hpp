@@ -28,6 +28,14 @@ struct SolidMaterial {
   bool plane_stress = false;
 };
 
+/// The law with both Lame constants scaled by s: a graded material at a point, s = E(x) / E_ref
+/// (nu fixed, so lambda and mu scale with E).
+EFG_PHYSICS_FUNCTION SolidMaterial with_moduli_scaled(SolidMaterial m, double s) {
+  m.lambda *= s;
+  m.mu *= s;
+  return m;
+}
+
 /// P (first Piola-Kirchhoff; the Cauchy stress for small strain), and A = dP/dH when `A` is
 /// given. Returns false when det F <= 0 (finite strain): the point is inverted and P, A are
 /// undefined.

@@ -74,13 +74,24 @@ class Parameters {
         if (std::isfinite(v)) return v;
       }
     } catch (const ExpressionError& e) {
-      throw InputError(schema::located_message(scene_.file, node, path,
-                                               std::string("expected a number: ") + e.what(),
-                                               schema::expression_column_offset(node, e.position())));
+      throw InputError(schema::located_message(
+          scene_.file, node, path, std::string("expected a number: ") + e.what(),
+          schema::expression_column_offset(node, e.position())));
     }
     throw InputError(schema::located_message(scene_.file, node, path, "expected a number"));
   }
 };
+
+// S = lambda tr(g) I + mu (g + g^T) on the first n rows and columns, zero elsewhere (the linear
+// elastic stress of a displacement gradient g; plane stress by the reduced lambda).
+void linear_elastic_stress(const Lame& c, std::size_t n, const double (&g)[3][3],
+                           double (&S)[3][3]) {
+  double tr = 0;
+  for (std::size_t i = 0; i < n; ++i) tr += g[i][i];
+  for (std::size_t i = 0; i < 3; ++i)
+    for (std::size_t j = 0; j < 3; ++j)
+      S[i][j] = i < n && j < n ? c.mu * (g[i][j] + g[j][i]) + (i == j ? c.lambda * tr : 0.0) : 0.0;
+}
 
 const MaterialSpec& first_material(const Scene& s) {
   return *s.find_material(s.parts.front().material);
@@ -139,13 +150,10 @@ ExactSolution linear_patch(const Scene& scene, int dim) {
     }
   };
   s.nominal_stress = [=](const double*, double(&S)[3][3]) {
-    double tr = 0;
-    for (std::size_t i = 0; i < n; ++i) tr += g[i * n + i];
-    for (std::size_t i = 0; i < 3; ++i)
-      for (std::size_t j = 0; j < 3; ++j)
-        S[i][j] = i < n && j < n
-                      ? c.mu * (g[i * n + j] + g[j * n + i]) + (i == j ? c.lambda * tr : 0.0)
-                      : 0.0;
+    double G[3][3] = {};
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = 0; j < n; ++j) G[i][j] = g[i * n + j];
+    linear_elastic_stress(c, n, G, S);
   };
   return s;
 }
@@ -253,25 +261,12 @@ ExactSolution user_solution(const Scene& scene, int dim) {
     const bool plane_stress = dim == 2 && scene.parts.front().plane_stress;
     const double e = m.constants.at("youngs_modulus"), nu = m.constants.at("poissons_ratio");
     const auto c = plane_stress ? lame_plane_stress(e, nu) : lame(e, nu);
-    const auto displacement = s.displacement;
-    s.nominal_stress = [c, n, displacement](const double* X, double(&S)[3][3]) {
+    ExactSolution u_only;
+    u_only.displacement = s.displacement;
+    s.nominal_stress = [c, n, u_only](const double* X, double(&S)[3][3]) {
       double g[3][3] = {};
-      for (std::size_t j = 0; j < n; ++j) {
-        double xp[3] = {0, 0, 0}, xm[3] = {0, 0, 0}, up[3], um[3];
-        for (std::size_t k = 0; k < n; ++k) xp[k] = xm[k] = X[k];
-        const double h = 1e-6 * (1.0 + std::abs(X[j]));
-        xp[j] += h;
-        xm[j] -= h;
-        displacement(xp, up);
-        displacement(xm, um);
-        for (std::size_t i = 0; i < n; ++i) g[i][j] = (up[i] - um[i]) / (2 * h);
-      }
-      double tr = 0;
-      for (std::size_t i = 0; i < n; ++i) tr += g[i][i];
-      for (std::size_t i = 0; i < 3; ++i)
-        for (std::size_t j = 0; j < 3; ++j)
-          S[i][j] =
-              i < n && j < n ? c.mu * (g[i][j] + g[j][i]) + (i == j ? c.lambda * tr : 0.0) : 0.0;
+      exact_gradient(u_only, X, n, g);
+      linear_elastic_stress(c, n, g, S);
     };
   }
   if (!spec.body_force.empty()) {
@@ -304,6 +299,20 @@ const std::map<std::string, ExactSolutionBuilder>& builders() {
       {"homogeneous_stretch",
        [](const Scene& scene, int dim) { return homogeneous_stretch(scene, dim); }}};
   return table;
+}
+
+void exact_gradient(const ExactSolution& exact, const double* x, std::size_t udim,
+                    double (&g)[3][3]) {
+  const double h = 1e-6 * (1.0 + std::abs(x[0]));
+  for (std::size_t j = 0; j < udim; ++j) {
+    double xp[3] = {0, 0, 0}, xm[3] = {0, 0, 0}, up[3], um[3];
+    for (std::size_t k = 0; k < udim; ++k) xp[k] = xm[k] = x[k];
+    xp[j] += h;
+    xm[j] -= h;
+    exact.displacement(xp, up);
+    exact.displacement(xm, um);
+    for (std::size_t i = 0; i < udim; ++i) g[i][j] = (up[i] - um[i]) / (2 * h);
+  }
 }
 
 std::vector<std::string> implemented_exact_solutions() {

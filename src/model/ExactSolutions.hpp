@@ -22,6 +22,11 @@ struct ExactSolution {
 /// assumption). Throws InputError for unknown parameters or values out of range.
 ExactSolution make_exact_solution(const Scene& scene, int dimension);
 
+/// grad u of the exact displacement at x by central differences (step 1e-6 (1 + |x_0|); smooth
+/// solutions): g[i][j] = du_i/dX_j for i, j < udim.
+void exact_gradient(const ExactSolution& exact, const double* x, std::size_t udim,
+                    double (&g)[3][3]);
+
 /// The names make_exact_solution implements (equal to scene/ExactSolutionNames.hpp's list).
 std::vector<std::string> implemented_exact_solutions();
 

@@ -171,10 +171,7 @@ long long EssentialConditions::add_boundary_points(const Model& model, const Sol
       b.method = setup.method;
       b.beta = beta[q];
       b.law = law;
-      if (!scale.empty()) {
-        b.law.elastic.lambda *= scale[q];
-        b.law.elastic.mu *= scale[q];
-      }
+      if (!scale.empty()) b.law.elastic = physics::with_moduli_scaled(law.elastic, scale[q]);
       if (law.plastic) {
         b.history = committed_.size();
         double initial[physics::j2_state::count];

@@ -152,8 +152,8 @@ std::array<double, 3> load_value(const LoadSpec& spec, const ExactSolution* exac
 }
 
 // f_overlap += scale * sum over points of phi_I(x_p) value(x_p, t) w_p.
-void scatter(const LoadSpec& spec, const ExactSolution* exact, int dim, const Points& pts,
-             double t, double scale, Vector& f_overlap) {
+void scatter(const LoadSpec& spec, const ExactSolution* exact, int dim, const Points& pts, double t,
+             double scale, Vector& f_overlap) {
   auto f = f_overlap.getLocalViewHost(Tpetra::Access::ReadWrite);
   const auto udim = static_cast<std::size_t>(dim);
   for (std::size_t q = 0; q < pts.weight.size(); ++q) {
@@ -195,6 +195,9 @@ ExternalLoads::ExternalLoads(const Model& model, const SolidOperator& op,
       load.force = Teuchos::rcp(new Vector(owned_));
       load.force->doExport(f_overlap, *to_owned_, Tpetra::ADD);
       load.points = Points{};
+    } else if (timed_overlap_.is_null()) {  // work vectors of the per-assembly loads, once
+      timed_overlap_ = Teuchos::rcp(new Vector(overlap_));
+      timed_owned_ = Teuchos::rcp(new Vector(owned_));
     }
     loads_.push_back(std::move(load));
   }
@@ -202,21 +205,20 @@ ExternalLoads::ExternalLoads(const Model& model, const SolidOperator& op,
 
 void ExternalLoads::assemble(const LoadFactor& factor, Vector& f_owned) const {
   f_owned.putScalar(0.0);
-  Teuchos::RCP<Vector> timed;
+  if (!timed_overlap_.is_null()) timed_overlap_->putScalar(0.0);
   for (const auto& l : loads_) {
     if (l.force.is_null()) {
-      if (timed.is_null()) timed = Teuchos::rcp(new Vector(overlap_));
       // An expression of t is the value at that time: no default ramp without a curve.
       const double f = l.spec->curve.empty() ? 1.0 : factor(l.spec->curve);
-      scatter(*l.spec, exact_, dim_, l.points, factor.time(), f, *timed);
+      scatter(*l.spec, exact_, dim_, l.points, factor.time(), f, *timed_overlap_);
     } else {
       f_owned.update(factor(l.spec->curve), *l.force, 1.0);
     }
   }
-  if (!timed.is_null()) {
-    Vector owned(owned_);
-    owned.doExport(*timed, *to_owned_, Tpetra::ADD);
-    f_owned.update(1.0, owned, 1.0);
+  if (!timed_overlap_.is_null()) {
+    timed_owned_->putScalar(0.0);  // as a fresh vector: ADD sums every rank's share
+    timed_owned_->doExport(*timed_overlap_, *to_owned_, Tpetra::ADD);
+    f_owned.update(1.0, *timed_owned_, 1.0);
   }
 }
 

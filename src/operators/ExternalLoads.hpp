@@ -48,6 +48,7 @@ class ExternalLoads {
   int dim_;
   Teuchos::RCP<const Map> overlap_, owned_;
   Teuchos::RCP<const Tpetra::Export<>> to_owned_;
+  Teuchos::RCP<Vector> timed_overlap_, timed_owned_;  // loads varying in time (none: null)
 };
 
 /// Index of the scene part whose blocks contain block `name`, or -1.

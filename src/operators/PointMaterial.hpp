@@ -26,12 +26,7 @@ struct PointMaterial {
 
 /// The elastic law at q: the part's, scaled at a graded point.
 KOKKOS_INLINE_FUNCTION physics::SolidMaterial elastic_at(const PointMaterial& m, int q) {
-  physics::SolidMaterial e = m.elastic;
-  if (m.graded) {
-    e.lambda *= m.modulus_scale(q);
-    e.mu *= m.modulus_scale(q);
-  }
-  return e;
+  return m.graded ? physics::with_moduli_scaled(m.elastic, m.modulus_scale(q)) : m.elastic;
 }
 
 namespace point_material_detail {

@@ -92,10 +92,8 @@ std::vector<double> probe_values(const Model& model, const SolidOperator& op,
     auto law = material_law(model.scene, *model.parts[part].part, dim);
     const auto scale = modulus_scale(*model.scene.find_material(model.parts[part].part->material),
                                      probe.point.data(), 1, 3);
-    if (!scale.empty()) {  // graded material: E at the probe
-      law.elastic.lambda *= scale[0];
-      law.elastic.mu *= scale[0];
-    }
+    if (!scale.empty())  // graded material: E at the probe
+      law.elastic = physics::with_moduli_scaled(law.elastic, scale[0]);
     double s[3][3] = {};
     if (dim == 2)
       stress_at<2>(law.elastic, g, s);

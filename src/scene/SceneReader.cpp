@@ -7,6 +7,7 @@
 
 #include "core/Errors.hpp"
 #include "scene/ContactInput.hpp"
+#include "scene/FieldInput.hpp"
 #include "scene/PlasticityInput.hpp"
 #include "scene/SceneSchema.hpp"
 #include "scene/SchemaValidator.hpp"
@@ -91,7 +92,7 @@ class SceneBuilder {
       s_.verification = r["verification"];
       if (r["verification"]["exact_solution"])
         s_.exact_solution = r["verification"]["exact_solution"].as<std::string>();
-      build_user_solution(r["verification"], d["verification"]);
+      read_user_solution(s_, r["verification"], d["verification"]);
     }
     for (std::size_t i = 0; i < s_.boundary_conditions.size(); ++i) {
       const auto& bc = s_.boundary_conditions[i];
@@ -335,60 +336,13 @@ class SceneBuilder {
     s_.loads.push_back(load);
   }
 
-  // A number, or an expression compiled with the scene's parameters (validated already).
   ScalarField field(const YAML::Node& resolved, const YAML::Node& doc, const std::string& path,
                     ExpressionVariables variables) const {
-    ScalarField f;
-    f.where = schema::located_message(s_.file, doc, path, "");
-    f.where.erase(f.where.size() - 2);  // the empty message's ": "
-    double v = 0;
-    if (resolved.Tag() != "!" && YAML::convert<double>::decode(resolved, v)) {
-      f.constant = v;
-      return f;
-    }
-    auto e = std::make_shared<const Expression>(resolved.Scalar(), s_.parameters, variables);
-    if (!e->uses_position() && !e->uses_time())
-      f.constant = (*e)();
-    else
-      f.expression = std::move(e);
-    return f;
+    return read_field(s_, resolved, doc, path, variables);
   }
-
   std::vector<ScalarField> fields(const YAML::Node& resolved, const YAML::Node& doc,
                                   const std::string& path, ExpressionVariables variables) const {
-    std::vector<ScalarField> out;
-    for (std::size_t i = 0; i < resolved.size(); ++i)
-      out.push_back(field(resolved[i], doc[i], path + "[" + std::to_string(i) + "]", variables));
-    return out;
-  }
-
-  // verification.user_solution: needed exactly when exact_solution is user.
-  void build_user_solution(const YAML::Node& v, const YAML::Node& doc) {
-    const bool user = s_.exact_solution == "user";
-    if (user != static_cast<bool>(v["user_solution"]))
-      fail(user ? doc["exact_solution"] : doc["user_solution"],
-           user ? "verification.exact_solution" : "verification.user_solution",
-           user ? "exact_solution user needs verification.user_solution (the displacement as "
-                  "expressions)"
-                : "user_solution is read only with exact_solution: user");
-    if (!user) return;
-    const auto at_x = ExpressionVariables::position;
-    const auto& u = v["user_solution"];
-    const auto& ud = doc["user_solution"];
-    UserSolutionSpec spec;
-    spec.displacement = fields(u["displacement"], ud["displacement"],
-                               "verification.user_solution.displacement", at_x);
-    if (u["body_force"])
-      spec.body_force =
-          fields(u["body_force"], ud["body_force"], "verification.user_solution.body_force", at_x);
-    if (u["stress"]) {
-      for (const char* c : {"xx", "yy", "zz", "yz", "xz", "xy"}) {
-        const std::string path = std::string("verification.user_solution.stress.") + c;
-        spec.stress.push_back(u["stress"][c] ? field(u["stress"][c], ud["stress"][c], path, at_x)
-                                             : ScalarField{});
-      }
-    }
-    s_.user_solution = spec;
+    return read_fields(s_, resolved, doc, path, variables);
   }
 
   void build_stage(const YAML::Node& st, const YAML::Node& doc, std::size_t i) {

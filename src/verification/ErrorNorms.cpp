@@ -51,21 +51,6 @@ PartQuadrature part_quadrature(const Model& model, const PartDiscretization& par
   return out;
 }
 
-// Exact gradient by central differences of the exact displacement (smooth, cheap).
-void exact_gradient(const ExactSolution& exact, const double* x, std::size_t udim,
-                    double (&g)[3][3]) {
-  const double h = 1e-6 * (1.0 + std::abs(x[0]));
-  for (std::size_t j = 0; j < udim; ++j) {
-    double xp[3] = {0, 0, 0}, xm[3] = {0, 0, 0}, up[3], um[3];
-    for (std::size_t k = 0; k < udim; ++k) xp[k] = xm[k] = x[k];
-    xp[j] += h;
-    xm[j] -= h;
-    exact.displacement(xp, up);
-    exact.displacement(xm, um);
-    for (std::size_t i = 0; i < udim; ++i) g[i][j] = (up[i] - um[i]) / (2 * h);
-  }
-}
-
 // The largest nodal error |u^h(X_J) - u(X_J)| over the part's owned particles.
 double largest_nodal_error(
     const PartDiscretization& part, const std::vector<int>& nodes, const ExactSolution& exact,
