@@ -18,9 +18,10 @@ constexpr auto kXT = ExpressionVariables::position_and_time;
 
 TEST(Expression, EvaluatesVariablesParametersAndFunctions) {
   const Expression e("a*x^2 + sin(pi*y/2) + atan2(z, 1) - 3*t", {{"a", 2.0}}, kXT);
-  const double p[3] = {1.5, 1.0, 1.0};
-  // hand value: 2 * 2.25 + sin(pi/2) + atan(1) - 3 * 0.5
-  EXPECT_NEAR(e(p, 0.5), 4.5 + 1.0 + M_PI / 4 - 1.5, 1e-15);
+  const double p[3] = {1.5, 1.0, 0.5};
+  // hand value: 2 * 2.25 + sin(pi/2) + atan(0.5 / 1) - 3 * 0.5 (z != 1: atan2's argument order
+  // matters)
+  EXPECT_NEAR(e(p, 0.5), 4.5 + 1.0 + std::atan(0.5) - 1.5, 1e-15);
   EXPECT_TRUE(e.uses_position());
   EXPECT_TRUE(e.uses_time());
   const Expression c("2*a + ln(_e)", {{"a", 3.0}}, ExpressionVariables::none);
