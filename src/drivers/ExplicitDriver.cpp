@@ -32,8 +32,8 @@ ExplicitDriver::ExplicitDriver(const ModelOperators& ops, const StageSpec& stage
       inverse_mass_(mass_.getMap()),
       contact_(RigidContact::wanted(ops.model().scene) ? std::make_unique<RigidContact>(ops, mass_)
                                                        : nullptr),
-      motion_(ops.model()),
-      supports_(ops),
+      motion_(ops.model(), stage.name),
+      supports_(ops, stage.name),
       stable_(ops, mass_, largest_wall_penalty(ops.model().scene),
               supports_.active() ? StableTimeStep::ExtraStiffness(
                                        [this](const Vector& d, const Vector& x, Vector& y) {
@@ -59,7 +59,7 @@ ExplicitDriver::ExplicitDriver(const ModelOperators& ops, const StageSpec& stage
 
 std::vector<double> ExplicitDriver::acceleration(double time, double wall_dt, const Vector& d,
                                                  Vector& a) {
-  ops_.loads().assemble(curve_factor(ops_.model().scene, time, 1.0), f_ext_);
+  ops_.loads().assemble(curve_factor(ops_.model().scene, time, 1.0, stage_.name), f_ext_);
   ops_.internal_force(d, f_int_);
   if (supports_.active()) {  // f_int_ carries the weak supports' resistance from here on
     supports_.set_time(time);
@@ -157,7 +157,8 @@ ExplicitDriver::StepPlan ExplicitDriver::plan_steps(const Vector& d, double star
   Log::info(o.str());
   // Honest about the default's error: generalized values are not the physical ones.
   for (const auto& bc : ops_.model().scene.boundary_conditions)
-    if (bc.type == "displacement" && bc.method == "transformation")
+    if (bc.type == "displacement" && bc.method == "transformation" &&
+        bc.stages.includes(stage_.name))
       Log::info("stage '" + stage_.name + "': displacement condition '" + bc.name +
                 "' (method transformation) prescribes the particles' generalized values here: "
                 "stresses next to it are approximate (2-25 %, docs/boundary_conditions.md, "

@@ -29,11 +29,25 @@ StageSummary ImplicitDriver::run(Vector& d, const OutputHook& output) {
   double t = start_, dt = span / steps, next_output = std::min(end, start_ + interval),
          last_output = start_;
   Vector saved(d, Teuchos::Copy);
+  auto set_loads = [&](double time) {
+    const double ramp = std::min(1.0, time / first_end_);
+    problem_.set_load_factor(curve_factor(scene, time, ramp, stage_.name));
+    problem_.set_time(time);
+  };
+  const bool springback = stage_.settings["springback"].as<bool>();
+  if (springback) {
+    // The stage's equations at its start are out of balance by what it no longer holds (released
+    // supports, tools, loads, an explicit state's inertia): that force is released linearly in
+    // pseudo-time, as a load stepped down to zero (docs/implicit.md, "Springback").
+    set_loads(start_);
+    problem_.begin_release(d);
+    Log::info("  stage '" + stage_.name + "': springback, releasing the forces out of balance " +
+              "at the start over " + std::to_string(steps) + " load step(s)");
+  }
   while (t < end - 1e-12 * span) {
     const double target = std::min(end, t + dt);
-    const double ramp = std::min(1.0, target / first_end_);
-    problem_.set_load_factor(curve_factor(scene, target, ramp));
-    problem_.set_time(target);
+    set_loads(target);
+    if (springback) problem_.set_release(std::max(0.0, (end - target) / span));
     Log::info("  stage '" + stage_.name + "' step " + std::to_string(summary.steps + 1) +
               ": t = " + std::to_string(target));
     Tpetra::deep_copy(saved, d);

@@ -6,7 +6,7 @@
 
 namespace efg {
 
-PrescribedMotion::PrescribedMotion(const Model& model)
+PrescribedMotion::PrescribedMotion(const Model& model, const std::string& stage)
     : conditions_(model.scene.boundary_conditions.size()) {
   const int dim = model.mesh.dimension;
   std::set<int> taken;
@@ -14,6 +14,7 @@ PrescribedMotion::PrescribedMotion(const Model& model)
     const auto& bc = model.scene.boundary_conditions[b];
     // Displacement conditions with method nitsche or penalty act weakly (drivers/WeakSupports).
     if (bc.type == "displacement" && bc.method != "transformation") continue;
+    if (!bc.stages.includes(stage)) continue;  // released in this stage
     for (auto node : model.mesh.find_node_set(bc.node_set)->nodes) {
       if (model.partition.owner[static_cast<std::size_t>(node)] != model.partition.rank) continue;
       for (int i = 0; i < dim; ++i) {

@@ -20,7 +20,8 @@ namespace efg {
 
 class PrescribedMotion {
  public:
-  explicit PrescribedMotion(const Model& model);
+  /// The conditions active in `stage` (a condition's stages list; all when it names none).
+  PrescribedMotion(const Model& model, const std::string& stage);
 
   /// Overwrites the constrained entries of the half-step velocity: the prescribed velocity at
   /// mid-step, or the change of the prescribed displacement from step start to end over dt.

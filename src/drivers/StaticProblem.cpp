@@ -10,13 +10,29 @@ StaticProblem::StaticProblem(const Model& model)
 StaticProblem::StaticProblem(std::shared_ptr<const ModelOperators> operators)
     : ops_(std::move(operators)),
       model_(ops_->model()),
-      conditions_(model_, ops_->solid(), ops_->exact()),
       d_overlap_(model_.maps.overlap_dofs),
       r_overlap_(model_.maps.overlap_dofs),
       f_ext_(model_.maps.owned_dofs) {
+  // The conditions of each implicit stage; stages with the same active conditions share them.
+  const auto& scene = model_.scene;
+  std::vector<std::string> stages;
+  for (const auto& st : scene.stages)
+    if (st.driver == "implicit") stages.push_back(st.name);
+  if (stages.empty()) stages.push_back("");
+  std::map<std::vector<bool>, std::size_t> set_of_key;
+  for (const auto& stage : stages) {
+    std::vector<bool> key;
+    for (const auto& bc : scene.boundary_conditions) key.push_back(bc.stages.includes(stage));
+    auto [it, added] = set_of_key.emplace(key, condition_sets_.size());
+    if (added)
+      condition_sets_.push_back(std::make_unique<EssentialConditions>(
+          model_, ops_->solid(), ops_->exact(), EssentialConditions::Selection::all, stage));
+    set_of_stage_[stage] = it->second;
+  }
+  conditions_ = condition_sets_.front().get();
   CouplingGraph couplings(model_.maps.overlap_nodes->getNodeNumElements());
   ops_->solid().add_point_couplings(couplings);
-  conditions_.add_couplings(couplings);
+  for (const auto& set : condition_sets_) set->add_couplings(couplings);
   if (!model_.scene.contacts.empty()) {
     contact_ = std::make_unique<ImplicitContact>(*ops_);
     contact_->add_couplings(couplings);
@@ -34,11 +50,28 @@ void StaticProblem::commit_history(const Vector& d_owned) {
   Vector r(d_owned.getMap());
   residual(d_owned, r);  // the internal force and the boundary terms, at d
   history.commit();
-  conditions_.commit_history();
+  conditions_->commit_history();
+}
+
+void StaticProblem::begin_stage(const std::vector<RigidBodyState>& bodies, double t0,
+                                const std::string& stage) {
+  const auto it = set_of_stage_.find(stage);
+  conditions_ = condition_sets_[it == set_of_stage_.end() ? 0 : it->second].get();
+  released_ = Teuchos::null;
+  release_scale_ = 0;
+  if (contact_) contact_->begin_stage(bodies, t0);
+}
+
+void StaticProblem::begin_release(const Vector& d0_owned) {
+  released_ = Teuchos::null;  // the stage's own residual first, without a release term
+  auto r0 = Teuchos::rcp(new Vector(model_.maps.owned_dofs));
+  unconstrained_residual(d0_owned, *r0);
+  released_ = r0;
+  release_scale_ = 1;
 }
 
 void StaticProblem::set_load_factor(const LoadFactor& factor) {
-  conditions_.set_factor(factor);
+  conditions_->set_factor(factor);
   ops_->loads().assemble(factor, f_ext_);
   external_norm_ = f_ext_.norm2();
 }
@@ -49,17 +82,18 @@ void StaticProblem::unconstrained_residual(const Vector& d_owned, Vector& r_owne
   ops_->solid().add_internal_force(d_overlap_, r_overlap_);
   {
     Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewCounter("efg: essential conditions"));
-    conditions_.add_boundary_terms(d_overlap_, r_overlap_);
+    conditions_->add_boundary_terms(d_overlap_, r_overlap_);
   }
   if (contact_) contact_->add_residual(d_overlap_, r_overlap_);
   ops_->to_owned(r_overlap_, r_owned);
   internal_norm_ = r_owned.norm2();
   r_owned.update(-1.0, f_ext_, 1.0);
+  if (released_) r_owned.update(-release_scale_, *released_, 1.0);
 }
 
 void StaticProblem::residual(const Vector& d_owned, Vector& r_owned) {
   unconstrained_residual(d_owned, r_owned);
-  conditions_.replace_rows(d_overlap_, r_owned);
+  conditions_->replace_rows(d_overlap_, r_owned);
 }
 
 void StaticProblem::jacobian(const Vector& d_owned, FEMatrix& K) {
@@ -69,13 +103,13 @@ void StaticProblem::jacobian(const Vector& d_owned, FEMatrix& K) {
   ops_->solid().add_tangent(d_overlap_, K);
   {
     Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewCounter("efg: essential conditions"));
-    conditions_.add_boundary_terms(d_overlap_, K);
+    conditions_->add_boundary_terms(d_overlap_, K);
   }
   if (contact_) contact_->add_tangent(d_overlap_, K);
   K.endAssembly();
   Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewCounter("efg: essential conditions"));
   K.beginModify();
-  conditions_.replace_rows(K);
+  conditions_->replace_rows(K);
   K.endModify();
 }
 
@@ -95,7 +129,8 @@ std::vector<std::array<double, 3>> StaticProblem::reactions(const Vector& d_owne
   if (contact_) contact_->add_residual(d_overlap_, r_overlap_);
   ops_->to_owned(r_overlap_, r);
   r.update(-1.0, f_ext_, 1.0);
-  return conditions_.reactions(r);
+  if (released_) r.update(-release_scale_, *released_, 1.0);  // still applied, like a load
+  return conditions_->reactions(r);
 }
 
 }  // namespace efg

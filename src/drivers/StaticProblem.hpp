@@ -5,7 +5,9 @@
 #pragma once
 
 #include <algorithm>
+#include <map>
 #include <memory>
+#include <string>
 
 #include "contact/ImplicitContact.hpp"
 #include "operators/EssentialConditions.hpp"
@@ -21,11 +23,17 @@ class StaticProblem {
 
   /// Prescribed values and loads at the current load level.
   void set_load_factor(const LoadFactor& factor);
-  /// Rigid bodies: their states at the stage start (time t0), and the time of the load step
-  /// (prescribed bodies move with it). No-ops without contacts.
-  void begin_stage(const std::vector<RigidBodyState>& bodies, double t0) {
-    if (contact_) contact_->begin_stage(bodies, t0);
-  }
+  /// A stage begins: the displacement conditions active in it (stage "": the first implicit
+  /// stage's), and the rigid bodies' states at the stage start, time t0 (no-op without
+  /// contacts). Ends any release of the previous stage.
+  void begin_stage(const std::vector<RigidBodyState>& bodies, double t0,
+                   const std::string& stage = "");
+  /// Springback: r(d0), the residual of the stage's own equations (its conditions, loads and
+  /// contacts at the current load factor) at the state it starts from, is subtracted from the
+  /// residual scaled by `remaining` (set_release), so d0 is in equilibrium at remaining = 1 and
+  /// the unbalance (released supports and tools, the inertia of an explicit state) is gone at 0.
+  void begin_release(const Vector& d0_owned);
+  void set_release(double remaining) { release_scale_ = remaining; }
   void set_time(double t) {
     if (contact_) contact_->set_time(t);
   }
@@ -68,10 +76,16 @@ class StaticProblem {
 
   std::shared_ptr<const ModelOperators> ops_;
   const Model& model_;
-  EssentialConditions conditions_;
+  /// One set of conditions per distinct choice of active conditions among the implicit stages
+  /// (usually one); a set keeps its boundary points' history from stage to stage.
+  std::vector<std::unique_ptr<EssentialConditions>> condition_sets_;
+  std::map<std::string, std::size_t> set_of_stage_;
+  EssentialConditions* conditions_ = nullptr;  ///< the current stage's
   std::unique_ptr<ImplicitContact> contact_;  ///< only with contacts in the scene
   Teuchos::RCP<const FEGraph> graph_;
   Vector d_overlap_, r_overlap_, f_ext_;
+  Teuchos::RCP<Vector> released_;  ///< springback: r(d0) of the stage (null: no release)
+  double release_scale_ = 0;
   double external_norm_ = 0, internal_norm_ = 0;
   bool linear_ = false;
 };

@@ -4,22 +4,23 @@
 
 namespace efg {
 
-bool WeakSupports::wanted(const Scene& scene) {
+bool WeakSupports::wanted(const Scene& scene, const std::string& stage) {
   for (const auto& bc : scene.boundary_conditions)
-    if (bc.type == "displacement" && bc.method != "transformation") return true;
+    if (bc.type == "displacement" && bc.method != "transformation" && bc.stages.includes(stage))
+      return true;
   return false;
 }
 
-WeakSupports::WeakSupports(const ModelOperators& ops)
+WeakSupports::WeakSupports(const ModelOperators& ops, const std::string& stage)
     : ops_(ops),
       last_(ops.model().maps.owned_dofs),
       d_overlap_(ops.model().maps.overlap_dofs),
       r_overlap_(ops.model().maps.overlap_dofs),
       x_overlap_(ops.model().maps.overlap_dofs),
       scratch_(ops.model().maps.owned_dofs) {
-  if (!wanted(ops.model().scene)) return;
-  conditions_ = std::make_unique<EssentialConditions>(ops.model(), ops.solid(), ops.exact(),
-                                                      EssentialConditions::Selection::weak_only);
+  if (!wanted(ops.model().scene, stage)) return;
+  conditions_ = std::make_unique<EssentialConditions>(
+      ops.model(), ops.solid(), ops.exact(), EssentialConditions::Selection::weak_only, stage);
   totals_.assign(conditions_->condition_count(), {0.0, 0.0, 0.0});
 }
 

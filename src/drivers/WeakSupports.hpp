@@ -23,12 +23,12 @@ namespace efg {
 
 class WeakSupports {
  public:
-  /// Builds the boundary points only when the scene has a weakly enforced displacement
+  /// Builds the boundary points only when the stage has a weakly enforced displacement
   /// condition (a scene builds only what it needs).
-  explicit WeakSupports(const ModelOperators& ops);
+  WeakSupports(const ModelOperators& ops, const std::string& stage);
 
-  /// True when the scene has a displacement condition with method nitsche or penalty.
-  static bool wanted(const Scene& scene);
+  /// True when a displacement condition with method nitsche or penalty acts in `stage`.
+  static bool wanted(const Scene& scene, const std::string& stage);
   bool active() const { return conditions_ != nullptr; }
 
   /// The prescribed values at `time` (value x curve; a condition without a curve holds its

@@ -27,7 +27,8 @@ double curve_integral(const CurveSpec& c, double t0, double t1) {
   return t1 >= t0 ? area : -area;
 }
 
-LoadFactor curve_factor(const Scene& scene, double time, double no_curve) {
+LoadFactor curve_factor(const Scene& scene, double time, double no_curve,
+                        const std::string& stage) {
   return LoadFactor(
       [&scene, time, no_curve](const std::string& name) {
         if (name.empty()) return no_curve;
@@ -35,7 +36,7 @@ LoadFactor curve_factor(const Scene& scene, double time, double no_curve) {
           if (c.name == name) return curve_value(c, time);
         throw std::logic_error("curve '" + name + "' not found after validation");
       },
-      time);
+      time, stage);
 }
 
 }  // namespace efg

@@ -13,6 +13,7 @@
 #include "parallel/MeshBroadcast.hpp"
 #include "parallel/RootBroadcast.hpp"
 #include "scene/SceneMeshChecks.hpp"
+#include "scene/SceneNodeSets.hpp"
 #include "scene/SceneReader.hpp"
 #include "scene/SchemaValidator.hpp"
 
@@ -40,6 +41,7 @@ BackgroundMesh load_mesh(const CommPtr& comm, const Scene& scene) {
                                                std::string("mesh.") + key, e.what()));
     }
   });
+  add_scene_node_sets(scene, mesh);
   check_scene_against_mesh(scene, mesh);
   return mesh;
 }

@@ -35,7 +35,8 @@ double spacing_of(const PartDiscretization& d, std::size_t particle) {
 }  // namespace
 
 EssentialConditions::EssentialConditions(const Model& model, const SolidOperator& op,
-                                         const ExactSolution* exact, Selection selection)
+                                         const ExactSolution* exact, Selection selection,
+                                         const std::string& stage)
     : dim_(model.mesh.dimension),
       conditions_(model.scene.boundary_conditions.size()),
       overlap_dofs_(model.maps.overlap_dofs) {
@@ -47,6 +48,7 @@ EssentialConditions::EssentialConditions(const Model& model, const SolidOperator
   for (std::size_t c = 0; c < model.scene.boundary_conditions.size(); ++c) {
     const auto& bc = model.scene.boundary_conditions[c];
     if (bc.type != "displacement") continue;  // velocity conditions belong to the explicit driver
+    if (!bc.stages.includes(stage)) continue;  // not active in this stage: no terms, no reaction
     Setup setup;
     setup.index = c;
     setup.bc = &bc;

@@ -37,10 +37,11 @@ namespace efg {
 class EssentialConditions {
  public:
   /// Which displacement conditions to build: all (implicit stages), or only those enforced
-  /// weakly by boundary integrals, nitsche and penalty (explicit stages, drivers/WeakSupports).
+  /// weakly by boundary integrals, nitsche and penalty (explicit stages, drivers/WeakSupports);
+  /// of those, the ones active in `stage` ("": every condition, whatever its stages).
   enum class Selection { all, weak_only };
   EssentialConditions(const Model& model, const SolidOperator& op, const ExactSolution* exact,
-                      Selection selection = Selection::all);
+                      Selection selection = Selection::all, const std::string& stage = "");
 
   /// Couplings the constraint rows and boundary integrals add to the stiffness graph.
   void add_couplings(CouplingGraph& graph) const;

@@ -207,6 +207,7 @@ void ExternalLoads::assemble(const LoadFactor& factor, Vector& f_owned) const {
   f_owned.putScalar(0.0);
   if (!timed_overlap_.is_null()) timed_overlap_->putScalar(0.0);
   for (const auto& l : loads_) {
+    if (!l.spec->stages.includes(factor.stage())) continue;  // not applied in this stage
     if (l.force.is_null()) {
       // An expression of t is the value at that time: no default ramp without a curve.
       const double f = l.spec->curve.empty() ? 1.0 : factor(l.spec->curve);

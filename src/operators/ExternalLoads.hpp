@@ -23,7 +23,8 @@ class ExternalLoads {
   /// `exact` is needed only by loads taken from the exact solution.
   ExternalLoads(const Model& model, const SolidOperator& op, const ExactSolution* exact);
 
-  /// f_owned = sum over loads of factor(curve) * F_load(t = factor.time()).
+  /// f_owned = sum over the loads acting in factor.stage() of factor(curve) * F_load(t =
+  /// factor.time()).
   void assemble(const LoadFactor& factor, Vector& f_owned) const;
 
   /// Points of loads whose values vary in time (evaluated at every assembly); for bench/.

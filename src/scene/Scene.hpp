@@ -71,6 +71,18 @@ struct MaterialSpec {
   std::string hardening_curve;  ///< j2_plasticity: curve of yield stress over plastic strain
 };
 
+/// The stages a condition, load or contact acts in: named ones, or every stage when none are named.
+/// A springback stage is an implicit stage whose tools and prescribed motions are not active.
+struct ActiveStages {
+  std::vector<std::string> names;  ///< empty: every stage
+  bool includes(const std::string& stage) const {
+    if (names.empty() || stage.empty()) return true;  // "": no particular stage (all)
+    for (const auto& n : names)
+      if (n == stage) return true;
+    return false;
+  }
+};
+
 struct BoundaryConditionSpec {
   std::string name;
   std::string type;  ///< displacement | velocity
@@ -81,6 +93,7 @@ struct BoundaryConditionSpec {
   std::array<bool, 3> from_exact{false, false,
                                  false};  ///< components taken from the exact solution
   std::string curve;                      ///< empty: constant
+  ActiveStages stages;
 };
 
 struct LoadSpec {
@@ -91,6 +104,7 @@ struct LoadSpec {
   std::vector<ScalarField> value;  ///< traction, body force, pressure: may vary in x, y, z, t
   bool from_exact = false;  ///< traction or body force from the verification block's exact solution
   std::string curve;
+  ActiveStages stages;
 };
 
 struct InitialConditionSpec {
@@ -110,6 +124,14 @@ struct UserSolutionSpec {
 struct ProbeSpec {
   std::string name;
   std::array<double, 3> point{0, 0, 0};
+};
+
+/// A node set made by the scene: the nodes of the mesh (or of the node set `within`) inside the
+/// axis-aligned box [lower, upper] (LS-DYNA *SET_NODE_GENERAL with BOX): a single pin, an edge.
+struct NodeSetSpec {
+  std::string name;
+  std::vector<double> lower, upper;
+  std::string within;  ///< empty: every node of the mesh
 };
 
 struct CurveSpec {
@@ -186,6 +208,7 @@ struct Scene {
   std::vector<LoadSpec> loads;
   std::vector<InitialConditionSpec> initial_conditions;
   std::vector<CurveSpec> curves;
+  std::vector<NodeSetSpec> node_sets;  ///< made by the scene, added to the mesh's own sets
   std::vector<RigidWallSpec> rigid_walls;
   std::vector<RigidBodySpec> rigid_bodies;
   std::vector<ContactSpec> contacts;

@@ -152,22 +152,22 @@ class Checker {
   // rigid motion, an inconsistent one fails in the linear solver). The test: the rigid-body
   // modes (translations, rotations about the part's centroid, coordinates scaled by its size)
   // restricted to the constrained (node, component) pairs must have full rank.
+  // Each implicit stage with the conditions active in it (a springback stage keeps only those
+  // that stop the rigid-body motion).
   void check_parts_held() const {
-    std::size_t implicit_stage = s_.stages.size();
-    for (std::size_t i = 0; i < s_.stages.size() && implicit_stage == s_.stages.size(); ++i)
-      if (s_.stages[i].driver == "implicit") implicit_stage = i;
-    if (implicit_stage == s_.stages.size()) return;
-    for (std::size_t p = 0; p < s_.parts.size(); ++p) {
-      const auto free = free_rigid_motion(p);
-      if (free.empty()) continue;
-      fail(s_.document["stages"][implicit_stage]["driver"],
-           "stages[" + std::to_string(implicit_stage) + "].driver",
-           "an implicit (static) stage needs part '" + s_.parts[p].name +
-               "' held against rigid-body motion, but its displacement conditions leave it free "
-               "to " +
-               free +
-               " (its stiffness is singular); add displacement conditions that stop it, or use "
-               "driver: explicit");
+    for (std::size_t i = 0; i < s_.stages.size(); ++i) {
+      if (s_.stages[i].driver != "implicit") continue;
+      for (std::size_t p = 0; p < s_.parts.size(); ++p) {
+        const auto free = free_rigid_motion(p, s_.stages[i].name);
+        if (free.empty()) continue;
+        fail(s_.document["stages"][i]["driver"], "stages[" + std::to_string(i) + "].driver",
+             "an implicit (static) stage needs part '" + s_.parts[p].name +
+                 "' held against rigid-body motion, but the displacement conditions active in "
+                 "stage '" +
+                 s_.stages[i].name + "' leave it free to " + free +
+                 " (its stiffness is singular); add displacement conditions that stop it, or "
+                 "use driver: explicit");
+      }
     }
   }
 
@@ -193,7 +193,7 @@ class Checker {
   }
 
   // "" when part p is held; otherwise the free motion in words.
-  std::string free_rigid_motion(std::size_t p) const {
+  std::string free_rigid_motion(std::size_t p, const std::string& stage) const {
     const int dim = m_.dimension;
     const auto udim = static_cast<std::size_t>(dim);
     std::vector<char> in_part(m_.node_count(), 0);
@@ -225,7 +225,7 @@ class Checker {
     std::vector<double> gram(static_cast<std::size_t>(modes * modes), 0.0);
     std::vector<char> constrained(m_.node_count() * udim, 0);
     for (const auto& bc : s_.boundary_conditions) {
-      if (bc.type != "displacement") continue;
+      if (bc.type != "displacement" || !bc.stages.includes(stage)) continue;
       for (auto n : m_.find_node_set(bc.node_set)->nodes)
         for (std::size_t c = 0; c < udim; ++c)
           if (bc.components[c] || bc.from_exact[c])
@@ -327,7 +327,9 @@ class Checker {
         for (std::size_t c = 0; c < dim; ++c) {
           const bool both = (bcs[i].components[c] || bcs[i].from_exact[c]) &&
                             (bcs[j].components[c] || bcs[j].from_exact[c]);
-          if (!both || same_prescription(bcs[i], bcs[j], c)) continue;
+          if (!both || same_prescription(bcs[i], bcs[j], c) ||
+              !share_a_stage(bcs[i].stages, bcs[j].stages))
+            continue;
           const auto shared = first_shared_node(bcs[i].node_set, bcs[j].node_set);
           if (shared < 0) continue;
           const char axis = static_cast<char>('x' + c);
@@ -338,6 +340,15 @@ class Checker {
                    " differently (node sets '" + bcs[j].node_set + "' and '" + bcs[i].node_set +
                    "' share it); expected one prescription per component of a node");
         }
+  }
+
+  // Two stage lists that meet: the conditions act together somewhere (a scene without stages
+  // runs none, but its conditions must still agree).
+  bool share_a_stage(const ActiveStages& a, const ActiveStages& b) const {
+    if (a.names.empty() || b.names.empty()) return true;
+    for (const auto& n : a.names)
+      if (b.includes(n)) return true;
+    return false;
   }
 
   LocalIndex first_shared_node(const std::string& a, const std::string& b) const {

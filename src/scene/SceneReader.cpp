@@ -11,6 +11,7 @@
 #include "scene/PlasticityInput.hpp"
 #include "scene/SceneSchema.hpp"
 #include "scene/SchemaValidator.hpp"
+#include "scene/StageLists.hpp"
 #include "scene/YamlDocument.hpp"
 
 namespace efg {
@@ -75,6 +76,12 @@ class SceneBuilder {
         probe.point[k] = p["point"][k].as<double>();
       s_.probes.push_back(probe);
     }
+    for (const auto& n : r["node_sets"])
+      s_.node_sets.push_back({n["name"].as<std::string>(), as_vector<double>(n["lower"]),
+                              as_vector<double>(n["upper"]), opt_string(n, "within")});
+    std::vector<std::string> stage_names;
+    for (const auto& st : r["stages"]) stage_names.push_back(st["name"].as<std::string>());
+    check_stage_lists(s_, stage_names);
     for (std::size_t i = 0; i < r["stages"].size(); ++i)
       build_stage(r["stages"][i], d["stages"][i], i);
     check_plasticity_input(s_);
@@ -303,6 +310,7 @@ class SceneBuilder {
       }
     bc.curve = opt_string(b, "curve");
     require_curve(doc, path, bc.curve);
+    bc.stages.names = as_vector<std::string>(b["stages"]);
     s_.boundary_conditions.push_back(bc);
   }
 
@@ -326,6 +334,7 @@ class SceneBuilder {
       fail(doc, path, "expected exactly one of value, from_exact_solution: true");
     load.curve = opt_string(l, "curve");
     require_curve(doc, path, load.curve);
+    load.stages.names = as_vector<std::string>(l["stages"]);
     for (std::size_t k = 0; k < load.parts.size(); ++k) {
       bool found = false;
       for (const auto& p : s_.parts) found = found || p.name == load.parts[k];
@@ -361,13 +370,16 @@ class SceneBuilder {
     if (stage.driver == "implicit") {
       check_linear_solver(st, doc, i);
       for (std::size_t b = 0; b < s_.boundary_conditions.size(); ++b)
-        if (s_.boundary_conditions[b].type == "velocity")
+        if (s_.boundary_conditions[b].type == "velocity" &&
+            s_.boundary_conditions[b].stages.includes(stage.name))
           fail(d_bc(b), "boundary_conditions[" + std::to_string(b) + "].type",
                "a velocity condition, but stage '" + stage.name +
                    "' is implicit (static), where velocities do not exist; expected type: "
-                   "displacement (with a curve for a motion over time)");
+                   "displacement (with a curve for a motion over time), or stages: naming the "
+                   "explicit stages it acts in");
       bool held = false;
-      for (const auto& bc : s_.boundary_conditions) held = held || bc.type == "displacement";
+      for (const auto& bc : s_.boundary_conditions)
+        held = held || (bc.type == "displacement" && bc.stages.includes(stage.name));
       if (!held)
         fail(doc["driver"], "stages[" + std::to_string(i) + "].driver",
              "an implicit (static) stage needs displacement conditions that hold the body "

@@ -209,6 +209,11 @@ SpecPtr boundary_condition_spec() {
                                 "default 1e4).",
                                 "-")
                                .above(0))
+      .optional("stages",
+                string_list("Stages the condition acts in (names of stages); every stage when "
+                            "omitted. A springback stage leaves out the conditions that formed "
+                            "the part.")
+                    .items(1, 1000))
       .discriminated_by("type")
       .variant("displacement", keys("Prescribed displacement", "length"))
       .variant("velocity", keys("Prescribed velocity", "length/time"))
@@ -226,6 +231,9 @@ SpecPtr load_spec() {
       .required("name", string("Load name, unique."))
       .required("type",
                 choice("Kind of load.", {"traction", "pressure", "nodal_force", "body_force"}))
+      .optional("stages", string_list("Stages the load acts in (names of stages); every stage "
+                                      "when omitted.")
+                              .items(1, 1000))
       .discriminated_by("type")
       .variant(
           "traction",
@@ -273,6 +281,16 @@ SpecPtr initial_condition_spec() {
                              .varying(ExpressionVariables::position));
 }
 
+SpecPtr node_set_spec() {
+  return map("The nodes of the mesh (or of node set within) inside the box [lower, upper], "
+             "bounds included (LS-DYNA *SET_NODE_GENERAL with BOX): a pin, an edge, a patch.")
+      .required("name", string("Node set name, unique, not a name the mesh already has."))
+      .required("lower", real_list("Lower corner, one entry per dimension.", "length").items(2, 3))
+      .required("upper", real_list("Upper corner, one entry per dimension.", "length").items(2, 3))
+      .optional("within", string("A node set of the mesh to take the nodes from; all nodes when "
+                                 "omitted."));
+}
+
 SpecPtr curve_spec() {
   return map("A piecewise-linear function of time (LS-DYNA *DEFINE_CURVE); constant beyond its "
              "ends.")
@@ -297,6 +315,12 @@ SpecPtr stage_spec() {
       .variant(
           "implicit",
           {optional_key("load_steps", integer("Initial number of load steps.").at_least(1), "1"),
+           optional_key("springback",
+                        boolean("Springback: the forces out of balance when the stage starts "
+                                "(of conditions, loads and contacts not active in it, and the "
+                                "inertia of an explicit state) are released gradually, to zero "
+                                "at end_time, over the load steps (docs/implicit.md)."),
+                        "false"),
            optional_key("min_step_fraction",
                         real("Smallest load step after cutbacks, as a fraction of end_time.", "-")
                             .above(0)
@@ -465,6 +489,11 @@ Spec build_scene_schema() {
           .optional("initial_conditions", list("Initial conditions.", initial_condition_spec()),
                     "[]")
           .optional("curves", list("Load curves.", curve_spec()).unique_names(), "[]")
+          .optional("node_sets",
+                    list("Node sets made by the scene, usable wherever a node set is named.",
+                         node_set_spec())
+                        .unique_names(),
+                    "[]")
           .optional("rigid_walls",
                     list("Planar rigid walls (explicit stages).", rigid_wall_spec()).unique_names(),
                     "[]")
