@@ -44,7 +44,7 @@ int main(int argc, char** argv) {
     efg::ModelOperators ops(model);
     const auto mass = efg::lumped_mass(ops);
     efg::RigidBodies bodies(model.scene, 3);
-    efg::PenaltyContact contact(ops, mass, bodies);
+    efg::PenaltyContact contact(ops, mass, bodies, "");
     auto states = bodies.initial_states(0.0);
     efg::Vector d(model.maps.owned_dofs), v(model.maps.owned_dofs), a(model.maps.owned_dofs),
         f(model.maps.owned_dofs), d_overlap(model.maps.overlap_dofs),

@@ -18,6 +18,7 @@ ImplicitContact::ImplicitContact(const ModelOperators& ops)
   const auto& mesh = model.mesh;
   for (const auto& spec : model.scene.contacts) {
     Pair pair;
+    pair.spec = &spec;
     for (std::size_t b = 0; b < bodies_.count(); ++b)
       if (bodies_.name(b) == spec.rigid_body) pair.body = b;
     for (std::size_t p = 0; p < model.parts.size(); ++p) {
@@ -49,7 +50,9 @@ ImplicitContact::ImplicitContact(const ModelOperators& ops)
   }
 }
 
-void ImplicitContact::begin_stage(const std::vector<RigidBodyState>& carried, double t0) {
+void ImplicitContact::begin_stage(const std::vector<RigidBodyState>& carried, double t0,
+                                  const std::string& stage) {
+  for (auto& pair : pairs_) pair.active = pair.spec->stages.includes(stage);
   t0_ = t0;
   start_.assign(bodies_.count(), {0.0, 0.0, 0.0});
   for (std::size_t b = 0; b < std::min(carried.size(), start_.size()); ++b)
@@ -91,6 +94,7 @@ void ImplicitContact::add_residual(const Vector& d_overlap, Vector& r_overlap) c
   auto r = r_overlap.getLocalViewHost(Tpetra::Access::ReadWrite);
   for (const auto& pair : pairs_)
     for (const auto& c : pair.candidates) {
+      if (!pair.active) break;  // the whole pair is out of this stage
       const auto t = touch(pair, c, d);
       if (!(t.gap < 0)) continue;
       double minus_F[3];  // r -= phi F, F = k (-g) n
@@ -104,6 +108,7 @@ void ImplicitContact::add_tangent(const Vector& d_overlap, FEMatrix& K) const {
   const auto d = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
   for (const auto& pair : pairs_)
     for (const auto& c : pair.candidates) {
+      if (!pair.active) break;  // the whole pair is out of this stage
       const auto t = touch(pair, c, d);
       if (!(t.gap < 0)) continue;
       // d(k g n_i)/dx_j = k (n_i n_j + g dn_ij/dx_j); x_J = X_J + sum_K phi_K d_K.
@@ -136,6 +141,7 @@ std::vector<BodyResultant> ImplicitContact::body_forces(const Vector& d_overlap)
   const double zero[3] = {0, 0, 0};
   for (const auto& pair : pairs_)
     for (const auto& c : pair.candidates) {
+      if (!pair.active) break;  // the whole pair is out of this stage
       const auto t = touch(pair, c, d);
       if (!(t.gap < 0)) continue;
       double F[3];

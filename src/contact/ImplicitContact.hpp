@@ -30,7 +30,9 @@ class ImplicitContact {
 
   void add_couplings(CouplingGraph& graph) const;
   /// Stage start at t0 with the bodies' states carried over (empty: the scene's places).
-  void begin_stage(const std::vector<RigidBodyState>& carried, double t0);
+  /// A stage begins at t0: the bodies' states carried over, and the contacts active in `stage`.
+  void begin_stage(const std::vector<RigidBodyState>& carried, double t0,
+                   const std::string& stage = "");
   /// The bodies' displacements at time t of the stage (prescribed motions).
   void set_time(double t);
   /// Displacements of every body at the last set_time.
@@ -49,6 +51,8 @@ class ImplicitContact {
   };
   struct Pair {
     std::size_t body;
+    const ContactSpec* spec;
+    bool active = true;  ///< the contact acts in the current stage
     std::vector<Candidate> candidates;
   };
   /// Gap, normal and the curvature matrix (dn/dx) of candidate c of pair p at d.

@@ -18,7 +18,7 @@ double PenaltyContact::largest_penalty(const Scene& scene) {
 }
 
 PenaltyContact::PenaltyContact(const ModelOperators& ops, const Vector& mass_owned,
-                               const RigidBodies& bodies)
+                               const RigidBodies& bodies, const std::string& stage)
     : dim_(ops.model().mesh.dimension),
       bodies_(bodies),
       comm_(ops.model().maps.owned_dofs->getComm()) {
@@ -34,6 +34,7 @@ PenaltyContact::PenaltyContact(const ModelOperators& ops, const Vector& mass_own
     return c;
   };
   for (const auto& spec : model.scene.contacts) {
+    if (!spec.stages.includes(stage)) continue;  // a tool this stage does without
     Pair pair;
     for (std::size_t b = 0; b < bodies.scene_count(); ++b)
       if (bodies.name(b) == spec.rigid_body) pair.body = b;

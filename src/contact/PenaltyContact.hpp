@@ -30,7 +30,8 @@ namespace efg {
 
 class PenaltyContact {
  public:
-  PenaltyContact(const ModelOperators& ops, const Vector& mass_owned, const RigidBodies& bodies);
+  PenaltyContact(const ModelOperators& ops, const Vector& mass_owned, const RigidBodies& bodies,
+                 const std::string& stage);
 
   /// The largest penalty factor of the scene's contacts (the stable-step reduction).
   static double largest_penalty(const Scene& scene);

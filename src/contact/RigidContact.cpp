@@ -2,8 +2,10 @@
 
 namespace efg {
 
-RigidContact::RigidContact(const ModelOperators& ops, const Vector& mass_owned)
-    : bodies_(ops.model().scene, ops.model().mesh.dimension), contact_(ops, mass_owned, bodies_) {}
+RigidContact::RigidContact(const ModelOperators& ops, const Vector& mass_owned,
+                           const std::string& stage)
+    : bodies_(ops.model().scene, ops.model().mesh.dimension),
+      contact_(ops, mass_owned, bodies_, stage) {}
 
 void RigidContact::begin(const std::vector<RigidBodyState>& carried, double time,
                          const Vector& d_overlap) {

@@ -15,7 +15,8 @@ namespace efg {
 
 class RigidContact {
  public:
-  RigidContact(const ModelOperators& ops, const Vector& mass_owned);
+  /// The contacts active in `stage` (bodies and walls in every stage).
+  RigidContact(const ModelOperators& ops, const Vector& mass_owned, const std::string& stage);
   static bool wanted(const Scene& scene) {
     return !scene.rigid_bodies.empty() || !scene.contacts.empty() || !scene.rigid_walls.empty();
   }

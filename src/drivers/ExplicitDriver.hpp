@@ -27,6 +27,9 @@ using StateOutput = std::function<void(const RunState&)>;
 struct ExplicitSummary {
   long long steps = 0;
   double smallest_dt = 0, largest_dt = 0, worst_balance_error = 0;
+  /// Quasi-static indicator of a forming stage, from the records: the time integral of the
+  /// kinetic energy over that of the internal energy (trapezoids), and their ratio at the end.
+  double kinetic_to_internal_mean = 0, kinetic_to_internal_end = 0;
 };
 
 class ExplicitDriver {

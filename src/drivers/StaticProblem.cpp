@@ -59,7 +59,7 @@ void StaticProblem::begin_stage(const std::vector<RigidBodyState>& bodies, doubl
   conditions_ = condition_sets_[it == set_of_stage_.end() ? 0 : it->second].get();
   released_ = Teuchos::null;
   release_scale_ = 0;
-  if (contact_) contact_->begin_stage(bodies, t0);
+  if (contact_) contact_->begin_stage(bodies, t0, stage);
 }
 
 void StaticProblem::begin_release(const Vector& d0_owned) {

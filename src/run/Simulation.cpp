@@ -132,7 +132,8 @@ RunOutcome run_stages(const CommPtr& comm, const Model& model, const std::string
         std::ostringstream o;
         o << "stage '" << stage.name << "' done: " << s.steps << " steps, dt " << s.smallest_dt
           << " to " << s.largest_dt << ", worst energy balance error "
-          << 100 * s.worst_balance_error << " %";
+          << 100 * s.worst_balance_error << " %, kinetic / internal energy " << s.kinetic_to_internal_mean
+          << " (time integrals over the stage), " << s.kinetic_to_internal_end << " at its end";
         Log::info(o.str());
       }
     });

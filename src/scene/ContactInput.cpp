@@ -5,6 +5,7 @@
 
 #include "core/Errors.hpp"
 #include "scene/SchemaValidator.hpp"
+#include "scene/StageLists.hpp"
 
 namespace efg {
 namespace {
@@ -112,6 +113,7 @@ ContactSpec read_contact(const Scene& s, const YAML::Node& r, const YAML::Node& 
   c.decay = r["decay"].as<double>();
   c.damping = r["damping"].as<double>();
   c.implicit_penalty = r["implicit_penalty"].as<double>();
+  for (const auto& name : r["stages"]) c.stages.names.push_back(name.as<std::string>());
   auto is_body = [&](const std::string& n) {
     return std::any_of(s.rigid_bodies.begin(), s.rigid_bodies.end(),
                        [&](const RigidBodySpec& b) { return b.name == n; });
@@ -171,21 +173,26 @@ void read_contact_input(Scene& s) {
   // Implicit stages: frictionless contact with fixed or prescribed bodies (a free body has no
   // static equilibrium of its own here, and friction needs its path-dependent tangent: not
   // built yet).
-  std::size_t implicit = s.stages.size();
-  for (std::size_t i = 0; i < s.stages.size() && implicit == s.stages.size(); ++i)
-    if (s.stages[i].driver == "implicit") implicit = i;
-  if (implicit == s.stages.size()) return;
-  const auto stage_key = "stages[" + std::to_string(implicit) + "].driver";
-  const YAML::Node stage_at = d["stages"][implicit]["driver"];
+  std::vector<std::string> stage_names;
+  for (const auto& st : s.stages) stage_names.push_back(st.name);
+  for (std::size_t i = 0; i < s.contacts.size(); ++i)
+    check_stage_list(s, stage_names, s.contacts[i].stages, "contacts", i);
+  // What implicit stages cannot model yet, for each contact active in one.
   for (std::size_t i = 0; i < s.contacts.size(); ++i) {
     const auto& c = s.contacts[i];
+    std::size_t implicit = s.stages.size();
+    for (std::size_t k = 0; k < s.stages.size() && implicit == s.stages.size(); ++k)
+      if (s.stages[k].driver == "implicit" && c.stages.includes(s.stages[k].name)) implicit = k;
+    if (implicit == s.stages.size()) continue;
+    const auto stage_key = "stages[" + std::to_string(implicit) + "].driver";
+    const YAML::Node stage_at = d["stages"][implicit]["driver"];
     const auto path = "contacts[" + std::to_string(i) + "]";
     if (c.static_friction > 0 || c.dynamic_friction > 0)
       fail(s, stage_at, stage_key,
            "contact '" + c.name +
                "' has friction, which implicit stages do not model yet; "
-               "expected driver: explicit, or no friction in " +
-               path);
+               "expected driver: explicit, no friction in " +
+               path + ", or its stages: naming the explicit stages it acts in");
     for (const auto& b : s.rigid_bodies)
       if (b.name == c.rigid_body && b.motion == "free")
         fail(s, stage_at, stage_key,

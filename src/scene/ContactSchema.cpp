@@ -85,6 +85,10 @@ SpecPtr contact_spec() {
                     .above(0)
                     .at_most(1),
                 "0.1")
+      .optional("stages",
+                string_list("Stages the contact acts in (names of stages); every stage when "
+                            "omitted. A springback stage leaves out the tools' contacts.")
+                    .items(1, 1000))
       .optional("static_friction", real("Static Coulomb coefficient mu_s.", "-").at_least(0), "0")
       .optional("dynamic_friction",
                 real("Dynamic Coulomb coefficient mu_d; default: static_friction. "

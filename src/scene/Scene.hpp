@@ -177,6 +177,7 @@ struct ContactSpec {
   double static_friction = 0, dynamic_friction = 0, decay = 0;
   double damping = 0;             ///< normal viscous damping, fraction of critical per particle
   double implicit_penalty = 100;  ///< implicit stages: beta = implicit_penalty x E / h
+  ActiveStages stages;            ///< a springback stage leaves the tools' contacts out
 };
 
 struct StageSpec {

@@ -7,10 +7,9 @@
 #include "scene/Suggest.hpp"
 
 namespace efg {
-namespace {
 
-void check_list(const Scene& scene, const std::vector<std::string>& names,
-                const ActiveStages& list, const char* section, std::size_t i) {
+void check_stage_list(const Scene& scene, const std::vector<std::string>& names,
+                      const ActiveStages& list, const char* section, std::size_t i) {
   std::set<std::string> seen;
   for (std::size_t k = 0; k < list.names.size(); ++k) {
     const auto& name = list.names[k];
@@ -32,13 +31,11 @@ void check_list(const Scene& scene, const std::vector<std::string>& names,
   }
 }
 
-}  // namespace
-
 void check_stage_lists(const Scene& scene, const std::vector<std::string>& stage_names) {
   for (std::size_t i = 0; i < scene.boundary_conditions.size(); ++i)
-    check_list(scene, stage_names, scene.boundary_conditions[i].stages, "boundary_conditions", i);
+    check_stage_list(scene, stage_names, scene.boundary_conditions[i].stages, "boundary_conditions", i);
   for (std::size_t i = 0; i < scene.loads.size(); ++i)
-    check_list(scene, stage_names, scene.loads[i].stages, "loads", i);
+    check_stage_list(scene, stage_names, scene.loads[i].stages, "loads", i);
 }
 
 }  // namespace efg
