@@ -9,6 +9,10 @@
 
 namespace efg {
 
+/// Doubles of history per integration point of the law that keeps the most (J2): the columns of
+/// the material_state output field (restarts read them back).
+constexpr int kLargestStateCount = physics::j2_state::count;
+
 struct MaterialLaw {
   /// The elastic law; for a path-dependent part its elastic constants (the stable time step,
   /// penalty scales and messages read them).

@@ -50,6 +50,9 @@ class SolidOperator {
   /// Strain energy of this rank's points (sum over ranks for the total).
   double strain_energy(const Vector& d_overlap) const;
 
+  /// The mesh node of every integration point of part p (SCNI and nodal: its particle; Gauss:
+  /// -1), in the order of the part's material states.
+  const std::vector<LocalIndex>& point_nodes(std::size_t part) const { return parts_[part].node; }
   /// Overlap node index of every particle of part p (cloud order).
   const std::vector<int>& overlap_node(std::size_t part) const { return parts_[part].overlap_node; }
   int dimension() const { return dim_; }

@@ -44,8 +44,14 @@ void push_tensor(std::vector<double>& out, const double (&t)[3][3], int dim,
 }  // namespace
 
 std::vector<std::string> field_columns(const std::string& field, int dimension) {
-  if (field == "displacement" || field == "velocity" || field == "acceleration")
+  if (field == "displacement" || field == "velocity" || field == "acceleration" ||
+      field == "generalized_displacement" || field == "generalized_velocity")
     return vector_component_names(field, dimension);
+  if (field == "material_state") {  // the law's history in its own order (restart)
+    std::vector<std::string> names;
+    for (int k = 1; k <= kLargestStateCount; ++k) names.push_back(field + "_" + std::to_string(k));
+    return names;
+  }
   if (field == "stress" || field == "strain") {
     // Symmetric tensors; zz is kept in 2D (plane strain stress, plane stress strain).
     if (dimension == 2) return {field + "_xx", field + "_yy", field + "_zz", field + "_xy"};
@@ -178,6 +184,31 @@ void history_values(const Model& model, const SolidOperator& op, const Vector& d
     }
 }
 
+// The committed material state at every owned particle (column after column, kLargestStateCount
+// columns; zero where a part keeps none): SCNI and nodal points are particles. Gauss points are
+// not particles and are not written (a restart refuses path-dependent Gauss parts).
+std::vector<std::vector<double>> committed_states(const Model& model, const SolidOperator& op) {
+  const auto slot = owned_slots(model);
+  const std::size_t none = model.partition.owned.size();
+  std::vector<std::vector<double>> out(static_cast<std::size_t>(kLargestStateCount),
+                                       std::vector<double>(none, 0.0));
+  const auto& history = op.history();
+  for (std::size_t p = 0; p < history.parts(); ++p) {
+    const auto& part = history.part(p);
+    if (part.count == 0) continue;
+    const auto committed =
+        Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), part.committed);
+    const auto& nodes = op.point_nodes(p);
+    for (std::size_t q = 0; q < nodes.size(); ++q) {
+      const auto s = nodes[q] >= 0 ? slot[static_cast<std::size_t>(nodes[q])] : none;
+      if (s == none) continue;
+      for (std::size_t k = 0; k < static_cast<std::size_t>(part.count); ++k)
+        out[k][s] = committed(q, k);
+    }
+  }
+  return out;
+}
+
 }  // namespace
 
 std::vector<std::vector<double>> state_columns(const Model& model, const SolidOperator& op,
@@ -195,9 +226,28 @@ std::vector<std::vector<double>> state_columns(const Model& model, const SolidOp
     particle_tensors(model, particles, strains, stresses);
   std::vector<double> plastic(owned.size(), 0.0), eroded(owned.size(), 0.0);
   if (op.history().any()) history_values(model, op, d_overlap, stresses, plastic, eroded);
+  const auto udim = static_cast<std::size_t>(dim);
+  const auto material = std::find(fields.begin(), fields.end(), "material_state") != fields.end()
+                            ? committed_states(model, op)
+                            : std::vector<std::vector<double>>{};
   std::vector<std::vector<double>> columns;
   for (const auto& field : fields) {
     const auto count = field_columns(field, dim).size();
+    if (field == "generalized_displacement" || field == "generalized_velocity" ||
+        field == "material_state") {  // the restart fields: the generalized values themselves
+      const Vector* source = field == "generalized_displacement" ? &d_overlap : v_overlap;
+      for (std::size_t c = 0; c < count; ++c) {
+        std::vector<double> values(owned.size(), 0.0);
+        if (field == "material_state") {
+          values = material[c];
+        } else if (source) {
+          const auto x = source->getLocalViewHost(Tpetra::Access::ReadOnly);
+          for (std::size_t s = 0; s < owned.size(); ++s) values[s] = x(s * udim + c, 0);
+        }
+        columns.push_back(std::move(values));
+      }
+      continue;
+    }
     for (std::size_t c = 0; c < count; ++c) {
       std::vector<double> values;
       values.reserve(owned.size());

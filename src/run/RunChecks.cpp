@@ -8,6 +8,7 @@
 #include "drivers/ExplicitDriver.hpp"
 #include "drivers/SolverSettingsCheck.hpp"
 #include "parallel/Collective.hpp"
+#include "run/InitialState.hpp"
 #include "run/OutputPaths.hpp"
 #include "run/RunHistory.hpp"
 #include "scene/SchemaValidator.hpp"
@@ -61,6 +62,7 @@ void check_run_inputs(const CommPtr& comm, const Scene& scene, const BackgroundM
                       const std::string& output_dir) {
   prepare_output_paths(comm, scene, output_dir, /*create=*/false);
   check_reference_quantities(scene, mesh);
+  read_initial_state(scene, mesh);  // the restart record exists and fits (read again by the run)
   const auto dofs = part_dofs(scene, mesh);
   for (std::size_t i = 0; i < scene.stages.size(); ++i)
     if (scene.stages[i].driver == "implicit")

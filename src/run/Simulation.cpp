@@ -19,6 +19,7 @@
 #include "io/ResultsOutput.hpp"
 #include "parallel/Collective.hpp"
 #include "run/InitialConditions.hpp"
+#include "run/InitialState.hpp"
 #include "run/OutputFields.hpp"
 #include "run/RunHistory.hpp"
 #include "run/RunRecorder.hpp"
@@ -76,6 +77,7 @@ RunOutcome run_stages(const CommPtr& comm, const Model& model, const std::string
   RunRecorder recorder(comm, model, *ops, problem.get(), path);
   RunState state(model.maps.owned_dofs);
   apply_initial_conditions(model, state);
+  apply_initial_state(model, ops->solid(), state);  // a restart: the record replaces them
   auto write = [&](const RunState& s) { recorder.write(s); };
   // A numerical failure on any rank keeps the records so far in the .part files, on all ranks.
   auto guarded = [&](const std::function<void()>& work) {

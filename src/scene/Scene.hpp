@@ -180,6 +180,12 @@ struct ContactSpec {
   ActiveStages stages;            ///< a springback stage leaves the tools' contacts out
 };
 
+/// initial_state: a record of an earlier run's results to start from (a restart).
+struct InitialStateSpec {
+  std::string file;           ///< resolved path
+  std::optional<double> time;  ///< the record's time; empty: the last record
+};
+
 struct StageSpec {
   std::string name;
   std::string driver;  ///< implicit | explicit
@@ -208,6 +214,7 @@ struct Scene {
   std::vector<BoundaryConditionSpec> boundary_conditions;
   std::vector<LoadSpec> loads;
   std::vector<InitialConditionSpec> initial_conditions;
+  std::optional<InitialStateSpec> initial_state;
   std::vector<CurveSpec> curves;
   std::vector<NodeSetSpec> node_sets;  ///< made by the scene, added to the mesh's own sets
   std::vector<RigidWallSpec> rigid_walls;

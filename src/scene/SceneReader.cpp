@@ -8,6 +8,7 @@
 #include "core/Errors.hpp"
 #include "scene/ContactInput.hpp"
 #include "scene/FieldInput.hpp"
+#include "scene/InitialStateInput.hpp"
 #include "scene/PlasticityInput.hpp"
 #include "scene/SceneSchema.hpp"
 #include "scene/SchemaValidator.hpp"
@@ -76,6 +77,7 @@ class SceneBuilder {
         probe.point[k] = p["point"][k].as<double>();
       s_.probes.push_back(probe);
     }
+    read_initial_state_input(s_);
     for (const auto& n : r["node_sets"])
       s_.node_sets.push_back({n["name"].as<std::string>(), as_vector<double>(n["lower"]),
                               as_vector<double>(n["upper"]), opt_string(n, "within")});

@@ -401,9 +401,12 @@ SpecPtr output_spec() {
                                "the scene's name with .e."))
       .optional(
           "fields",
-          string_list("Nodal (particle) fields written at each record.")
+          string_list("Nodal (particle) fields written at each record. generalized_displacement, "
+                      "generalized_velocity and material_state (the history of path-dependent "
+                      "laws) are what initial_state reads back to restart from a record.")
               .choices({"displacement", "velocity", "acceleration", "stress", "strain", "von_mises",
-                        "plastic_strain", "eroded", "nodal_volume", "owner_rank"}),
+                        "plastic_strain", "eroded", "nodal_volume", "owner_rank",
+                        "generalized_displacement", "generalized_velocity", "material_state"}),
           "[displacement, nodal_volume, owner_rank]")
       .optional("history",
                 string("CSV file, beside the results file (relative to its folder), of the global "
@@ -488,6 +491,17 @@ Spec build_scene_schema() {
           .optional("loads", list("External loads.", load_spec()).unique_names(), "[]")
           .optional("initial_conditions", list("Initial conditions.", initial_condition_spec()),
                     "[]")
+          .optional("initial_state",
+                    map("Start from a record of an earlier run's results (a restart, e.g. a "
+                        "springback run after a forming run): its generalized displacements and "
+                        "velocities and the material history, written by output.fields "
+                        "generalized_displacement, generalized_velocity (and material_state); the "
+                        "mesh must be the same. The run starts at the record's time.")
+                        .required("file", string("Exodus results file of the earlier run, "
+                                                 "relative to the scene's folder."))
+                        .optional("time", real("Time of the record to start from; the last "
+                                               "record when omitted.",
+                                               "time")))
           .optional("curves", list("Load curves.", curve_spec()).unique_names(), "[]")
           .optional("node_sets",
                     list("Node sets made by the scene, usable wherever a node set is named.",
