@@ -5,6 +5,7 @@
 #include <Teuchos_TimeMonitor.hpp>
 
 #include "core/Errors.hpp"
+#include "core/MemoryAccount.hpp"
 #include "io/ExodusReader.hpp"
 #include "mesh/MeshGenerator.hpp"
 #include "mesh/MeshValidation.hpp"
@@ -56,6 +57,8 @@ Model build_model(const CommPtr& comm, const std::string& scene_file) {
 }
 
 Model build_model(const CommPtr& comm, Scene scene) {
+  auto& memory = MemoryAccount::process();
+  memory.reset();
   Model model;
   model.scene = std::move(scene);
   {
@@ -63,21 +66,25 @@ Model build_model(const CommPtr& comm, Scene scene) {
     model.mesh = load_mesh(comm, model.scene);
     set_graded_references(model.scene, model.mesh);
   }
+  memory.mark("scene and mesh");
   {
     Teuchos::TimeMonitor timer(
         *Teuchos::TimeMonitor::getNewCounter("efg: partition (Zoltan2 RCB)"));
     model.partition = partition_nodes(comm, model.mesh);
   }
+  memory.mark("partition");
   run_collectively(comm, [&] {
     for (const auto& part : model.scene.parts)
       model.parts.push_back(discretize_part(model.mesh, part, model.partition));
   });
+  memory.mark("shape functions and integration points");
   std::set<LocalIndex> ghosts;
   for (const auto& d : model.parts)
     for (std::size_t i = d.cloud.owned_count; i < d.cloud.size(); ++i)
       ghosts.insert(d.cloud.mesh_node[i]);
   model.partition.ghosts.assign(ghosts.begin(), ghosts.end());
   model.maps = make_dof_maps(comm, model.partition, model.mesh.dimension);
+  memory.mark("ghosts and maps");
   return model;
 }
 

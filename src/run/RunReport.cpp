@@ -153,7 +153,8 @@ void write_run_report(const CommPtr& comm, const Model& model, const std::string
                       const std::optional<ErrorNorms>& errors,
                       const std::vector<ReferenceCheck>& checks, double total_seconds,
                       const std::vector<ImplicitStageReport>& implicit,
-                      const std::vector<std::pair<std::string, double>>& probes) {
+                      const std::vector<std::pair<std::string, double>>& probes,
+                      const std::vector<MemoryPhase>& memory_phases) {
   std::vector<double> local, global;
   for (const auto& phase : report_phases()) {
     const auto timer = Teuchos::TimeMonitor::lookupCounter("efg: " + phase);
@@ -180,6 +181,15 @@ void write_run_report(const CommPtr& comm, const Model& model, const std::string
     o << (i ? ", " : "") << quoted(report_phases()[i]) << ": " << number(global[i]);
   o << "},\n  \"total_seconds\": " << number(total_seconds)
     << ",\n  \"memory_high_water_bytes\": " << memory_max;
+  if (!memory_phases.empty()) {
+    o << ",\n  \"memory_by_phase\": [";
+    for (std::size_t i = 0; i < memory_phases.size(); ++i)
+      o << (i ? ", " : "") << "{\"phase\": " << quoted(memory_phases[i].phase)
+        << ", \"bytes\": " << memory_phases[i].bytes
+        << ", \"bytes_per_particle\": " << number(memory_phases[i].bytes_per_particle)
+        << ", \"peak_bytes\": " << memory_phases[i].peak_bytes << "}";
+    o << "]";
+  }
   if (state.energy_started) o << ",\n  \"energy_balance_error\": " << number(state.balance_error());
   if (errors)
     o << ",\n  \"errors\": {\"exact_solution\": " << quoted(model.scene.exact_solution)

@@ -10,6 +10,7 @@
 #include "drivers/ImplicitDriver.hpp"
 #include "drivers/RunState.hpp"
 #include "operators/ModelOperators.hpp"
+#include "run/RunSummary.hpp"
 #include "verification/ErrorNorms.hpp"
 
 namespace efg {
@@ -40,7 +41,8 @@ void write_run_report(const CommPtr& comm, const Model& model, const std::string
                       const std::optional<ErrorNorms>& errors,
                       const std::vector<ReferenceCheck>& checks, double total_seconds,
                       const std::vector<ImplicitStageReport>& implicit = {},
-                      const std::vector<std::pair<std::string, double>>& probes = {});
+                      const std::vector<std::pair<std::string, double>>& probes = {},
+                      const std::vector<MemoryPhase>& memory = {});
 
 /// The wall-time phases the report lists (Teuchos timer names without the "efg: " prefix).
 const std::vector<std::string>& report_phases();

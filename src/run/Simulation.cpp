@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "core/Errors.hpp"
+#include "core/MemoryAccount.hpp"
 #include "core/Log.hpp"
 #include "drivers/ExplicitDriver.hpp"
 #include "drivers/ImplicitDriver.hpp"
@@ -24,6 +25,7 @@
 #include "run/RunHistory.hpp"
 #include "run/RunRecorder.hpp"
 #include "run/RunReport.hpp"
+#include "run/RunSummary.hpp"
 #include "verification/ErrorNorms.hpp"
 
 namespace efg {
@@ -69,12 +71,16 @@ RunOutcome run_stages(const CommPtr& comm, const Model& model, const std::string
   // A scene builds only what it needs: the stiffness graph and solvers only for implicit stages.
   std::shared_ptr<ModelOperators> ops;
   std::unique_ptr<StaticProblem> problem;
+  auto& memory = MemoryAccount::process();
   run_collectively(comm, [&] {
     ops = std::make_shared<ModelOperators>(model);
+    memory.mark("operators");
     for (const auto& s : model.scene.stages)
       if (s.driver == "implicit" && !problem) problem = std::make_unique<StaticProblem>(ops);
+    if (problem) memory.mark("stiffness graph and implicit conditions");
   });
   RunRecorder recorder(comm, model, *ops, problem.get(), path);
+  memory.mark("output");
   RunState state(model.maps.owned_dofs);
   apply_initial_conditions(model, state);
   apply_initial_state(model, ops->solid(), state);  // a restart: the record replaces them
@@ -140,6 +146,7 @@ RunOutcome run_stages(const CommPtr& comm, const Model& model, const std::string
       }
     });
     state.time = stage.end_time;
+    memory.mark("stage '" + stage.name + "' (" + stage.driver + ")");
   }
   RunOutcome outcome;
   outcome.errors = verify(model, *ops, state);
@@ -160,8 +167,9 @@ RunOutcome run_stages(const CommPtr& comm, const Model& model, const std::string
       o << names[i] << " = " << recorder.last_globals()[i];
       Log::info(o.str());
     }
+  const auto memory_phases = memory_by_phase(comm, model);
   write_run_report(comm, model, path + ".report.json", path, state, outcome.errors, checks, seconds,
-                   implicit_reports, probes);
+                   implicit_reports, probes, memory_phases);
   Log::info("run report: " + path + ".report.json");
   return outcome;
 }
