@@ -13,6 +13,9 @@
 namespace efg {
 namespace {
 
+// Particles whose SCNI rows are built together (see build_scni).
+constexpr std::size_t kScniBatch = 2048;
+
 // Points at particle positions (SCNI and nodal): the owned particles of the cloud.
 void add_nodal_points(const ParticleCloud& cloud, IntegrationPoints& ip) {
   const auto dim = static_cast<std::size_t>(cloud.dimension);
@@ -51,19 +54,46 @@ void build_scni(const BackgroundMesh& mesh, const PartSpec& part, const Particle
   for (std::size_t n = 0; n < owned.size(); ++n) owned[n] = owner[n] == rank;
   const auto points = smoothing_points(mesh, part.blocks, owned);
   const auto volume = smoothing_domain_volumes(points, mesh.node_count(), cloud.dimension);
-  std::vector<double> coords;
-  for (const auto& p : points)
-    coords.insert(coords.end(), p.x.begin(), p.x.begin() + static_cast<std::ptrdiff_t>(dim));
-  const auto phi =
-      evaluate_shape_functions(cloud, coords.data(), points.size(), false, [&](std::size_t p) {
-        return "SCNI smoothing point " + std::to_string(p) + " next to particle " +
-               std::to_string(points[p].plus + 1);
-      });
-
-  std::vector<LocalIndex> owned_index(mesh.node_count(), -1);
-  for (std::size_t l = 0; l < cloud.owned_count; ++l)
-    owned_index[static_cast<std::size_t>(cloud.mesh_node[l])] = static_cast<LocalIndex>(l);
-  ip.gradients = smoothed_gradients(cloud, points, phi, volume, owned_index);
+  // The shape functions at the smoothing points (some 24-48 points per particle in 3D, each
+  // with its whole neighbour list) are about ten times the rows of B~ they make: evaluated for a
+  // batch of particles at a time (the points on their domains' boundaries, those shared by two
+  // batches twice), the rows appended batch after batch. Each row sums the same points in the
+  // same order as in one pass, so the rows are identical. Memory: docs/discretization.md.
+  std::vector<LocalIndex> row_index(mesh.node_count(), -1);
+  ip.gradients.width = cloud.dimension;
+  ip.gradients.offsets.assign(1, 0);
+  for (std::size_t first = 0; first < cloud.owned_count; first += kScniBatch) {
+    const std::size_t rows = std::min(kScniBatch, cloud.owned_count - first);
+    for (std::size_t l = 0; l < rows; ++l)
+      row_index[static_cast<std::size_t>(cloud.mesh_node[first + l])] = static_cast<LocalIndex>(l);
+    auto in_batch = [&](LocalIndex node) {
+      return node >= 0 && row_index[static_cast<std::size_t>(node)] >= 0;
+    };
+    std::vector<SmoothingPoint> batch;
+    std::vector<double> coords;
+    for (const auto& p : points)
+      if (in_batch(p.plus) || in_batch(p.minus)) {
+        batch.push_back(p);
+        coords.insert(coords.end(), p.x.begin(), p.x.begin() + static_cast<std::ptrdiff_t>(dim));
+      }
+    const auto phi =
+        evaluate_shape_functions(cloud, coords.data(), batch.size(), false, [&](std::size_t p) {
+          return "SCNI smoothing point next to particle " + std::to_string(batch[p].plus + 1);
+        });
+    const auto rows_here = smoothed_gradients(cloud, batch, phi, volume, row_index, first, rows);
+    const auto base = ip.gradients.particles.size();
+    ip.gradients.particles.insert(ip.gradients.particles.end(), rows_here.particles.begin(),
+                                  rows_here.particles.end());
+    ip.gradients.values.insert(ip.gradients.values.end(), rows_here.values.begin(),
+                               rows_here.values.end());
+    for (std::size_t l = 1; l < rows_here.offsets.size(); ++l)
+      ip.gradients.offsets.push_back(base + rows_here.offsets[l]);
+    for (std::size_t l = 0; l < rows; ++l)
+      row_index[static_cast<std::size_t>(cloud.mesh_node[first + l])] = -1;
+  }
+  ip.gradients.offsets.shrink_to_fit();  // appended batch by batch: no spare capacity kept
+  ip.gradients.particles.shrink_to_fit();
+  ip.gradients.values.shrink_to_fit();
   for (std::size_t l = 0; l < cloud.owned_count; ++l)
     ip.weight.push_back(volume[static_cast<std::size_t>(cloud.mesh_node[l])]);
 }

@@ -58,17 +58,18 @@ void run(const SmoothedGradientKernel<Dim>& kernel, std::size_t rows) {
 
 CsrTable smoothed_gradients(const ParticleCloud& cloud, const std::vector<SmoothingPoint>& points,
                             const ShapeFunctionValues& phi, const std::vector<double>& volume,
-                            const std::vector<LocalIndex>& owned_index) {
+                            const std::vector<LocalIndex>& row_index, std::size_t first,
+                            std::size_t rows) {
   const auto dim = static_cast<std::size_t>(cloud.dimension);
-  const auto owned = cloud.owned_count;
-  // Slots 2p and 2p + 1 name the particles on either side of point p; sides that are not owned
-  // particles go to a discarded column `owned`.
+  const auto owned = rows;
+  // Slots 2p and 2p + 1 name the particles on either side of point p; sides that are not rows
+  // here go to a discarded column `owned` (= rows).
   std::vector<int> side(2 * points.size());
   std::vector<std::size_t> slot_offsets(2 * points.size() + 1);
   for (std::size_t p = 0; p < points.size(); ++p) {
     for (int s = 0; s < 2; ++s) {
       const auto node = s == 0 ? points[p].plus : points[p].minus;
-      const auto l = node < 0 ? -1 : owned_index[static_cast<std::size_t>(node)];
+      const auto l = node < 0 ? -1 : row_index[static_cast<std::size_t>(node)];
       side[2 * p + static_cast<std::size_t>(s)] = l < 0 ? static_cast<int>(owned) : l;
     }
   }
@@ -106,7 +107,7 @@ CsrTable smoothed_gradients(const ParticleCloud& cloud, const std::vector<Smooth
       row_gid.push_back(cloud.mesh_node[static_cast<std::size_t>(i)]);
     }
     table.offsets.push_back(table.particles.size());
-    row_volume[l] = volume[static_cast<std::size_t>(cloud.mesh_node[l])];
+    row_volume[l] = volume[static_cast<std::size_t>(cloud.mesh_node[first + l])];
   }
 
   std::vector<double> normal(points.size() * dim);

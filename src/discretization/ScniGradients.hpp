@@ -15,11 +15,15 @@
 
 namespace efg {
 
-/// Rows of B~ for the owned particles [0, cloud.owned_count): `phi` holds the shape functions at
-/// `points`, `volume` the nodal domain volume of every mesh node, `owned_index` the cloud index
-/// of every mesh node owned here (-1 otherwise).
+/// Rows of B~ for the owned particles [first, first + rows) of the cloud: `points` holds every
+/// smoothing point on their domains' boundaries (others may be there too), `phi` the shape
+/// functions at them, `volume` the nodal domain volume of every mesh node, `row_index` the row
+/// (0 .. rows - 1) of every mesh node among them (-1 otherwise). Called on batches of particles
+/// (IntegrationPoints), so that the shape functions at the smoothing points, about ten times the
+/// size of the rows they make, are never held for a whole part at once.
 CsrTable smoothed_gradients(const ParticleCloud& cloud, const std::vector<SmoothingPoint>& points,
                             const ShapeFunctionValues& phi, const std::vector<double>& volume,
-                            const std::vector<LocalIndex>& owned_index);
+                            const std::vector<LocalIndex>& row_index, std::size_t first,
+                            std::size_t rows);
 
 }  // namespace efg
