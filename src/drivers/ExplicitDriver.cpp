@@ -18,6 +18,21 @@ namespace efg {
 namespace {
 // The largest penalty factor of walls and contacts: both add penalty / dt^2 to a particle's
 // omega^2 (StableTimeStep).
+// The stage's lumped mass: the row-sum mass times its mass_scale (uniform mass scaling).
+Vector stage_mass(const ModelOperators& ops, const StageSpec& stage) {
+  Vector mass = lumped_mass(ops);
+  const double factor = stage.settings["mass_scale"].as<double>();
+  if (factor != 1.0) {
+    mass.scale(factor);
+    std::ostringstream o;
+    o << "stage '" << stage.name << "': masses scaled by " << factor
+      << " (uniform mass scaling): the stable time step grows by " << std::sqrt(factor)
+      << ", inertia forces by " << factor;
+    Log::info(o.str());
+  }
+  return mass;
+}
+
 double largest_wall_penalty(const Scene& scene) {
   double p = PenaltyContact::largest_penalty(scene);
   for (const auto& w : scene.rigid_walls) p = std::max(p, w.penalty);
@@ -28,7 +43,7 @@ double largest_wall_penalty(const Scene& scene) {
 ExplicitDriver::ExplicitDriver(const ModelOperators& ops, const StageSpec& stage)
     : ops_(ops),
       stage_(stage),
-      mass_(lumped_mass(ops)),
+      mass_(stage_mass(ops, stage)),
       inverse_mass_(mass_.getMap()),
       contact_(RigidContact::wanted(ops.model().scene)
                    ? std::make_unique<RigidContact>(ops, mass_, stage.name)

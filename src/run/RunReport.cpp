@@ -153,8 +153,8 @@ void write_run_report(const CommPtr& comm, const Model& model, const std::string
                       const std::optional<ErrorNorms>& errors,
                       const std::vector<ReferenceCheck>& checks, double total_seconds,
                       const std::vector<ImplicitStageReport>& implicit,
-                      const std::vector<std::pair<std::string, double>>& probes,
-                      const std::vector<MemoryPhase>& memory_phases) {
+                      const ProbeValues& probes, const std::vector<MemoryPhase>& memory_phases,
+                      const std::vector<std::pair<std::string, ProbeValues>>& probes_by_stage) {
   std::vector<double> local, global;
   for (const auto& phase : report_phases()) {
     const auto timer = Teuchos::TimeMonitor::lookupCounter("efg: " + phase);
@@ -197,10 +197,22 @@ void write_run_report(const CommPtr& comm, const Model& model, const std::string
       << ", \"energy_rel_error\": " << number(errors->energy_relative)
       << ", \"max_nodal_error\": " << number(errors->max_nodal) << "}";
   write_implicit_stages(o, implicit);
+  auto write_probes = [&](const ProbeValues& values) {
+    o << "{";
+    for (std::size_t i = 0; i < values.size(); ++i)
+      o << (i ? ", " : "") << quoted(values[i].first) << ": " << number(values[i].second);
+    o << "}";
+  };
   if (!probes.empty()) {
-    o << ",\n  \"probes\": {";
-    for (std::size_t i = 0; i < probes.size(); ++i)
-      o << (i ? ", " : "") << quoted(probes[i].first) << ": " << number(probes[i].second);
+    o << ",\n  \"probes\": ";
+    write_probes(probes);
+  }
+  if (!probes_by_stage.empty()) {  // at each stage's end: a springback is a difference of two
+    o << ",\n  \"probes_by_stage\": {";
+    for (std::size_t k = 0; k < probes_by_stage.size(); ++k) {
+      o << (k ? ", " : "") << quoted(probes_by_stage[k].first) << ": ";
+      write_probes(probes_by_stage[k].second);
+    }
     o << "}";
   }
   o << ",\n  \"reference_values\": [";

@@ -35,14 +35,17 @@ struct ImplicitStageReport {
   StageSummary summary;
 };
 
+/// Probe name -> value (probe_<name>_<quantity>, as the history columns).
+using ProbeValues = std::vector<std::pair<std::string, double>>;
+
 /// Writes the report on rank 0 (collective: timers and memory are reduced over ranks).
 void write_run_report(const CommPtr& comm, const Model& model, const std::string& json_path,
                       const std::string& results_path, const RunState& state,
                       const std::optional<ErrorNorms>& errors,
                       const std::vector<ReferenceCheck>& checks, double total_seconds,
                       const std::vector<ImplicitStageReport>& implicit = {},
-                      const std::vector<std::pair<std::string, double>>& probes = {},
-                      const std::vector<MemoryPhase>& memory = {});
+                      const ProbeValues& probes = {}, const std::vector<MemoryPhase>& memory = {},
+                      const std::vector<std::pair<std::string, ProbeValues>>& probes_by_stage = {});
 
 /// The wall-time phases the report lists (Teuchos timer names without the "efg: " prefix).
 const std::vector<std::string>& report_phases();

@@ -63,6 +63,15 @@ std::vector<ReferenceCheck> check_references(const ModelOperators& ops, const Ru
   return checks;
 }
 
+// The probes' values at the recorder's last record (its history columns probe_*).
+ProbeValues probe_values(const RunRecorder& recorder) {
+  ProbeValues out;
+  const auto& names = recorder.global_names();
+  for (std::size_t i = 0; i < names.size() && i < recorder.last_globals().size(); ++i)
+    if (names[i].rfind("probe_", 0) == 0) out.emplace_back(names[i], recorder.last_globals()[i]);
+  return out;
+}
+
 }  // namespace
 
 RunOutcome run_stages(const CommPtr& comm, const Model& model, const std::string& path,
@@ -99,6 +108,7 @@ RunOutcome run_stages(const CommPtr& comm, const Model& model, const std::string
   };
   const double first_end = model.scene.stages.empty() ? 1.0 : model.scene.stages.front().end_time;
   std::vector<ImplicitStageReport> implicit_reports;
+  std::vector<std::pair<std::string, ProbeValues>> probes_by_stage;
   // The first record: an explicit first stage writes it itself, once the start energies are
   // known (written here it would show a kinetic energy of 0 with a nonzero initial velocity).
   const bool explicit_first =
@@ -147,6 +157,9 @@ RunOutcome run_stages(const CommPtr& comm, const Model& model, const std::string
     });
     state.time = stage.end_time;
     memory.mark("stage '" + stage.name + "' (" + stage.driver + ")");
+    // The probes where the stage left them (a springback is the difference of two stages').
+    auto at_end = probe_values(recorder);
+    if (!at_end.empty()) probes_by_stage.emplace_back(stage.name, std::move(at_end));
   }
   RunOutcome outcome;
   outcome.errors = verify(model, *ops, state);
@@ -157,19 +170,16 @@ RunOutcome run_stages(const CommPtr& comm, const Model& model, const std::string
       setup_seconds +
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   // The probes' values of the last record (history columns probe_*), logged and reported.
-  std::vector<std::pair<std::string, double>> probes;
-  const auto& names = recorder.global_names();
-  for (std::size_t i = 0; i < names.size() && i < recorder.last_globals().size(); ++i)
-    if (names[i].rfind("probe_", 0) == 0) {
-      probes.emplace_back(names[i], recorder.last_globals()[i]);
-      std::ostringstream o;
-      o.precision(10);
-      o << names[i] << " = " << recorder.last_globals()[i];
-      Log::info(o.str());
-    }
+  const auto probes = probe_values(recorder);
+  for (const auto& [name, value] : probes) {
+    std::ostringstream o;
+    o.precision(10);
+    o << name << " = " << value;
+    Log::info(o.str());
+  }
   const auto memory_phases = memory_by_phase(comm, model);
   write_run_report(comm, model, path + ".report.json", path, state, outcome.errors, checks, seconds,
-                   implicit_reports, probes, memory_phases);
+                   implicit_reports, probes, memory_phases, probes_by_stage);
   Log::info("run report: " + path + ".report.json");
   return outcome;
 }

@@ -358,6 +358,15 @@ SpecPtr stage_spec() {
           "explicit",
           {optional_key("dt_scale",
                         real("Factor on the stable time step.", "-").above(0).at_most(1), "0.9"),
+           optional_key("mass_scale",
+                        real("Uniform mass scaling of a quasi-static stage (forming): the lumped "
+                             "mass of every particle times this factor, so the stable time step "
+                             "grows by its square root; inertia, kinetic energy and contact "
+                             "stiffness follow the scaled mass. Check the kinetic / internal "
+                             "energy ratio the stage logs (docs/explicit.md).",
+                             "-")
+                            .at_least(1),
+                        "1"),
            optional_key("dt",
                         real("Fixed time step instead of the stable estimate.", "time").above(0)),
            optional_key(

@@ -6,6 +6,7 @@
     sigma_y' = 2 sigma_y / sqrt(3) (plane strain; e.g. Hill 1950, Johnson & Mellor 1973);
   - after the release without the tools the pins carry nothing (< 1e-6 of that load): the
     residual stresses balance themselves;
+  - the same springback from the run report's probes at the end of each stage (to its 10 digits);
   - the sag of the middle line (centre against the points above the supports, x = +-S/2) springs
     back by the elastic deflection of a simply supported beam under the released load,
     F S^3 / (48 E' I), within 6 % (small-deflection Euler-Bernoulli; at the formed slope of
@@ -73,4 +74,20 @@ elastic = force * S**3 / (48 * Ep * h**3 / 12)
 check(abs(springback / elastic - 1) < 0.06,
       f"springback of the sag {springback:.5f} (formed {sag(formed):.4f}) vs F S^3 / (48 E' I) = "
       f"{elastic:.5f} ({100 * (springback / elastic - 1):+.2f} %)")
+# The same springback from the run report alone (probes at the end of each stage).
+import json  # noqa: E402
+
+report = json.load(open(os.path.join(out, "strip_three_point_bending.e.report.json")))
+by_stage = report.get("probes_by_stage", {})
+
+
+def report_sag(stage):
+    p = by_stage[stage]
+    return 0.5 * (p["probe_left_uy"] + p["probe_right_uy"]) - p["probe_middle_uy"]
+
+
+from_report = report_sag("form") - report_sag("springback") if len(by_stage) == 2 else float("nan")
+# (the report writes 10 significant digits, and the springback is a difference of sags near 2)
+check(abs(from_report - springback) < 1e-7 * abs(springback),
+      f"the run report's probes_by_stage give the same springback ({from_report:.9f})")
 sys.exit(1 if failures else 0)
