@@ -313,7 +313,7 @@ void ExplicitDriver::advance(RunState& state, double step_dt, long long step,
   }
   // The step is accepted: its material history (computed with the force at d_n+1) is kept.
   ops_.solid().history().commit();
-  supports_.commit_history();
+  supports_.commit_history(state.d);
   if (contact_) {
     contact_->commit();
     state.bodies = contact_->states();

@@ -57,6 +57,7 @@ void StaticProblem::begin_stage(const std::vector<RigidBodyState>& bodies, doubl
                                 const std::string& stage) {
   const auto it = set_of_stage_.find(stage);
   conditions_ = condition_sets_[it == set_of_stage_.end() ? 0 : it->second].get();
+  conditions_->load_history();  // an earlier stage may have advanced it
   released_ = Teuchos::null;
   release_scale_ = 0;
   if (contact_) contact_->begin_stage(bodies, t0, stage);

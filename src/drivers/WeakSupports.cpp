@@ -18,7 +18,18 @@ WeakSupports::WeakSupports(const ModelOperators& ops, const std::string& stage)
       r_overlap_(ops.model().maps.overlap_dofs),
       x_overlap_(ops.model().maps.overlap_dofs),
       scratch_(ops.model().maps.owned_dofs) {
-  if (!wanted(ops.model().scene, stage)) return;
+  const auto& scene = ops.model().scene;
+  bool plastic = false, transformation = false;
+  for (const auto& part : scene.parts)
+    plastic = plastic || scene.find_material(part.material)->model == "j2_plasticity";
+  for (const auto& bc : scene.boundary_conditions)
+    transformation = transformation || (bc.type == "displacement" &&
+                                        bc.method == "transformation" && bc.stages.includes(stage));
+  if (plastic && transformation)
+    tracked_ = std::make_unique<EssentialConditions>(
+        ops.model(), ops.solid(), ops.exact(), EssentialConditions::Selection::transformation_only,
+        stage);
+  if (!wanted(scene, stage)) return;
   conditions_ = std::make_unique<EssentialConditions>(
       ops.model(), ops.solid(), ops.exact(), EssentialConditions::Selection::weak_only, stage);
   totals_.assign(conditions_->condition_count(), {0.0, 0.0, 0.0});
@@ -64,8 +75,13 @@ std::vector<std::array<double, 3>> WeakSupports::reactions() const {
   return out;
 }
 
-void WeakSupports::commit_history() {
+void WeakSupports::commit_history(const Vector& d_owned) {
   if (conditions_) conditions_->commit_history();
+  if (tracked_) {
+    ops_.to_overlap(d_owned, d_overlap_);
+    tracked_->update_history(d_overlap_);
+    tracked_->commit_history();
+  }
 }
 
 }  // namespace efg

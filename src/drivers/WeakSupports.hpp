@@ -43,12 +43,15 @@ class WeakSupports {
   /// The force each condition applies to the body at the last resistance(), summed over ranks
   /// (collective), with the implicit drivers' sign.
   std::vector<std::array<double, 3>> reactions() const;
-  /// The step is accepted: plastic boundary points keep their state.
-  void commit_history();
+  /// The step is accepted at d: plastic boundary points keep their state, and those of the
+  /// transformation conditions (which act on the generalized values here) are evaluated at d, so
+  /// that the implicit stage after this one continues their history.
+  void commit_history(const Vector& d_owned);
 
  private:
   const ModelOperators& ops_;
   std::unique_ptr<EssentialConditions> conditions_;
+  std::unique_ptr<EssentialConditions> tracked_;  ///< transformation conditions of plastic parts
   Vector last_;
   mutable Vector d_overlap_, r_overlap_, x_overlap_, scratch_;
   std::vector<std::array<double, 3>> totals_;

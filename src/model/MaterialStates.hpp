@@ -50,7 +50,17 @@ class MaterialStates {
   bool elastic_probe() const { return elastic_probe_; }
   void set_elastic_probe(bool on) { elastic_probe_ = on; }
 
+  /// The committed plastic history of displacement condition c's boundary points on this rank
+  /// (operators/EssentialConditions; empty until a set of conditions first stores it). Kept here,
+  /// beside the particles' history, so that every stage's conditions, implicit and explicit,
+  /// continue one history (a springback stage sees the formed state at a symmetry plane).
+  std::vector<double>& boundary_points(std::size_t condition) {
+    if (condition >= boundary_.size()) boundary_.resize(condition + 1);
+    return boundary_[condition];
+  }
+
  private:
+  std::vector<std::vector<double>> boundary_;
   std::vector<PartStates> parts_;
   double step_time_ = 0.0;
   bool elastic_probe_ = false;

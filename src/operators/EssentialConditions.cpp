@@ -54,6 +54,7 @@ EssentialConditions::EssentialConditions(const Model& model, const SolidOperator
     setup.bc = &bc;
     setup.method = method_of(bc.method);
     if (selection == Selection::weak_only && setup.method == 0) continue;
+    if (selection == Selection::transformation_only && setup.method != 0) continue;
     setup.beta_factor = bc.penalty.value_or(setup.method == 1 ? 100.0 : 1e4) * largest_modulus;
     setup.modulus = largest_modulus;
     for (std::size_t k = 0; k < 3; ++k)
@@ -66,8 +67,12 @@ EssentialConditions::EssentialConditions(const Model& model, const SolidOperator
     };
     for (const auto& component : bc.components)
       if (component && component->uses_time()) timed_[c] = setup.prescribed;
-    if (setup.method == 0) add_collocated_nodes(model, op, setup);
+    if (setup.method == 0 && selection != Selection::transformation_only)
+      add_collocated_nodes(model, op, setup);
+    const std::size_t history_begin = committed_.size();
     const auto sides_found = add_boundary_points(model, op, setup);
+    if (committed_.size() > history_begin)
+      history_ranges_.push_back({c, history_begin, committed_.size()});
     if (setup.method != 0 && sides_found == 0)
       throw InputError(model.scene.file + ": boundary condition '" + bc.name + "': node set '" +
                        bc.node_set + "' covers no side of a meshfree part, which method " +
@@ -75,6 +80,53 @@ EssentialConditions::EssentialConditions(const Model& model, const SolidOperator
                        " integrates over; use method transformation for point constraints");
   }
   build_reaction_weights(model);
+  shared_ = &op.history();
+  load_history();
+}
+
+void EssentialConditions::load_history() {
+  for (const auto& [c, begin, end] : history_ranges_) {
+    auto& stored = shared_->boundary_points(c);
+    const auto b = committed_.begin() + static_cast<std::ptrdiff_t>(begin);
+    const auto e = committed_.begin() + static_cast<std::ptrdiff_t>(end);
+    if (stored.size() == end - begin)
+      std::copy(stored.begin(), stored.end(), b);
+    else
+      stored.assign(b, e);  // the first set of conditions to see c: the initial state
+  }
+  trial_ = committed_;
+}
+
+void EssentialConditions::commit_history() {
+  committed_ = trial_;
+  for (const auto& [c, begin, end] : history_ranges_)
+    shared_->boundary_points(c).assign(committed_.begin() + static_cast<std::ptrdiff_t>(begin),
+                                       committed_.begin() + static_cast<std::ptrdiff_t>(end));
+}
+
+template <int Dim>
+void EssentialConditions::update_point_history(const BoundaryPoint& p,
+                                               const Vector& d_overlap) const {
+  const auto d = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
+  double H[Dim][Dim] = {};
+  for (std::size_t a = 0; a < p.nodes.size(); ++a)
+    for (int i = 0; i < Dim; ++i) {
+      const double di = d(static_cast<std::size_t>(p.nodes[a] * Dim + i), 0);
+      for (int j = 0; j < Dim; ++j) H[i][j] += di * p.grad[a * Dim + static_cast<std::size_t>(j)];
+    }
+  double P[Dim][Dim] = {}, A[Dim][Dim][Dim][Dim] = {};
+  if (!boundary_stress<Dim>(p, H, P, A))
+    throw NumericalError("det F <= 0 at a boundary point of an essential condition");
+}
+
+void EssentialConditions::update_history(const Vector& d_overlap) const {
+  for (const auto& p : points_) {
+    if (!p.law.plastic) continue;
+    if (dim_ == 2)
+      update_point_history<2>(p, d_overlap);
+    else
+      update_point_history<3>(p, d_overlap);
+  }
 }
 
 // Transformation: one collocated constraint per owned node of the set and component.

@@ -39,7 +39,9 @@ class EssentialConditions {
   /// Which displacement conditions to build: all (implicit stages), or only those enforced
   /// weakly by boundary integrals, nitsche and penalty (explicit stages, drivers/WeakSupports);
   /// of those, the ones active in `stage` ("": every condition, whatever its stages).
-  enum class Selection { all, weak_only };
+  /// transformation_only: the explicit stages' tracking of the transformation conditions'
+  /// boundary-point history (drivers/WeakSupports), which they do not otherwise evaluate.
+  enum class Selection { all, weak_only, transformation_only };
   EssentialConditions(const Model& model, const SolidOperator& op, const ExactSolution* exact,
                       Selection selection = Selection::all, const std::string& stage = "");
 
@@ -68,8 +70,15 @@ class EssentialConditions {
 
   /// Path-dependent parts: the boundary points keep a plastic history of their own (the
   /// traction term needs the stress there); the last evaluation's state becomes the committed one
-  /// when the load step is accepted (as MaterialStates::commit).
-  void commit_history() { committed_ = trial_; }
+  /// when the load step is accepted (as MaterialStates::commit), and is stored per condition in
+  /// MaterialStates::boundary_points, which every set of conditions of the run shares.
+  void commit_history();
+  /// Takes the committed history of its conditions from MaterialStates (a stage begins: an
+  /// earlier stage, explicit or implicit, may have advanced it). Done on construction too.
+  void load_history();
+  /// Evaluates the stress at every plastic boundary point at d (its trial history), without
+  /// assembling anything: explicit stages keep the transformation conditions' history this way.
+  void update_history(const Vector& d_overlap) const;
 
   /// Number of displacement and velocity conditions of the scene (the index range of totals).
   std::size_t condition_count() const { return conditions_; }
@@ -161,6 +170,10 @@ class EssentialConditions {
   const MaterialStates* states_ = nullptr;  // the step time of rate-dependent laws
   std::vector<double> committed_;
   mutable std::vector<double> trial_;
+  MaterialStates* shared_ = nullptr;  // the run's history store (per condition)
+  std::vector<std::array<std::size_t, 3>> history_ranges_;  // condition, begin, end in committed_
+  template <int Dim>
+  void update_point_history(const BoundaryPoint& p, const Vector& d_overlap) const;
 };
 
 }  // namespace efg

@@ -184,5 +184,45 @@ stages:
   expect_bound(rubber_block("0.45"), 0.05);
 }
 
+// The boundary points of a transformation condition keep their own plastic history for the
+// traction term (operators/EssentialConditions); explicit stages, which prescribe the generalized
+// values instead, must still advance it (drivers/WeakSupports), or the implicit stage after them
+// starts those points from the virgin state (issue 21, stage switch). A J2 block on rollers pulled
+// slowly to 1 % strain on a regular grid is in a uniform state: the effective plastic strain of
+// the pulled face's boundary points must be the particles' (0.989 % here) to 1 %.
+TEST(Explicit, TransformationBoundaryPointsKeepThePlasticHistory) {
+  const auto comm = Tpetra::getDefaultComm();
+  auto scene = parse_scene(R"yaml(
+parameters: {T: 0.0004}
+mesh:
+  generate: {element: quad4, lower: [0, 0], upper: [1, 1], cells: [6, 6]}
+parts:
+  - {name: block, blocks: [block_1], material: steel, plane: strain}
+materials:
+  - {name: steel, model: j2_plasticity, density: 7.85e-9, youngs_modulus: 200000, poissons_ratio: 0.3, yield_stress: 250, hardening_modulus: 2000}
+boundary_conditions:
+  - {name: roller_x, type: displacement, node_set: xmin, x: 0}
+  - {name: roller_y, type: displacement, node_set: ymin, y: 0}
+  - {name: pull, type: displacement, node_set: xmax, x: "0.01 * (t / T - sin(2 * pi * t / T) / (2 * pi))"}
+stages:
+  - {name: pull, driver: explicit, end_time: T}
+)yaml",
+                           "boundary_history.yaml");
+  const auto model = build_model(comm, scene);
+  auto ops = std::make_shared<ModelOperators>(model);
+  RunState state(model.maps.owned_dofs);
+  ExplicitDriver(*ops, model.scene.stages.front()).run(state, [](const RunState&) {});
+  auto& history = ops->solid().history();
+  // The particles' effective plastic strain (all alike in the uniform state).
+  const auto& part = history.part(0);
+  const auto particles = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), part.committed);
+  const double alpha = particles(0, physics::j2_state::alpha);
+  ASSERT_GT(alpha, 0.009);
+  const auto& points = history.boundary_points(2);  // condition 'pull'
+  ASSERT_FALSE(points.empty());
+  for (std::size_t k = physics::j2_state::alpha; k < points.size(); k += physics::j2_state::count)
+    EXPECT_NEAR(points[k], alpha, 0.01 * alpha);
+}
+
 }  // namespace
 }  // namespace efg
