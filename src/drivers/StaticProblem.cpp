@@ -30,6 +30,7 @@ StaticProblem::StaticProblem(std::shared_ptr<const ModelOperators> operators)
     set_of_stage_[stage] = it->second;
   }
   conditions_ = condition_sets_.front().get();
+  Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewCounter("efg: stiffness graph"));
   CouplingGraph couplings(model_.maps.overlap_nodes->getNodeNumElements());
   ops_->solid().add_point_couplings(couplings);
   for (const auto& set : condition_sets_) set->add_couplings(couplings);
