@@ -105,15 +105,22 @@ void EssentialConditions::commit_history() {
 }
 
 template <int Dim>
-void EssentialConditions::update_point_history(const BoundaryPoint& p,
-                                               const Vector& d_overlap) const {
+void EssentialConditions::interpolate_at(const BoundaryPoint& p, const Vector& d_overlap,
+                                         double (&u)[Dim], double (&H)[Dim][Dim]) {
   const auto d = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
-  double H[Dim][Dim] = {};
   for (std::size_t a = 0; a < p.nodes.size(); ++a)
     for (int i = 0; i < Dim; ++i) {
       const double di = d(static_cast<std::size_t>(p.nodes[a] * Dim + i), 0);
+      u[i] += p.phi[a] * di;
       for (int j = 0; j < Dim; ++j) H[i][j] += di * p.grad[a * Dim + static_cast<std::size_t>(j)];
     }
+}
+
+template <int Dim>
+void EssentialConditions::update_point_history(const BoundaryPoint& p,
+                                               const Vector& d_overlap) const {
+  double H[Dim][Dim] = {}, u[Dim] = {};
+  interpolate_at<Dim>(p, d_overlap, u, H);
   double P[Dim][Dim] = {}, A[Dim][Dim][Dim][Dim] = {};
   if (!boundary_stress<Dim>(p, H, P, A))
     throw NumericalError("det F <= 0 at a boundary point of an essential condition");
@@ -301,15 +308,9 @@ bool EssentialConditions::boundary_stress(const BoundaryPoint& p, const double (
 template <int Dim>
 EssentialConditions::PointState EssentialConditions::evaluate_point(const BoundaryPoint& p,
                                                                     const Vector& d_overlap) const {
-  const auto d = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
   const std::size_t n = p.nodes.size();
   double H[Dim][Dim] = {}, u[Dim] = {};
-  for (std::size_t a = 0; a < n; ++a)
-    for (int i = 0; i < Dim; ++i) {
-      const double di = d(static_cast<std::size_t>(p.nodes[a] * Dim + i), 0);
-      u[i] += p.phi[a] * di;
-      for (int j = 0; j < Dim; ++j) H[i][j] += di * p.grad[a * Dim + static_cast<std::size_t>(j)];
-    }
+  interpolate_at<Dim>(p, d_overlap, u, H);
   double P[Dim][Dim] = {}, A[Dim][Dim][Dim][Dim] = {};
   if (!boundary_stress<Dim>(p, H, P, A))
     throw NumericalError("det F <= 0 at a boundary point of an essential condition");

@@ -174,6 +174,10 @@ class EssentialConditions {
   std::vector<std::array<std::size_t, 3>> history_ranges_;  // condition, begin, end in committed_
   template <int Dim>
   void update_point_history(const BoundaryPoint& p, const Vector& d_overlap) const;
+  /// u^h and its gradient H at a boundary point (added to u and H).
+  template <int Dim>
+  static void interpolate_at(const BoundaryPoint& p, const Vector& d_overlap, double (&u)[Dim],
+                             double (&H)[Dim][Dim]);
 };
 
 }  // namespace efg

@@ -9,6 +9,17 @@
 
 namespace efg {
 
+void read_node_set_input(Scene& scene) {
+  for (const auto& n : scene.resolved["node_sets"]) {
+    NodeSetSpec spec;
+    spec.name = n["name"].as<std::string>();
+    for (const auto& v : n["lower"]) spec.lower.push_back(v.as<double>());
+    for (const auto& v : n["upper"]) spec.upper.push_back(v.as<double>());
+    if (n["within"]) spec.within = n["within"].as<std::string>();
+    scene.node_sets.push_back(spec);
+  }
+}
+
 void add_scene_node_sets(const Scene& scene, BackgroundMesh& mesh) {
   const auto dim = static_cast<std::size_t>(mesh.dimension);
   std::int64_t next_id = 0;

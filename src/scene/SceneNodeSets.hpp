@@ -8,6 +8,9 @@
 
 namespace efg {
 
+/// Fills scene.node_sets from the resolved document (validated by the schema).
+void read_node_set_input(Scene& scene);
+
 /// Appends the scene's node sets to mesh.node_sets (ids after the mesh's largest). Throws
 /// InputError at file:line:col and key path for a name the mesh already has, an unknown
 /// `within`, corners of the wrong dimension or inverted, and a box that holds no node.

@@ -10,6 +10,7 @@
 #include "scene/FieldInput.hpp"
 #include "scene/InitialStateInput.hpp"
 #include "scene/PlasticityInput.hpp"
+#include "scene/SceneNodeSets.hpp"
 #include "scene/SceneSchema.hpp"
 #include "scene/SchemaValidator.hpp"
 #include "scene/StageLists.hpp"
@@ -78,9 +79,7 @@ class SceneBuilder {
       s_.probes.push_back(probe);
     }
     read_initial_state_input(s_);
-    for (const auto& n : r["node_sets"])
-      s_.node_sets.push_back({n["name"].as<std::string>(), as_vector<double>(n["lower"]),
-                              as_vector<double>(n["upper"]), opt_string(n, "within")});
+    read_node_set_input(s_);
     std::vector<std::string> stage_names;
     for (const auto& st : r["stages"]) stage_names.push_back(st["name"].as<std::string>());
     check_stage_lists(s_, stage_names);
