@@ -23,7 +23,8 @@ def slope(xs, ys):
 
 def main(table, prefix):
     rows = list(csv.DictReader(open(table)))
-    fixed = {"level", "h", "dofs", "l2_rel_error", "energy_rel_error", "max_nodal_error", "total_seconds"}
+    fixed = {"level", "h", "dofs", "l2_rel_error", "energy_rel_error", "max_nodal_error", "pressure_rel_error",
+             "total_seconds"}
     sweep_keys = [k for k in rows[0].keys() if k not in fixed and not k.endswith("_seconds")]
     series = {}
     for r in rows:

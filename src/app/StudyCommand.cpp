@@ -67,7 +67,7 @@ YAML::Node node_at(YAML::Node root, const std::string& key, const std::string& f
 // The study table's header: the swept keys, the level, errors, and one column per report phase.
 void write_study_header(std::ostream& csv, const std::vector<Sweep>& sweeps) {
   for (const auto& s : sweeps) csv << s.key << ",";
-  csv << "level,h,dofs,l2_rel_error,energy_rel_error,max_nodal_error";
+  csv << "level,h,dofs,l2_rel_error,energy_rel_error,max_nodal_error,pressure_rel_error";
   for (const auto& phase : report_phases()) {
     std::string column = phase;
     for (auto& c : column)
@@ -159,11 +159,13 @@ void study_command(const CommPtr& comm, const CommandLine& cl) {
       for (const auto& v : combo) csv << v << ",";
       csv << std::setprecision(10) << level << "," << h << ","
           << model.maps.owned_dofs->getGlobalNumElements();
-      if (outcome.errors)
+      if (outcome.errors) {
         csv << "," << outcome.errors->l2_relative << "," << outcome.errors->energy_relative << ","
-            << outcome.errors->max_nodal;
-      else
-        csv << ",,,";
+            << outcome.errors->max_nodal << ",";
+        if (outcome.errors->pressure_relative >= 0) csv << outcome.errors->pressure_relative;
+      } else {
+        csv << ",,,,";
+      }
       for (const auto& phase : report_phases()) {
         const auto timer = Teuchos::TimeMonitor::lookupCounter("efg: " + phase);
         csv << "," << (timer.is_null() ? 0.0 : timer->totalElapsedTime());

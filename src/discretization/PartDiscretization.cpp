@@ -30,6 +30,8 @@ PartDiscretization discretize_part(const BackgroundMesh& mesh, const PartSpec& p
     d.particle_values = d.points.values;
     d.particle_gradients = d.points.gradients;
   }
+  if (part.formulation == PartFormulation::mixed_up)
+    d.cells = cell_averages(mesh, d.cloud, owned_cells(mesh, part, partition.owner, partition.rank));
   return d;
 }
 

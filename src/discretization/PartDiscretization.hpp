@@ -4,6 +4,7 @@
 
 #include <vector>
 
+#include "discretization/CellSmoothing.hpp"
 #include "discretization/IntegrationPoints.hpp"
 #include "parallel/NodePartition.hpp"
 
@@ -18,6 +19,9 @@ struct PartDiscretization {
   /// displacements u(X_J) = sum_I phi_I(X_J) d_I for output and essential conditions, and the
   /// gradients output strains come from (SCNI: the smoothed ones; Gauss: direct).
   CsrTable particle_values, particle_gradients;
+  /// formulation mixed_up: the cell-averaged gradients of the owned cells (the pressure cells);
+  /// empty otherwise (a displacement part builds no pressure data).
+  CellAverages cells;
 };
 
 /// Ghost layer from the part's support reach and cell size, particle cloud, integration points.

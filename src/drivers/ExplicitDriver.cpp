@@ -210,7 +210,7 @@ void ExplicitDriver::energies(RunState& state) {
     state.momentum = momentum(mv);
   }
   ops_.to_overlap(state.d, d_overlap_);
-  const double mine = ops_.solid().strain_energy(d_overlap_);
+  const double mine = ops_.strain_energy(d_overlap_);
   Teuchos::reduceAll(*mass_.getMap()->getComm(), Teuchos::REDUCE_SUM, mine,
                      Teuchos::outArg(state.internal));
 }

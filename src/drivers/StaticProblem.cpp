@@ -32,7 +32,7 @@ StaticProblem::StaticProblem(std::shared_ptr<const ModelOperators> operators)
   conditions_ = condition_sets_.front().get();
   Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewCounter("efg: stiffness graph"));
   CouplingGraph couplings(model_.maps.overlap_nodes->getNodeNumElements());
-  ops_->solid().add_point_couplings(couplings);
+  ops_->add_couplings(couplings);
   for (const auto& set : condition_sets_) set->add_couplings(couplings);
   if (!model_.scene.contacts.empty()) {
     contact_ = std::make_unique<ImplicitContact>(*ops_);
@@ -81,7 +81,7 @@ void StaticProblem::set_load_factor(const LoadFactor& factor) {
 void StaticProblem::unconstrained_residual(const Vector& d_owned, Vector& r_owned) {
   to_overlap(d_owned, d_overlap_);
   r_overlap_.putScalar(0.0);
-  ops_->solid().add_internal_force(d_overlap_, r_overlap_);
+  ops_->add_internal_force(d_overlap_, r_overlap_);
   {
     Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewCounter("efg: essential conditions"));
     conditions_->add_boundary_terms(d_overlap_, r_overlap_);
@@ -102,7 +102,7 @@ void StaticProblem::jacobian(const Vector& d_owned, FEMatrix& K) {
   to_overlap(d_owned, d_overlap_);
   K.beginAssembly();
   K.setAllToScalar(0.0);
-  ops_->solid().add_tangent(d_overlap_, K);
+  ops_->add_tangent(d_overlap_, K);
   {
     Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewCounter("efg: essential conditions"));
     conditions_->add_boundary_terms(d_overlap_, K);
@@ -127,7 +127,7 @@ std::vector<std::array<double, 3>> StaticProblem::reactions(const Vector& d_owne
   Vector r(model_.maps.owned_dofs);
   to_overlap(d_owned, d_overlap_);
   r_overlap_.putScalar(0.0);
-  ops_->solid().add_internal_force(d_overlap_, r_overlap_);
+  ops_->add_internal_force(d_overlap_, r_overlap_);
   if (contact_) contact_->add_residual(d_overlap_, r_overlap_);
   ops_->to_owned(r_overlap_, r);
   r.update(-1.0, f_ext_, 1.0);

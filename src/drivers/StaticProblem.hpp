@@ -59,6 +59,7 @@ class StaticProblem {
 
   const Teuchos::RCP<const Map>& owned_dofs() const { return model_.maps.owned_dofs; }
   const SolidOperator& solid() const { return ops_->solid(); }
+  const ModelOperators& operators() const { return *ops_; }
   const Model& model() const { return model_; }
 
   /// The force scale of the last residual evaluation: max(||f_ext||, ||f_int(d)||) (2-norms over

@@ -63,6 +63,12 @@ MaterialLaw material_law(const Scene& scene, const PartSpec& part, int dimension
     law.plastic = true;
     law.j2 = j2_parameters(scene, material, part, dimension);
   }
+  if (part.formulation == PartFormulation::mixed_up) {
+    // scene/PartFormulationCheck: linear elastic, one modulus, plane strain or 3D (the 3D
+    // constants), so kappa = lambda + 2 mu / 3.
+    law.bulk_modulus = law.elastic.lambda + 2.0 * law.elastic.mu / 3.0;
+    law.elastic.lambda = -2.0 * law.elastic.mu / 3.0;
+  }
   return law;
 }
 

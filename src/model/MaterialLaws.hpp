@@ -18,6 +18,12 @@ struct MaterialLaw {
   /// penalty scales and messages read them).
   physics::SolidMaterial elastic;
   bool plastic = false;  ///< J2 plasticity with history state
+  /// formulation mixed_up: `elastic` is the deviatoric part of the law (lambda = -2 mu / 3, so
+  /// that lambda tr(eps) I + 2 mu eps = 2 mu dev eps with eps_33 = 0 in plane strain) and the
+  /// volumetric part, kappa times the cell's dilatation, is the cell pressure's
+  /// (operators/MixedPressure). 0 for displacement parts.
+  double bulk_modulus = 0.0;
+  bool mixed() const { return bulk_modulus > 0; }
   physics::J2Parameters j2;
   /// Doubles of history per integration point (0: the law keeps none).
   int state_count() const { return plastic ? physics::j2_state::count : 0; }

@@ -10,6 +10,7 @@
 #include <cmath>
 
 #include "core/Errors.hpp"
+#include "discretization/CellSmoothing.hpp"
 #include "discretization/ShapeFunctions.hpp"
 #include "discretization/SmoothingFacets.hpp"
 #include "mesh/SideMeasures.hpp"
@@ -45,9 +46,13 @@ EssentialConditions::EssentialConditions(const Model& model, const SolidOperator
   double largest_modulus = 0;
   for (const auto& m : model.scene.materials)
     largest_modulus = std::max(largest_modulus, m.constants.at("youngs_modulus"));
+  // A mixed part's traction carries kappa theta: the penalties and scales follow the stiffer of E
+  // and 3 kappa = E / (1 - 2 nu) there (Nitsche's stability needs beta above it).
+  for (std::size_t p = 0; p < model.parts.size(); ++p)
+    largest_modulus = std::max(largest_modulus, 3 * op.history().part(p).law.bulk_modulus);
   for (std::size_t c = 0; c < model.scene.boundary_conditions.size(); ++c) {
     const auto& bc = model.scene.boundary_conditions[c];
-    if (bc.type != "displacement") continue;  // velocity conditions belong to the explicit driver
+    if (bc.type != "displacement") continue;   // velocity conditions belong to the explicit driver
     if (!bc.stages.includes(stage)) continue;  // not active in this stage: no terms, no reaction
     Setup setup;
     setup.index = c;
@@ -193,6 +198,7 @@ long long EssentialConditions::add_boundary_points(const Model& model, const Sol
     const double thickness = dim_ == 2 ? d.part->thickness : 1.0;
     std::vector<SidePoint> pts;
     std::vector<double> beta;
+    std::vector<std::size_t> cell_of;
     for (const auto& [cell, side] : boundary_sides(mesh, d.part->blocks)) {
       const auto nodes = mesh.side_node_indices(cell, side);
       if (!std::all_of(nodes.begin(), nodes.end(),
@@ -205,6 +211,7 @@ long long EssentialConditions::add_boundary_points(const Model& model, const Sol
       for (const auto& q : side_quadrature(mesh, cell, side)) {
         pts.push_back(q);
         beta.push_back(setup.beta_factor / h);
+        cell_of.push_back(cell);
       }
     }
     if (pts.empty()) continue;
@@ -246,10 +253,34 @@ long long EssentialConditions::add_boundary_points(const Model& model, const Sol
         b.grad.insert(b.grad.end(), v.grad.begin() + static_cast<std::ptrdiff_t>(k * udim),
                       v.grad.begin() + static_cast<std::ptrdiff_t>((k + 1) * udim));
       }
+      if (law.mixed()) add_cell_pressure(mesh, d, op.overlap_node(p), cell_of[q], law, b);
       points_.push_back(std::move(b));
     }
   }
   return sides_found;
+}
+
+void EssentialConditions::add_cell_pressure(const BackgroundMesh& mesh, const PartDiscretization& d,
+                                            const std::vector<int>& overlap_node, std::size_t cell,
+                                            const MaterialLaw& law, BoundaryPoint& b) const {
+  const auto udim = static_cast<std::size_t>(dim_);
+  const auto row = cell_averages(mesh, d.cloud, {cell});
+  b.kappa = law.bulk_modulus;
+  b.bbar.assign(b.nodes.size() * udim, 0.0);
+  for (std::size_t k = 0; k < row.gradients.particles.size(); ++k) {
+    const int node = overlap_node[static_cast<std::size_t>(row.gradients.particles[k])];
+    auto at = std::find(b.nodes.begin(), b.nodes.end(), node);
+    if (at == b.nodes.end()) {  // reached by the cell, not by the point
+      b.nodes.push_back(node);
+      b.phi.push_back(0.0);
+      b.grad.insert(b.grad.end(), udim, 0.0);
+      b.bbar.insert(b.bbar.end(), udim, 0.0);
+      at = b.nodes.end() - 1;
+    }
+    const auto e = static_cast<std::size_t>(at - b.nodes.begin());
+    for (std::size_t i = 0; i < udim; ++i)
+      b.bbar[e * udim + i] = row.gradients.values[k * udim + i];
+  }
 }
 
 void EssentialConditions::add_couplings(CouplingGraph& graph) const {
@@ -323,6 +354,16 @@ EssentialConditions::PointState EssentialConditions::evaluate_point(const Bounda
     for (int j = 0; j < Dim; ++j)
       st.Pn[i] += P[i][j] * p.weighted_normal[static_cast<std::size_t>(j)];
   }
+  double theta = 0;  // mixed u-p: the cell's dilatation (0 otherwise)
+  if (!p.bbar.empty()) {
+    const auto d = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
+    for (std::size_t a = 0; a < n; ++a)
+      for (int i = 0; i < Dim; ++i)
+        theta += p.bbar[a * Dim + static_cast<std::size_t>(i)] *
+                 d(static_cast<std::size_t>(p.nodes[a] * Dim + i), 0);
+    for (int i = 0; i < Dim; ++i)
+      st.Pn[i] += p.kappa * theta * p.weighted_normal[static_cast<std::size_t>(i)];
+  }
   st.S.assign(n * Dim * Dim, 0.0);
   for (std::size_t a = 0; a < n; ++a)
     for (int k = 0; k < Dim; ++k)
@@ -332,6 +373,9 @@ EssentialConditions::PointState EssentialConditions::evaluate_point(const Bounda
           for (int l = 0; l < Dim; ++l)
             v += A[k][j][i][l] * p.grad[a * Dim + static_cast<std::size_t>(l)] *
                  p.weighted_normal[static_cast<std::size_t>(j)];
+        if (!p.bbar.empty())
+          v += p.kappa * p.bbar[a * Dim + static_cast<std::size_t>(i)] *
+               p.weighted_normal[static_cast<std::size_t>(k)];
         st.S[(a * Dim + static_cast<std::size_t>(k)) * Dim + static_cast<std::size_t>(i)] = v;
       }
   return st;

@@ -12,6 +12,7 @@ ModelOperators::ModelOperators(const Model& model)
     : model_(model),
       exact_(exact_of(model)),
       solid_(model),
+      mixed_(MixedPressure::build(model, solid_)),
       loads_(model, solid_, exact_.get()),
       import_(Teuchos::rcp(new Tpetra::Import<>(model.maps.owned_dofs, model.maps.overlap_dofs))),
       export_(Teuchos::rcp(new Tpetra::Export<>(model.maps.overlap_dofs, model.maps.owned_dofs))),
@@ -21,8 +22,27 @@ ModelOperators::ModelOperators(const Model& model)
 void ModelOperators::internal_force(const Vector& d_owned, Vector& f_owned) const {
   to_overlap(d_owned, d_overlap_);
   f_overlap_.putScalar(0.0);
-  solid_.add_internal_force(d_overlap_, f_overlap_);
+  add_internal_force(d_overlap_, f_overlap_);
   to_owned(f_overlap_, f_owned);
+}
+
+void ModelOperators::add_internal_force(const Vector& d_overlap, Vector& f_overlap) const {
+  solid_.add_internal_force(d_overlap, f_overlap);
+  if (mixed_) mixed_->add_internal_force(d_overlap, f_overlap);
+}
+
+void ModelOperators::add_tangent(const Vector& d_overlap, FEMatrix& K) const {
+  solid_.add_tangent(d_overlap, K);
+  if (mixed_) mixed_->add_tangent(K);
+}
+
+void ModelOperators::add_couplings(CouplingGraph& graph) const {
+  solid_.add_point_couplings(graph);
+  if (mixed_) mixed_->add_couplings(graph);
+}
+
+double ModelOperators::strain_energy(const Vector& d_overlap) const {
+  return solid_.strain_energy(d_overlap) + (mixed_ ? mixed_->strain_energy(d_overlap) : 0.0);
 }
 
 }  // namespace efg

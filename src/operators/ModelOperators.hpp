@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "operators/ExternalLoads.hpp"
+#include "operators/MixedPressure.hpp"
 #include "operators/SolidOperator.hpp"
 
 namespace efg {
@@ -19,6 +20,8 @@ class ModelOperators {
 
   const Model& model() const { return model_; }
   const SolidOperator& solid() const { return solid_; }
+  /// The cell pressures of the mixed_up parts; null when the model has none.
+  const MixedPressure* mixed() const { return mixed_.get(); }
   const ExternalLoads& loads() const { return loads_; }
   const ExactSolution* exact() const { return exact_.get(); }
 
@@ -33,11 +36,19 @@ class ModelOperators {
   }
   /// f_int(d) on the owned dofs: the one internal-force evaluation of both drivers.
   void internal_force(const Vector& d_owned, Vector& f_owned) const;
+  /// The same on overlap vectors (f += f_int(d)): the solid's points and the mixed cells.
+  void add_internal_force(const Vector& d_overlap, Vector& f_overlap) const;
+  /// K += K_int(d) (assembly mode), and the couplings it needs.
+  void add_tangent(const Vector& d_overlap, FEMatrix& K) const;
+  void add_couplings(CouplingGraph& graph) const;
+  /// Stored energy of this rank's points and cells (sum over ranks for the total).
+  double strain_energy(const Vector& d_overlap) const;
 
  private:
   const Model& model_;
   std::unique_ptr<ExactSolution> exact_;
   SolidOperator solid_;
+  std::unique_ptr<MixedPressure> mixed_;
   ExternalLoads loads_;
   Teuchos::RCP<Tpetra::Import<>> import_;
   Teuchos::RCP<Tpetra::Export<>> export_;

@@ -58,15 +58,49 @@ std::vector<std::string> field_columns(const std::string& field, int dimension) 
     return {field + "_xx", field + "_yy", field + "_zz",
             field + "_xy", field + "_yz", field + "_zx"};
   }
-  if (field == "von_mises" || field == "plastic_strain" || field == "eroded" ||
-      field == "nodal_volume" || field == "owner_rank")
+  if (field == "von_mises" || field == "pressure" || field == "plastic_strain" ||
+      field == "eroded" || field == "nodal_volume" || field == "owner_rank")
     return {field};
   throw std::logic_error("no output columns for field '" + field + "'");
+}
+
+bool is_cell_field(const std::string& field) {
+  return field == "cell_pressure";
+}
+
+std::vector<std::string> cell_columns(const std::vector<std::string>& fields) {
+  std::vector<std::string> columns;
+  for (const auto& f : fields)
+    if (is_cell_field(f)) columns.push_back(f);
+  return columns;
+}
+
+std::vector<GlobalOrdinal> output_cells(const Model& model) {
+  std::vector<GlobalOrdinal> cells;
+  for (const auto& part : model.parts)
+    for (auto c : part.cells.cell) cells.push_back(static_cast<GlobalOrdinal>(c));
+  return cells;
+}
+
+std::vector<std::vector<double>> cell_values(const Model& model, const MixedPressure* mixed,
+                                             const Vector& d_overlap) {
+  std::vector<std::vector<double>> columns;
+  for (const auto& field : cell_columns(model.scene.output.fields)) {
+    std::vector<double> values;
+    if (field == "cell_pressure" && mixed)  // the condensed pressure p_c = -kappa theta_c
+      for (std::size_t p = 0; p < model.parts.size(); ++p)
+        if (mixed->mixed(p))
+          for (double theta : mixed->cell_dilatations(p, d_overlap))
+            values.push_back(-mixed->bulk_modulus(p) * theta);
+    columns.push_back(std::move(values));
+  }
+  return columns;
 }
 
 std::vector<std::string> output_columns(const std::vector<std::string>& fields, int dimension) {
   std::vector<std::string> columns;
   for (const auto& f : fields) {
+    if (is_cell_field(f)) continue;
     const auto c = field_columns(f, dimension);
     columns.insert(columns.end(), c.begin(), c.end());
   }
@@ -141,13 +175,19 @@ ParticleValues interpolate(const Model& model, const SolidOperator& op, const Ve
 }
 
 // Strains and stresses once per particle (not once per output column).
+// Mixed u-p parts: the deviatoric law (lambda = -2 mu / 3) at the particle, and -p I from the
+// particle's pressure (the mean of its cells'), so that -tr(sigma)/3 is that pressure.
 void particle_tensors(const Model& model, const ParticleValues& values,
+                      const std::vector<double>& pressure, const MixedPressure* mixed,
                       std::vector<Tensor>& strains, std::vector<Tensor>& stresses) {
   const int dim = model.mesh.dimension;
   std::vector<physics::SolidMaterial> materials;
-  for (const auto& pd : model.parts)
+  for (std::size_t p = 0; p < model.parts.size(); ++p) {
+    const auto& pd = model.parts[p];
     materials.push_back(
         solid_material(*model.scene.find_material(pd.part->material), *pd.part, dim));
+    if (mixed && mixed->mixed(p)) materials.back().lambda = -2.0 * materials.back().mu / 3.0;
+  }
   for (std::size_t s = 0; s < values.part.size(); ++s) {
     if (values.part[s] < 0) continue;
     const auto p = static_cast<std::size_t>(values.part[s]);
@@ -157,10 +197,11 @@ void particle_tensors(const Model& model, const ParticleValues& values,
       particle_state<2>(materials[p], finite, values.h[s].data(), strain, sigma);
     else
       particle_state<3>(materials[p], finite, values.h[s].data(), strain, sigma);
+    const double p_s = mixed && mixed->mixed(p) ? pressure[s] : 0.0;
     for (std::size_t i = 0; i < 3; ++i)
       for (std::size_t j = 0; j < 3; ++j) {
         strains[s][i][j] = strain[i][j];
-        stresses[s][i][j] = sigma[i][j];
+        stresses[s][i][j] = sigma[i][j] - (i == j ? p_s : 0.0);
       }
   }
 }
@@ -196,8 +237,7 @@ std::vector<std::vector<double>> committed_states(const Model& model, const Soli
   for (std::size_t p = 0; p < history.parts(); ++p) {
     const auto& part = history.part(p);
     if (part.count == 0) continue;
-    const auto committed =
-        Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), part.committed);
+    const auto committed = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), part.committed);
     const auto& nodes = op.point_nodes(p);
     for (std::size_t q = 0; q < nodes.size(); ++q) {
       const auto s = nodes[q] >= 0 ? slot[static_cast<std::size_t>(nodes[q])] : none;
@@ -213,7 +253,8 @@ std::vector<std::vector<double>> committed_states(const Model& model, const Soli
 
 std::vector<std::vector<double>> state_columns(const Model& model, const SolidOperator& op,
                                                const Vector& d_overlap, const Vector* v_overlap,
-                                               const Vector* a_overlap) {
+                                               const Vector* a_overlap,
+                                               const MixedPressure* mixed) {
   const int dim = model.mesh.dimension;
   const auto& owned = model.partition.owned;
   const auto volume = lumped_nodal_volumes(model.mesh);
@@ -221,9 +262,11 @@ std::vector<std::vector<double>> state_columns(const Model& model, const SolidOp
   std::vector<Tensor> strains(owned.size(), Tensor{}), stresses(owned.size(), Tensor{});
   const auto& fields = model.scene.output.fields;
   if (std::any_of(fields.begin(), fields.end(), [](const std::string& f) {
-        return f == "stress" || f == "strain" || f == "von_mises";
+        return f == "stress" || f == "strain" || f == "von_mises" || f == "pressure";
       }))
-    particle_tensors(model, particles, strains, stresses);
+    particle_tensors(model, particles,
+                     mixed ? mixed->particle_pressures(d_overlap) : std::vector<double>{}, mixed,
+                     strains, stresses);
   std::vector<double> plastic(owned.size(), 0.0), eroded(owned.size(), 0.0);
   if (op.history().any()) history_values(model, op, d_overlap, stresses, plastic, eroded);
   const auto udim = static_cast<std::size_t>(dim);
@@ -232,6 +275,7 @@ std::vector<std::vector<double>> state_columns(const Model& model, const SolidOp
                             : std::vector<std::vector<double>>{};
   std::vector<std::vector<double>> columns;
   for (const auto& field : fields) {
+    if (is_cell_field(field)) continue;  // cell_values
     const auto count = field_columns(field, dim).size();
     if (field == "generalized_displacement" || field == "generalized_velocity" ||
         field == "material_state") {  // the restart fields: the generalized values themselves
@@ -270,6 +314,8 @@ std::vector<std::vector<double>> state_columns(const Model& model, const SolidOp
           push_tensor(values, strain, dim, c);
         else if (field == "von_mises")
           values.push_back(physics::von_mises(sigma));
+        else if (field == "pressure")
+          values.push_back(-(sigma[0][0] + sigma[1][1] + sigma[2][2]) / 3.0);
         else if (field == "plastic_strain")
           values.push_back(plastic[s]);
         else if (field == "eroded")

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "operators/MixedPressure.hpp"
 #include "operators/SolidOperator.hpp"
 #include "model/Model.hpp"
 
@@ -14,15 +15,28 @@ namespace efg {
 /// Exodus variable names of one field ("displacement" -> displacement_x, _y[, _z]).
 std::vector<std::string> field_columns(const std::string& field, int dimension);
 
-/// All columns of the scene's output fields, in order.
+/// Fields with one value per background cell (Exodus element variables): cell_pressure.
+bool is_cell_field(const std::string& field);
+/// The scene's cell fields, in order.
+std::vector<std::string> cell_columns(const std::vector<std::string>& fields);
+/// The global indices of the cells this rank gives values for (the owned cells of mixed_up
+/// parts), and the values of every cell column there (column after column).
+std::vector<GlobalOrdinal> output_cells(const Model& model);
+std::vector<std::vector<double>> cell_values(const Model& model, const MixedPressure* mixed,
+                                             const Vector& d_overlap);
+
+/// All nodal columns of the scene's output fields, in order.
 std::vector<std::string> output_columns(const std::vector<std::string>& fields, int dimension);
 
 /// Values of every output column at the owned particles (column after column), for generalized
 /// displacements d, velocities v and accelerations a (overlap dofs; v and a may be null: zero).
 /// Reactions are global variables per boundary condition (R_<name>_x, ...), not a nodal field.
+/// `mixed`: the cell pressures of mixed_up parts (their stress is the law's deviatoric part plus
+/// the particle's pressure).
 std::vector<std::vector<double>> state_columns(const Model& model, const SolidOperator& op,
                                                const Vector& d_overlap,
                                                const Vector* v_overlap = nullptr,
-                                               const Vector* a_overlap = nullptr);
+                                               const Vector* a_overlap = nullptr,
+                                               const MixedPressure* mixed = nullptr);
 
 }  // namespace efg

@@ -60,13 +60,16 @@ std::vector<std::string> probe_names(const Scene& scene, int dimension) {
 }
 
 std::vector<double> probe_values(const Model& model, const SolidOperator& op,
-                                 const Vector& d_overlap) {
+                                 const Vector& d_overlap, const MixedPressure* mixed) {
   const int dim = model.mesh.dimension;
   const auto udim = static_cast<std::size_t>(dim);
   const bool with_stress = elastic_parts(model.scene);
   const auto pairs = tensor_indices(dim);
   const std::size_t per_probe = udim + pairs.size() * (with_stress ? 2 : 1);
   std::vector<double> local(per_probe * model.scene.probes.size(), 0.0);
+  const auto pressure = mixed && with_stress && !model.scene.probes.empty()
+                            ? mixed->overlap_pressures(d_overlap)
+                            : std::vector<double>{};
   const auto d = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
   for (std::size_t i = 0; i < model.scene.probes.size(); ++i) {
     const auto& probe = model.scene.probes[i];
@@ -76,10 +79,11 @@ std::vector<double> probe_values(const Model& model, const SolidOperator& op,
     const auto v =
         evaluate_shape_functions(model.parts[part].cloud, probe.point.data(), 1, true,
                                  [&](std::size_t) { return "probe '" + probe.name + "'"; });
-    double u[3] = {0, 0, 0}, g[3][3] = {};
+    double u[3] = {0, 0, 0}, g[3][3] = {}, p_probe = 0;
     for (auto k = v.neighbors.offsets[0]; k < v.neighbors.offsets[1]; ++k) {
       const auto n = static_cast<std::size_t>(
           op.overlap_node(part)[static_cast<std::size_t>(v.neighbors.particles[k])]);
+      if (!pressure.empty()) p_probe += v.phi[k] * pressure[n];
       for (std::size_t a = 0; a < udim; ++a) {
         u[a] += v.phi[k] * d(n * udim + a, 0);
         for (std::size_t b = 0; b < udim; ++b) g[a][b] += d(n * udim + a, 0) * v.grad[k * udim + b];
@@ -99,6 +103,8 @@ std::vector<double> probe_values(const Model& model, const SolidOperator& op,
       stress_at<2>(law.elastic, g, s);
     else
       stress_at<3>(law.elastic, g, s);
+    if (law.mixed())  // law.elastic is the deviatoric part (model/MaterialLaws)
+      for (int a = 0; a < 3; ++a) s[a][a] -= p_probe;
     for (const auto& [a, b] : pairs) *out++ = s[a][b];
   }
   std::vector<double> global(local.size(), 0.0);

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "operators/MixedPressure.hpp"
 #include "operators/SolidOperator.hpp"
 
 namespace efg {
@@ -19,7 +20,9 @@ std::vector<std::string> probe_names(const Scene& scene, int dimension);
 
 /// Values in probe_names order (collective: the rank owning the particle nearest to a probe
 /// evaluates it, every rank gets the result). `d_overlap`: generalized displacements.
+/// Mixed u-p parts (`mixed`): the stress is the law's deviatoric part at the point minus the
+/// pressure interpolated from the particles' (the means of their cells').
 std::vector<double> probe_values(const Model& model, const SolidOperator& op,
-                                 const Vector& d_overlap);
+                                 const Vector& d_overlap, const MixedPressure* mixed = nullptr);
 
 }  // namespace efg

@@ -69,7 +69,7 @@ std::vector<double> RunHistory::values(const ModelOperators& ops, const RunState
                                        const std::vector<std::array<double, 3>>& reactions) const {
   const auto& comm = *model_.maps.owned_dofs->getComm();
   const auto dim = static_cast<std::size_t>(model_.mesh.dimension);
-  const double mine = ops.solid().strain_energy(d_overlap);
+  const double mine = ops.strain_energy(d_overlap);
   double strain_energy = 0;
   Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, mine, Teuchos::outArg(strain_energy));
   std::vector<double> out = {state.dt,
@@ -129,7 +129,7 @@ std::vector<double> RunHistory::values(const ModelOperators& ops, const RunState
     const double count = std::max(1.0, total[2 * dim]);
     for (std::size_t i = 0; i < 2 * dim; ++i) out.push_back(total[i] / count);
   }
-  for (double v : probe_values(model_, ops.solid(), d_overlap)) out.push_back(v);
+  for (double v : probe_values(model_, ops.solid(), d_overlap, ops.mixed())) out.push_back(v);
   return out;
 }
 

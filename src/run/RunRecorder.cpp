@@ -26,8 +26,9 @@ RunRecorder::RunRecorder(const CommPtr& comm, const Model& model, const ModelOpe
       columns_(output_columns(model.scene.output.fields, model.mesh.dimension)),
       history_(model),
       output_(comm, path, model.mesh, model.maps.owned_nodes,
-              OutputLayout{columns_, {}, history_.names()},
-              model.scene.title.empty() ? model.scene.name : model.scene.title),
+              OutputLayout{columns_, cell_columns(model.scene.output.fields), history_.names()},
+              model.scene.title.empty() ? model.scene.name : model.scene.title,
+              output_cells(model)),
       d_overlap_(model.maps.overlap_dofs),
       v_overlap_(model.maps.overlap_dofs),
       a_overlap_(model.maps.overlap_dofs) {
@@ -46,8 +47,8 @@ void RunRecorder::check_kinematics(double time) {
   Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MAX, mine, Teuchos::outArg(largest));
   if (largest > kSmallStrainLimit && !strain_warned_) {
     strain_warned_ = true;
-    Log::warning("strains of " + std::to_string(100 * largest) + " % at t = " +
-                 std::to_string(time) + " in a small-strain part: beyond " +
+    Log::warning("strains of " + std::to_string(100 * largest) +
+                 " % at t = " + std::to_string(time) + " in a small-strain part: beyond " +
                  std::to_string(static_cast<int>(100 * kSmallStrainLimit)) +
                  " % its results are no longer a good approximation; use formulation "
                  "total_lagrangian (model neo_hookean, or j2_plasticity at finite strain)");
@@ -64,14 +65,26 @@ void RunRecorder::write(const RunState& s) {
                          : problem_              ? problem_->reactions(s.d)
                                                  : std::vector<std::array<double, 3>>();
   const auto globals = history_.values(ops_, s, d_overlap_, v_overlap_, reactions);
-  const auto values = state_columns(model_, ops_.solid(), d_overlap_, &v_overlap_, &a_overlap_);
+  const auto values =
+      state_columns(model_, ops_.solid(), d_overlap_, &v_overlap_, &a_overlap_, ops_.mixed());
   ResultsOutput::MultiVector nodal(model_.maps.owned_nodes, columns_.size());
   {
     auto view = nodal.getLocalViewHost(Tpetra::Access::OverwriteAll);
     for (std::size_t c = 0; c < values.size(); ++c)
       for (std::size_t i = 0; i < values[c].size(); ++i) view(i, c) = values[c][i];
   }
-  output_.write(s.time, nodal, globals);
+  if (output_.cell_map()) {
+    const auto cells = cell_values(model_, ops_.mixed(), d_overlap_);
+    ResultsOutput::MultiVector cell(output_.cell_map(), cells.size());
+    {
+      auto view = cell.getLocalViewHost(Tpetra::Access::OverwriteAll);
+      for (std::size_t c = 0; c < cells.size(); ++c)
+        for (std::size_t i = 0; i < cells[c].size(); ++i) view(i, c) = cells[c][i];
+    }
+    output_.write(s.time, nodal, globals, &cell);
+  } else {
+    output_.write(s.time, nodal, globals);
+  }
   last_globals_ = globals;
   if (csv_) {
     *csv_ << std::setprecision(12) << s.time;

@@ -152,8 +152,8 @@ void write_run_report(const CommPtr& comm, const Model& model, const std::string
                       const std::string& results_path, const RunState& state,
                       const std::optional<ErrorNorms>& errors,
                       const std::vector<ReferenceCheck>& checks, double total_seconds,
-                      const std::vector<ImplicitStageReport>& implicit,
-                      const ProbeValues& probes, const std::vector<MemoryPhase>& memory_phases,
+                      const std::vector<ImplicitStageReport>& implicit, const ProbeValues& probes,
+                      const std::vector<MemoryPhase>& memory_phases,
                       const std::vector<std::pair<std::string, ProbeValues>>& probes_by_stage) {
   std::vector<double> local, global;
   for (const auto& phase : report_phases()) {
@@ -195,7 +195,11 @@ void write_run_report(const CommPtr& comm, const Model& model, const std::string
     o << ",\n  \"errors\": {\"exact_solution\": " << quoted(model.scene.exact_solution)
       << ", \"l2_rel_error\": " << number(errors->l2_relative)
       << ", \"energy_rel_error\": " << number(errors->energy_relative)
-      << ", \"max_nodal_error\": " << number(errors->max_nodal) << "}";
+      << ", \"max_nodal_error\": " << number(errors->max_nodal)
+      << (errors->pressure_relative >= 0
+              ? ", \"pressure_rel_error\": " + number(errors->pressure_relative)
+              : std::string())
+      << "}";
   write_implicit_stages(o, implicit);
   auto write_probes = [&](const ProbeValues& values) {
     o << "{";

@@ -37,11 +37,13 @@ std::optional<ErrorNorms> verify(const Model& model, const ModelOperators& ops,
   if (model.scene.exact_solution.empty() || !ops.exact()) return std::nullopt;
   Vector d_overlap(model.maps.overlap_dofs);
   ops.to_overlap(state.d, d_overlap);
-  const auto errors = error_norms(model, ops.solid(), d_overlap, *ops.exact());
+  const auto errors = error_norms(model, ops.solid(), ops.mixed(), d_overlap, *ops.exact());
   std::ostringstream o;
   o << "verification against " << model.scene.exact_solution << ": relative L2 displacement error "
     << errors.l2_relative << ", relative energy-norm error " << errors.energy_relative
     << ", largest nodal displacement error " << errors.max_nodal;
+  if (errors.pressure_relative >= 0)
+    o << ", relative L2 pressure error " << errors.pressure_relative;
   Log::info(o.str());
   return errors;
 }

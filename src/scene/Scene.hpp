@@ -21,6 +21,9 @@ enum class SupportShape { box, sphere };
 enum class SpacingMeasure { cells, neighbors };
 enum class Integration { scni, nodal, gauss };
 enum class Formulation { small_strain, total_lagrangian };
+/// The fields of a part: displacement only, or displacement and a pressure per background cell
+/// (mixed u-p, statically condensed; operators/MixedPressure.hpp).
+enum class PartFormulation { displacement, mixed_up };
 
 /// A scene value that may vary over position and time: a number, or an expression of x, y, z (and
 /// t where the key allows it) compiled once (src/expressions).
@@ -57,6 +60,7 @@ struct PartSpec {
   SectionSpec section;
   double thickness = 1.0;
   bool plane_stress = false;
+  PartFormulation formulation = PartFormulation::displacement;
 };
 
 struct MaterialSpec {

@@ -75,6 +75,11 @@ class Checker {
         fail(d["parts"][p]["plane"], path + ".plane",
              "plane stress is available for small-strain materials only; expected plane: strain "
              "with model neo_hookean");
+      if (m_.dimension == 2 && s_.parts[p].plane_stress &&
+          s_.parts[p].formulation == PartFormulation::mixed_up)
+        fail(d["parts"][p]["plane"], path + ".plane",
+             "a plane-stress part has no incompressibility constraint to relax: expected plane: "
+             "strain with formulation mixed_up, or formulation: displacement");
       const auto& dil = s_.parts[p].section.dilation;
       if (dil.size() > 1)
         require_dimension(d["parts"][p]["section"]["dilation"], path + ".section.dilation",

@@ -9,6 +9,7 @@
 #include "scene/ContactInput.hpp"
 #include "scene/FieldInput.hpp"
 #include "scene/InitialStateInput.hpp"
+#include "scene/PartFormulationCheck.hpp"
 #include "scene/PlasticityInput.hpp"
 #include "scene/SceneNodeSets.hpp"
 #include "scene/SceneSchema.hpp"
@@ -92,6 +93,7 @@ class SceneBuilder {
     s_.output.history = opt_string(r["output"], "history");
     s_.output.history_node_sets = as_vector<std::string>(r["output"]["history_node_sets"]);
     check_output_files(d["output"]);
+    check_part_formulations(s_);
     for (const auto& w : r["rigid_walls"])
       s_.rigid_walls.push_back({w["name"].as<std::string>(), as_vector<double>(w["point"]),
                                 as_vector<double>(w["normal"]), opt_string(w, "node_set"),
@@ -205,6 +207,8 @@ class SceneBuilder {
     part.material = p["material"].as<std::string>();
     part.thickness = p["thickness"].as<double>();
     part.plane_stress = p["plane"].as<std::string>() == "stress";
+    if (p["formulation"].as<std::string>() == "mixed_up")
+      part.formulation = PartFormulation::mixed_up;
     const auto* material = s_.find_material(part.material);
     if (!material) {
       std::string names;

@@ -107,7 +107,14 @@ SpecPtr part_spec() {
           "thickness",
           real("Out-of-plane thickness (2D plane stress and plane strain).", "length").above(0),
           "1")
-      .optional("plane", choice("2D assumption.", {"strain", "stress"}), "strain");
+      .optional("plane", choice("2D assumption.", {"strain", "stress"}), "strain")
+      .optional("formulation",
+                choice("Fields of the part: displacement only, or mixed_up: displacement and a "
+                       "constant pressure per background cell, condensed cell by cell (nearly "
+                       "incompressible solids, nu up to 0.5; linear_elastic, plane strain or 3D). "
+                       "See docs/mixed.md.",
+                       {"displacement", "mixed_up"}),
+                "displacement");
 }
 
 SpecPtr material_spec() {
@@ -412,10 +419,15 @@ SpecPtr output_spec() {
           "fields",
           string_list("Nodal (particle) fields written at each record. generalized_displacement, "
                       "generalized_velocity and material_state (the history of path-dependent "
-                      "laws) are what initial_state reads back to restart from a record.")
+                      "laws) are what initial_state reads back to restart from a record. "
+                      "pressure: -tr(sigma)/3, compression positive (mixed_up parts: the mean "
+                      "of the cell pressures around the particle). cell_pressure: the condensed "
+                      "pressure of every background cell of the mixed_up parts (an element "
+                      "field; 0 in other cells).")
               .choices({"displacement", "velocity", "acceleration", "stress", "strain", "von_mises",
-                        "plastic_strain", "eroded", "nodal_volume", "owner_rank",
-                        "generalized_displacement", "generalized_velocity", "material_state"}),
+                        "pressure", "cell_pressure", "plastic_strain", "eroded", "nodal_volume",
+                        "owner_rank", "generalized_displacement", "generalized_velocity",
+                        "material_state"}),
           "[displacement, nodal_volume, owner_rank]")
       .optional("history",
                 string("CSV file, beside the results file (relative to its folder), of the global "

@@ -18,6 +18,7 @@ namespace {
 // Gauss points (order 5) of the owned cells of a part's blocks, with weights x thickness.
 struct PartQuadrature {
   std::vector<double> x, w;
+  std::vector<std::size_t> cell;  ///< global cell of each point
 };
 
 PartQuadrature part_quadrature(const Model& model, const PartDiscretization& part) {
@@ -25,7 +26,10 @@ PartQuadrature part_quadrature(const Model& model, const PartDiscretization& par
   const auto udim = static_cast<std::size_t>(mesh.dimension);
   const double thickness = mesh.dimension == 2 ? part.part->thickness : 1.0;
   PartQuadrature out;
+  std::size_t global_cell = 0;
   for (const auto& b : mesh.blocks) {
+    const std::size_t first_cell = global_cell;
+    global_cell += b.cell_count();
     if (std::find(part.part->blocks.begin(), part.part->blocks.end(), b.name) ==
         part.part->blocks.end())
       continue;
@@ -45,6 +49,7 @@ PartQuadrature part_quadrature(const Model& model, const PartDiscretization& par
         const double det = map_to_cell(b.type, cx.data(), &rule.xi[q * udim], point);
         out.x.insert(out.x.end(), point, point + udim);
         out.w.push_back(rule.weight[q] * det * thickness);
+        out.cell.push_back(first_cell + c);
       }
     }
   }
@@ -73,16 +78,23 @@ double largest_nodal_error(
 
 }  // namespace
 
-ErrorNorms error_norms(const Model& model, const SolidOperator& op, const Vector& d_overlap,
-                       const ExactSolution& exact) {
+ErrorNorms error_norms(const Model& model, const SolidOperator& op, const MixedPressure* mixed,
+                       const Vector& d_overlap, const ExactSolution& exact) {
   const int dim = model.mesh.dimension;
   const auto udim = static_cast<std::size_t>(dim);
   const auto d = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
-  // sums: |e|^2, |u|^2, a(e,e), a(u,u)
-  double local[4] = {0, 0, 0, 0}, max_nodal = 0;
+  // sums: |e|^2, |u|^2, a(e,e), a(u,u), |p^h - p|^2, |p|^2
+  double local[6] = {0, 0, 0, 0, 0, 0}, max_nodal = 0;
   for (std::size_t p = 0; p < model.parts.size(); ++p) {
     const auto& part = model.parts[p];
-    const auto m = solid_material(*model.scene.find_material(part.part->material), *part.part, dim);
+    auto m = solid_material(*model.scene.find_material(part.part->material), *part.part, dim);
+    // Mixed parts: the deviatoric energy at the points (lambda -> -2 mu / 3, as the law the
+    // operator integrates) and the pressure term per cell.
+    const bool is_mixed = mixed && mixed->mixed(p);
+    const double kappa = is_mixed ? mixed->bulk_modulus(p) : 0.0;
+    if (is_mixed) m.lambda = -2.0 * m.mu / 3.0;
+    const auto theta_c = is_mixed ? mixed->cell_dilatations(p, d_overlap) : std::vector<double>{};
+    const auto& cells = part.cells.cell;  // ascending global cell order, as the quadrature's
     const auto quadrature = part_quadrature(model, part);
     const auto& x = quadrature.x;
     const auto& w = quadrature.w;
@@ -123,17 +135,31 @@ ErrorNorms error_norms(const Model& model, const SolidOperator& op, const Vector
       const double c = scale.empty() ? 1.0 : scale[q];
       local[2] += c * w[q] * energy(e);
       local[3] += c * w[q] * energy(g);
+      if (is_mixed) {
+        const auto at = std::lower_bound(cells.begin(), cells.end(), quadrature.cell[q]);
+        if (at == cells.end() || *at != quadrature.cell[q])
+          throw std::logic_error("error norms: a cell without its mixed u-p row");
+        double theta = 0;
+        for (std::size_t i = 0; i < udim; ++i) theta += g[i][i];
+        const double ph = -kappa * theta_c[static_cast<std::size_t>(at - cells.begin())],
+                     pe = -kappa * theta;
+        local[2] += w[q] * (ph - pe) * (ph - pe) / kappa;
+        local[3] += w[q] * pe * pe / kappa;
+        local[4] += w[q] * (ph - pe) * (ph - pe);
+        local[5] += w[q] * pe * pe;
+      }
     }
     max_nodal = std::max(max_nodal, largest_nodal_error(part, nodes, exact, udim, d));
   }
   const auto& comm = *model.maps.owned_dofs->getComm();
-  double global[4] = {0, 0, 0, 0}, max_all = 0;
-  Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, 4, local, global);
+  double global[6] = {0, 0, 0, 0, 0, 0}, max_all = 0;
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, 6, local, global);
   Teuchos::reduceAll(comm, Teuchos::REDUCE_MAX, max_nodal, Teuchos::outArg(max_all));
   ErrorNorms out;
   out.l2_relative = std::sqrt(global[0] / global[1]);
   out.energy_relative = std::sqrt(global[2] / global[3]);
   out.max_nodal = max_all;
+  if (mixed) out.pressure_relative = global[5] > 0 ? std::sqrt(global[4] / global[5]) : 0.0;
   return out;
 }
 

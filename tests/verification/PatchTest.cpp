@@ -13,15 +13,17 @@ namespace efg {
 namespace {
 
 std::string patch_scene(int dim, const char* element, const char* method,
-                        const std::string& extra_bc = "") {
+                        const std::string& extra_bc = "", const char* nu = "0.3",
+                        const char* formulation = "displacement") {
   std::ostringstream s;
   s << "mesh:\n  generate: {element: " << element
     << ", lower: " << (dim == 2 ? "[0, 0]" : "[0, 0, 0]")
     << ", upper: " << (dim == 2 ? "[2, 1]" : "[2, 1, 1]")
     << ", cells: " << (dim == 2 ? "[8, 4]" : "[4, 2, 2]") << ", perturbation: 0.3, seed: 5}\n"
-    << "parts:\n  - {name: body, blocks: [block_1], material: m, section: {dilation: 1.8}}\n"
+    << "parts:\n  - {name: body, blocks: [block_1], material: m, section: {dilation: 1.8}, "
+    << "formulation: " << formulation << "}\n"
     << "materials:\n  - {name: m, model: linear_elastic, youngs_modulus: 200, poissons_ratio: "
-       "0.3}\n"
+    << nu << "}\n"
     << "boundary_conditions:\n";
   const char* comps = dim == 2 ? "[x, y]" : "[x, y, z]";
   for (const char* set : {"xmin", "xmax", "ymin", "ymax", "zmin", "zmax"}) {
@@ -45,8 +47,11 @@ class Patch : public ::testing::TestWithParam<Case> {};
 TEST_P(Patch, LinearFieldToRoundOff) {
   const auto c = GetParam();
   auto s = test::solve_static(patch_scene(c.dim, c.element, c.method));
+  // A displacement part builds no pressure data at all (cells, operator).
+  EXPECT_EQ(s.problem->operators().mixed(), nullptr);
+  EXPECT_EQ(s.model->parts[0].cells.size(), 0u);
   const auto exact = make_exact_solution(s.model->scene, c.dim);
-  const auto e = error_norms(*s.model, s.problem->solid(), *s.d_overlap, exact);
+  const auto e = error_norms(*s.model, s.problem->solid(), nullptr, *s.d_overlap, exact);
   // The field's size is about 1e-3 x 2: nodal errors relative to it, norms already relative.
   EXPECT_LT(e.max_nodal / 2e-3, 1e-10) << c.element << " " << c.method;
   EXPECT_LT(e.l2_relative, 1e-10);
@@ -61,12 +66,39 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{3, "wedge6", "nitsche"}),
     [](const auto& p) { return std::string(p.param.element) + "_" + p.param.method; });
 
+// Mixed u-p at nu = 0.4999 (operators/MixedPressure): the cell dilatations come from each cell's
+// boundary, so a linear field's is exact and a constant pressure balances to round-off; the
+// boundary points' tractions carry the cell pressure (transformation and Nitsche).
+class MixedPatch : public ::testing::TestWithParam<Case> {};
+
+TEST_P(MixedPatch, LinearFieldToRoundOffNearlyIncompressible) {
+  const auto c = GetParam();
+  auto s = test::solve_static(patch_scene(c.dim, c.element, c.method, "", "0.4999", "mixed_up"));
+  ASSERT_NE(s.problem->operators().mixed(), nullptr);
+  const auto exact = make_exact_solution(s.model->scene, c.dim);
+  const auto e = error_norms(*s.model, s.problem->solid(), s.problem->operators().mixed(),
+                             *s.d_overlap, exact);
+  EXPECT_LT(e.max_nodal / 2e-3, 1e-10) << c.element << " " << c.method;
+  EXPECT_LT(e.l2_relative, 1e-10);
+  EXPECT_LT(e.energy_relative, 1e-10);
+  EXPECT_LT(e.pressure_relative, 1e-9);  // relative to the exact (constant) pressure
+}
+
+INSTANTIATE_TEST_SUITE_P(Methods, MixedPatch,
+                         ::testing::Values(Case{2, "quad4", "transformation"},
+                                           Case{2, "tri3", "transformation"},
+                                           Case{3, "hex8", "transformation"},
+                                           Case{2, "quad4", "nitsche"}, Case{3, "tet4", "nitsche"}),
+                         [](const auto& p) {
+                           return std::string(p.param.element) + "_" + p.param.method;
+                         });
+
 TEST(PatchPenalty, NotConsistentButErrorShrinksWithAlpha) {
   std::vector<double> errors;
   for (double alpha : {1e3, 1e7}) {
     auto s = test::solve_static(
         patch_scene(2, "quad4", "penalty", ", penalty: " + std::to_string(alpha)));
-    errors.push_back(error_norms(*s.model, s.problem->solid(), *s.d_overlap,
+    errors.push_back(error_norms(*s.model, s.problem->solid(), nullptr, *s.d_overlap,
                                  make_exact_solution(s.model->scene, 2))
                          .l2_relative);
   }

@@ -30,7 +30,7 @@ std::vector<Level> series(double perturbation, const char* method, const char* b
     auto s = test::solve_static(
         test::beam_scene(4 * ny, ny, perturbation, method, basis, "scni", dilation));
     const auto exact = make_exact_solution(s.model->scene, 2);
-    const auto e = error_norms(*s.model, s.problem->solid(), *s.d_overlap, exact);
+    const auto e = error_norms(*s.model, s.problem->solid(), nullptr, *s.d_overlap, exact);
     const double tip_point[3] = {48.0, 0.0, 0.0};
     const auto tip = displacement_at(*s.model, s.problem->solid(), *s.d_overlap, tip_point);
     levels.push_back({12.0 / ny, e.l2_relative, e.energy_relative, tip[1]});

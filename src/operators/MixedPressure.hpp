@@ -1,0 +1,77 @@
+// Mixed u-p for nearly incompressible solids: a constant pressure per background cell,
+// condensed cell by cell (the cell pressure is local, so its equation is solved on the cell).
+//
+// Small strain, Herrmann's functional with the deviatoric/volumetric split of the linear elastic
+// law (Hughes, "The Finite Element Method", 2000, sec. 4.4; Simo & Hughes 1998, sec. 4.2):
+//
+//   Pi(u, p) = integral mu dev eps : dev eps + integral p div u - integral p^2 / (2 kappa) - W_ext,
+//
+// with u^h meshfree and p^h constant on each background cell c. Stationarity in p_c gives
+// p_c = kappa theta_c, theta_c = b_c . d the cell's average dilatation (discretization/
+// CellSmoothing), so the condensed internal force and tangent are
+//
+//   f_I += V_c kappa theta_c b_cI,      K_IJ += V_c kappa b_cI (x) b_cJ,
+//
+// beside the deviatoric part, which the solid operator integrates at its own points with the
+// law's deviatoric constants (model/MaterialLaws: lambda = -2 mu / 3). One constraint per cell
+// (not one per integration point) is what relieves volumetric locking; the cell's dilatation is
+// the divergence theorem on its boundary, so constant pressures pass the patch test. The mean
+// stress of the part is kappa theta_c; the output pressure is its negative (compression
+// positive, as LS-DYNA reports it). Parts without formulation mixed_up have no entry here, and
+// a model without any builds no MixedPressure at all (ModelOperators::mixed() is null).
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "operators/CouplingGraph.hpp"
+#include "operators/SolidOperator.hpp"
+
+namespace efg {
+
+class MixedPressure {
+ public:
+  /// Null when no part of the model is mixed_up.
+  static std::unique_ptr<MixedPressure> build(const Model& model, const SolidOperator& solid);
+  MixedPressure(const Model& model, const SolidOperator& solid);
+
+  /// Couplings of every cell (all pairs of the particles its average reaches).
+  void add_couplings(CouplingGraph& graph) const;
+  /// f += the cells' volumetric forces at d (overlap vectors).
+  void add_internal_force(const Vector& d_overlap, Vector& f_overlap) const;
+  /// K += the cells' volumetric stiffness (independent of d: small strain).
+  void add_tangent(FEMatrix& K) const;
+  /// y += K_vol x.
+  void apply(const Vector& x_overlap, Vector& y_overlap) const;
+  /// Volumetric energy of this rank's cells, sum V_c kappa theta_c^2 / 2.
+  double strain_energy(const Vector& d_overlap) const;
+
+  /// Whether model part p carries a pressure, and its bulk modulus.
+  bool mixed(std::size_t part) const { return index_[part] >= 0; }
+  double bulk_modulus(std::size_t part) const;
+  /// theta_c of every owned cell of model part p (mixed), in CellAverages order.
+  std::vector<double> cell_dilatations(std::size_t part, const Vector& d_overlap) const;
+  /// Pressure at every owned particle (overlap order of the owned nodes; 0 for particles of no
+  /// mixed part): the volume-weighted mean of the pressures of the cells around it (collective).
+  std::vector<double> particle_pressures(const Vector& d_overlap) const;
+  /// The same on the overlap nodes (owned then ghost particles), for interpolation with the
+  /// shape functions of a point (probes): collective.
+  std::vector<double> overlap_pressures(const Vector& d_overlap) const;
+
+ private:
+  struct Part {
+    std::size_t model_part = 0;
+    double kappa = 0;
+    std::vector<double> volume;  // V_c x thickness (2D)
+    std::vector<std::size_t> offsets;
+    std::vector<int> node;     // overlap node of each entry
+    std::vector<double> bbar;  // dim per entry
+    std::vector<std::size_t> cell;
+  };
+  const Model& model_;
+  int dim_;
+  std::vector<int> index_;  // model part -> parts_ entry, -1 when not mixed
+  std::vector<Part> parts_;
+};
+
+}  // namespace efg
