@@ -47,7 +47,7 @@ ExplicitDriver::ExplicitDriver(const ModelOperators& ops, const StageSpec& stage
       inverse_mass_(mass_.getMap()),
       contact_(RigidContact::wanted(ops.model().scene)
                    ? std::make_unique<RigidContact>(ops, mass_, stage.name)
-                                                       : nullptr),
+                   : nullptr),
       motion_(ops.model(), stage.name),
       supports_(ops, stage.name),
       stable_(ops, mass_, largest_wall_penalty(ops.model().scene),
@@ -63,6 +63,8 @@ ExplicitDriver::ExplicitDriver(const ModelOperators& ops, const StageSpec& stage
       f_int_(mass_.getMap()),
       wall_overlap_(ops.model().maps.overlap_dofs),
       d_overlap_(ops.model().maps.overlap_dofs),
+      f_viscous_(mass_.getMap()),
+      f_viscous_old_(mass_.getMap()),
       f_support_(mass_.getMap()),
       f_support_old_(mass_.getMap()),
       delta_(mass_.getMap()),
@@ -74,9 +76,12 @@ ExplicitDriver::ExplicitDriver(const ModelOperators& ops, const StageSpec& stage
 }
 
 std::vector<double> ExplicitDriver::acceleration(double time, double wall_dt, const Vector& d,
-                                                 Vector& a) {
+                                                 const Vector& v, Vector& a) {
   ops_.loads().assemble(curve_factor(ops_.model().scene, time, 1.0, stage_.name), f_ext_);
   ops_.internal_force(d, f_int_);
+  if (ops_.mixed())
+    ops_.bulk_viscosity(v, stage_.settings["bulk_viscosity_linear"].as<double>(),
+                        stage_.settings["bulk_viscosity_quadratic"].as<double>(), f_viscous_);
   if (supports_.active()) {  // f_int_ carries the weak supports' resistance from here on
     supports_.set_time(time);
     f_int_.update(1.0, supports_.resistance(d), 1.0);
@@ -92,6 +97,7 @@ std::vector<double> ExplicitDriver::acceleration(double time, double wall_dt, co
   }
   a.update(1.0, f_ext_, -1.0, f_int_, 0.0);
   a.update(1.0, f_wall_, 1.0);
+  if (ops_.mixed()) a.update(-1.0, f_viscous_, 1.0);
   a.elementWiseMultiply(1.0, inverse_mass_, a, 0.0);
   return wall_forces;
 }
@@ -158,6 +164,9 @@ void ExplicitDriver::account_energy(RunState& state, const Vector& delta_d) cons
       0.5 * (reproducible_dot(f_support_old_, delta_d) + reproducible_dot(f_support_, delta_d));
   state.wall_work +=
       0.5 * (reproducible_dot(f_wall_old_, delta_d) + reproducible_dot(f_wall_, delta_d));
+  if (ops_.mixed())
+    state.damping_work +=
+        0.5 * (reproducible_dot(f_viscous_old_, delta_d) + reproducible_dot(f_viscous_, delta_d));
 }
 
 ExplicitDriver::StepPlan ExplicitDriver::plan_steps(const Vector& d, double start) {
@@ -225,7 +234,7 @@ void ExplicitDriver::start(RunState& state, double dt) {
     ops_.to_overlap(state.d, d_overlap_);
     contact_->begin(state.bodies, state.time, d_overlap_);
   }
-  state.wall_forces = acceleration(state.time, dt, state.d, state.a);
+  state.wall_forces = acceleration(state.time, dt, state.d, state.v, state.a);
   if (contact_) state.bodies = contact_->states();
   support_forces(state.a);
   const Vector v_start(state.v, Teuchos::Copy);
@@ -267,6 +276,7 @@ void ExplicitDriver::advance(RunState& state, double step_dt, long long step,
   Tpetra::deep_copy(f_ext_old_, f_ext_);
   Tpetra::deep_copy(f_wall_old_, f_wall_);
   Tpetra::deep_copy(f_support_old_, f_support_);
+  Tpetra::deep_copy(f_viscous_old_, f_viscous_);
   ops_.solid().history().set_step_time(step_dt);
   if (contact_) contact_->move(state.time, step_dt);
   // An inverted point (det F <= 0) may show on one rank only: agree on it collectively, write
@@ -275,7 +285,7 @@ void ExplicitDriver::advance(RunState& state, double step_dt, long long step,
     run_collectively(mass_.getMap()->getComm(), [&] {
       // The walls keep the stage's stiffness on a shortened last step: p m / step_dt^2 would
       // multiply the contact force of the same penetration (4.7x measured on the bar impact).
-      state.wall_forces = acceleration(state.time + step_dt, wall_dt_, state.d, state.a);
+      state.wall_forces = acceleration(state.time + step_dt, wall_dt_, state.d, v_half_, state.a);
     });
   } catch (const std::exception& e) {
     const bool here = dynamic_cast<const NumericalError*>(&e) != nullptr;
@@ -406,7 +416,8 @@ ExplicitSummary ExplicitDriver::run(RunState& state, const StateOutput& output, 
     progress.update(state.time - start_time);
   }
   progress.finish();
-  if (internal_integral > 0) summary.kinetic_to_internal_mean = kinetic_integral / internal_integral;
+  if (internal_integral > 0)
+    summary.kinetic_to_internal_mean = kinetic_integral / internal_integral;
   if (state.internal > 0) summary.kinetic_to_internal_end = state.kinetic / state.internal;
   return summary;
 }

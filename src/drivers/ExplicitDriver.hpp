@@ -53,7 +53,8 @@ class ExplicitDriver {
   /// boundary terms; returns the wall forces. Exposed for tests. `wall_dt` sets the walls' penalty
   /// stiffness p m / wall_dt^2 (contact/PenaltyContact): the stage's step, not a shortened last
   /// step.
-  std::vector<double> acceleration(double time, double wall_dt, const Vector& d, Vector& a);
+  std::vector<double> acceleration(double time, double wall_dt, const Vector& d, const Vector& v,
+                                   Vector& a);
 
  private:
   bool finite(const RunState& state) const;  // collective
@@ -81,6 +82,7 @@ class ExplicitDriver {
   Vector f_ext_, f_ext_old_, f_wall_, f_wall_old_, f_int_, wall_overlap_, d_overlap_;
   void refuse_endless(double span, double dt, double dt_crit) const;
   static constexpr double kMaxSteps = 1e10;  ///< a stage needing more steps is refused
+  Vector f_viscous_, f_viscous_old_;         ///< bulk viscosity of mixed u-p cells (at v_n+1/2)
   Vector f_support_, f_support_old_;  ///< forces of the prescribed motions (their work is external)
   Vector delta_, v_half_, previous_d_, previous_v_, previous_a_;  ///< one step's scratch
 };

@@ -23,6 +23,9 @@ struct RunState {
   // Energy account (explicit): E_kin + E_int = E_0 + W_ext + W_wall when balanced (E_kin with
   // the free rigid bodies', W_wall the work of walls and contacts on particles and free bodies).
   double kinetic = 0, internal = 0, external_work = 0, wall_work = 0, initial_energy = 0;
+  /// Work dissipated by the bulk viscosity of mixed u-p cells (explicit): E_kin + E_int + D =
+  /// E_0 + W_ext + W_wall.
+  double damping_work = 0;
   bool energy_started = false;
   std::vector<double> wall_forces;
   /// Rigid bodies (scene order): displacement, velocity and contact force, carried across stages.
@@ -35,9 +38,10 @@ struct RunState {
   std::vector<std::array<double, 3>> reactions;
   bool reactions_from_driver = false;
 
-  /// |E_kin + E_int - E_0 - W_ext - W_wall| relative to the largest energy involved.
+  /// |E_kin + E_int + D - E_0 - W_ext - W_wall| relative to the largest energy involved.
   double balance_error() const {
-    const double total = kinetic + internal - initial_energy - external_work - wall_work;
+    const double total =
+        kinetic + internal + damping_work - initial_energy - external_work - wall_work;
     const double scale =
         std::max({std::abs(kinetic), std::abs(internal),
                   std::abs(initial_energy) + std::abs(external_work) + std::abs(wall_work)});

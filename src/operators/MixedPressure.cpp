@@ -5,6 +5,7 @@
 #include <Tpetra_Import.hpp>
 #include <Tpetra_MultiVector.hpp>
 
+#include <cmath>
 #include <stdexcept>
 
 namespace efg {
@@ -42,6 +43,10 @@ MixedPressure::MixedPressure(const Model& model, const SolidOperator& solid)
     Part p;
     p.model_part = m;
     p.kappa = law.bulk_modulus;
+    if (const auto rho = model.scene.find_material(d.part->material)->density) {
+      p.density = *rho;
+      p.wave_speed = std::sqrt((p.kappa + 4.0 * law.elastic.mu / 3.0) / p.density);
+    }
     const double thickness = dim_ == 2 ? d.part->thickness : 1.0;
     for (double v : d.cells.volume) p.volume.push_back(v * thickness);
     p.offsets = d.cells.gradients.offsets;
@@ -109,6 +114,27 @@ void MixedPressure::add_tangent(FEMatrix& K) const {
                               static_cast<int>(cols.size()), vals.data(), false, false);
         }
     }
+}
+
+void MixedPressure::add_bulk_viscosity(const Vector& v_overlap, double linear, double quadratic,
+                                       Vector& f_overlap) const {
+  const auto v = v_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
+  auto f = f_overlap.getLocalViewHost(Tpetra::Access::ReadWrite);
+  const auto udim = static_cast<std::size_t>(dim_);
+  for (const auto& p : parts_) {
+    const double thickness = dim_ == 2 ? model_.parts[p.model_part].part->thickness : 1.0;
+    for (std::size_t c = 0; c < p.volume.size(); ++c) {
+      const double rate = cell_dilatation(p, c, v, dim_);
+      if (!(rate < 0)) continue;  // expanding cells carry none
+      const double l = std::pow(p.volume[c] / thickness, 1.0 / dim_);
+      const double q = p.density * l * (quadratic * l * rate * rate - linear * p.wave_speed * rate);
+      const double s = -p.volume[c] * q;
+      for (auto k = p.offsets[c]; k < p.offsets[c + 1]; ++k) {
+        const auto n = static_cast<std::size_t>(p.node[k]);
+        for (std::size_t i = 0; i < udim; ++i) f(n * udim + i, 0) += s * p.bbar[k * udim + i];
+      }
+    }
+  }
 }
 
 double MixedPressure::strain_energy(const Vector& d_overlap) const {

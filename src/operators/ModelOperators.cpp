@@ -41,6 +41,16 @@ void ModelOperators::add_couplings(CouplingGraph& graph) const {
   if (mixed_) mixed_->add_couplings(graph);
 }
 
+void ModelOperators::bulk_viscosity(const Vector& v_owned, double linear, double quadratic,
+                                    Vector& f_owned) const {
+  f_owned.putScalar(0.0);
+  if (!mixed_) return;
+  to_overlap(v_owned, d_overlap_);
+  f_overlap_.putScalar(0.0);
+  mixed_->add_bulk_viscosity(d_overlap_, linear, quadratic, f_overlap_);
+  to_owned(f_overlap_, f_owned);
+}
+
 double ModelOperators::strain_energy(const Vector& d_overlap) const {
   return solid_.strain_energy(d_overlap) + (mixed_ ? mixed_->strain_energy(d_overlap) : 0.0);
 }

@@ -41,6 +41,9 @@ class ModelOperators {
   /// K += K_int(d) (assembly mode), and the couplings it needs.
   void add_tangent(const Vector& d_overlap, FEMatrix& K) const;
   void add_couplings(CouplingGraph& graph) const;
+  /// f_owned = the bulk viscosity forces at velocities v (owned; zero without mixed parts).
+  void bulk_viscosity(const Vector& v_owned, double linear, double quadratic,
+                      Vector& f_owned) const;
   /// Stored energy of this rank's points and cells (sum over ranks for the total).
   double strain_energy(const Vector& d_overlap) const;
 

@@ -12,6 +12,12 @@ std::string short_name(const std::string& prefix, const std::string& name,
                        const std::string& suffix) {
   return (prefix + name).substr(0, 32 - suffix.size()) + suffix;
 }
+bool has_mixed_parts(const Scene& scene) {
+  for (const auto& p : scene.parts)
+    if (p.formulation == PartFormulation::mixed_up) return true;
+  return false;
+}
+
 bool erodes(const Scene& scene) {
   for (const auto& m : scene.materials)
     if (m.constants.count("failure_strain")) return true;
@@ -26,6 +32,8 @@ std::vector<std::string> history_names(const Scene& scene, int dimension) {
   // Erosion: the energy of failed particles (part of internal_energy), only when a material can
   // erode (the columns of other scenes stay as they were).
   if (erodes(scene)) names.push_back("eroded_energy");
+  // Mixed u-p cells: the work their bulk viscosity dissipated (explicit stages; 0 otherwise).
+  if (has_mixed_parts(scene)) names.push_back("bulk_viscosity_work");
   const std::string axes = "xyz";
   const auto dim = static_cast<std::size_t>(dimension);
   for (const auto& w : scene.rigid_walls) names.push_back(short_name("wall_", w.name, "_force"));
@@ -86,6 +94,7 @@ std::vector<double> RunHistory::values(const ModelOperators& ops, const RunState
                        Teuchos::outArg(eroded));
     out.push_back(eroded);
   }
+  if (has_mixed_parts(model_.scene)) out.push_back(state.damping_work);
   for (std::size_t w = 0; w < model_.scene.rigid_walls.size(); ++w)
     out.push_back(w < state.wall_forces.size() ? state.wall_forces[w] : 0.0);
   if (!model_.scene.rigid_bodies.empty())

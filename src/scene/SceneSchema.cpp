@@ -374,6 +374,20 @@ SpecPtr stage_spec() {
                              "-")
                             .at_least(1),
                         "1"),
+           optional_key("bulk_viscosity_linear",
+                        real("Linear bulk viscosity coefficient (LS-DYNA's Q2) of the cells of "
+                             "mixed_up parts: q = rho l (Q1 l theta'^2 - Q2 c theta') on "
+                             "compressing cells; 0 turns it off. Parts without mixed_up have "
+                             "none (docs/mixed.md).",
+                             "-")
+                            .at_least(0),
+                        "0.06"),
+           optional_key("bulk_viscosity_quadratic",
+                        real("Quadratic bulk viscosity coefficient (LS-DYNA's Q1) of the cells "
+                             "of mixed_up parts.",
+                             "-")
+                            .at_least(0),
+                        "1.5"),
            optional_key("dt",
                         real("Fixed time step instead of the stable estimate.", "time").above(0)),
            optional_key(

@@ -105,14 +105,14 @@ TEST(Explicit, InternalForceIsTheImplicitOne) {
   StaticProblem problem(ops);
   ExplicitDriver driver(*ops, model.scene.stages.front());
   const auto& map = model.maps.owned_dofs;
-  Vector d(map), v(map), plus(map), minus(map), a_plus(map), a_minus(map), Kv(map);
+  Vector d(map), v(map), plus(map), minus(map), a_plus(map), a_minus(map), Kv(map), still(map);
   d.randomize(-0.05, 0.05);
   v.randomize(-1.0, 1.0);
   const double e = 1e-6;
   plus.update(1.0, d, e, v, 0.0);
   minus.update(1.0, d, -e, v, 0.0);
-  driver.acceleration(0.0, 1.0, plus, a_plus);  // M^-1 (0 - f_int(d + e v))
-  driver.acceleration(0.0, 1.0, minus, a_minus);
+  driver.acceleration(0.0, 1.0, plus, still, a_plus);  // M^-1 (0 - f_int(d + e v))
+  driver.acceleration(0.0, 1.0, minus, still, a_minus);
   a_plus.update(-1.0, a_minus, 1.0);
   a_plus.elementWiseMultiply(-0.5 / e, driver.mass(), a_plus, 0.0);  // (f(d+ev) - f(d-ev)) / 2e
   auto K = problem.create_matrix();
