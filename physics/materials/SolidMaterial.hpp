@@ -14,12 +14,15 @@
 
 #include <math.h>  // log, sqrt: callable in host and device code
 
+#include "materials/IsochoricNeoHookean.hpp"
 #include "tensor/Inline.hpp"
 #include "tensor/Tensor.hpp"
 
 namespace efg::physics {
 
-enum class MaterialKind : int { linear_elastic = 0, neo_hookean = 1 };
+/// isochoric_neo_hookean: the deviatoric part of neo_hookean for mixed u-p parts
+/// (materials/IsochoricNeoHookean.hpp; lambda unused, the cell pressure carries the volume).
+enum class MaterialKind : int { linear_elastic = 0, neo_hookean = 1, isochoric_neo_hookean = 2 };
 
 struct SolidMaterial {
   MaterialKind kind = MaterialKind::linear_elastic;
@@ -42,6 +45,8 @@ EFG_PHYSICS_FUNCTION SolidMaterial with_moduli_scaled(SolidMaterial m, double s)
 template <int Dim>
 EFG_PHYSICS_FUNCTION bool stress(const SolidMaterial& m, const double (&H)[Dim][Dim],
                                  double (&P)[Dim][Dim], double (*A)[Dim][Dim][Dim] = nullptr) {
+  if (m.kind == MaterialKind::isochoric_neo_hookean)
+    return isochoric_neo_hookean_stress<Dim>(m.mu, H, P, A);
   if (m.kind == MaterialKind::linear_elastic) {
     double tr = 0;
     for (int i = 0; i < Dim; ++i) tr += H[i][i];
@@ -88,6 +93,8 @@ EFG_PHYSICS_FUNCTION bool stress_and_tangent(const SolidMaterial& m, const doubl
 /// Strain energy per unit reference volume (0 for an inverted point).
 template <int Dim>
 EFG_PHYSICS_FUNCTION double strain_energy(const SolidMaterial& m, const double (&H)[Dim][Dim]) {
+  if (m.kind == MaterialKind::isochoric_neo_hookean)
+    return isochoric_neo_hookean_energy<Dim>(m.mu, H);
   if (m.kind == MaterialKind::linear_elastic) {
     double tr = 0, ee = 0;
     for (int i = 0; i < Dim; ++i) tr += H[i][i];
@@ -114,6 +121,10 @@ EFG_PHYSICS_FUNCTION double strain_energy(const SolidMaterial& m, const double (
 template <int Dim>
 EFG_PHYSICS_FUNCTION void cauchy_stress(const SolidMaterial& m, const double (&H)[Dim][Dim],
                                         double (&sigma)[3][3]) {
+  if (m.kind == MaterialKind::isochoric_neo_hookean) {
+    isochoric_neo_hookean_cauchy<Dim>(m.mu, H, sigma);
+    return;
+  }
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) sigma[i][j] = 0.0;
   if (m.kind == MaterialKind::linear_elastic) {

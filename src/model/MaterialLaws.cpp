@@ -64,10 +64,13 @@ MaterialLaw material_law(const Scene& scene, const PartSpec& part, int dimension
     law.j2 = j2_parameters(scene, material, part, dimension);
   }
   if (part.formulation == PartFormulation::mixed_up) {
-    // scene/PartFormulationCheck: linear elastic, one modulus, plane strain or 3D (the 3D
-    // constants), so kappa = lambda + 2 mu / 3.
+    // scene/PartFormulationCheck: linear elastic or neo-Hookean, one modulus, plane strain or 3D
+    // (the 3D constants), so kappa = lambda + 2 mu / 3. The points keep the deviatoric law.
     law.bulk_modulus = law.elastic.lambda + 2.0 * law.elastic.mu / 3.0;
-    law.elastic.lambda = -2.0 * law.elastic.mu / 3.0;
+    if (law.elastic.kind == physics::MaterialKind::neo_hookean)
+      law.elastic.kind = physics::MaterialKind::isochoric_neo_hookean;
+    else
+      law.elastic.lambda = -2.0 * law.elastic.mu / 3.0;
   }
   return law;
 }

@@ -116,6 +116,7 @@ class EssentialConditions {
     // theta_c = sum bbar . d (operators/MixedPressure); bbar: dim per entry of `nodes` (which then
     // also hold the cell's particles, with phi = grad = 0 where the point does not reach).
     double kappa = 0;
+    bool finite_pressure = false;  // total Lagrangian: kappa ln J F^-T of the cell's smoothed F
     std::vector<double> bbar;
   };
   /// A boundary point evaluated at d: the gap u^h - u_bar on its constrained components, P n dA,

@@ -6,7 +6,11 @@
 #include <Tpetra_MultiVector.hpp>
 
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
+
+#include "core/Errors.hpp"
+#include "tensor/Tensor.hpp"
 
 namespace efg {
 namespace {
@@ -23,7 +27,78 @@ double cell_dilatation(const Part& p, std::size_t c, const View& u, int dim) {
   return theta;
 }
 
+// The cell's volumetric measure at d and its gradient rows g (dim per entry of the cell's row):
+//   small strain: m = theta_c = b_c . d,  g_I = b_cI;
+//   finite strain: F_c = I + sum_I d_I (x) b_cI (the cell-smoothed deformation gradient,
+//   plane strain F_33 = 1), J_c = det F_c, m = ln J_c, g_I = F_c^-T b_cI  (d ln J / d d_I),
+// with U(J) = kappa/2 (ln J)^2 the volumetric energy (its small-strain limit kappa/2 theta^2).
+// Returns false when J_c <= 0.
+struct CellState {
+  double measure = 0, J = 1;
+  std::vector<double> g;
+};
+
+template <class Part, class View>
+bool cell_state(const Part& p, std::size_t c, const View& u, int dim, CellState& st) {
+  const auto udim = static_cast<std::size_t>(dim);
+  const auto first = p.offsets[c], last = p.offsets[c + 1];
+  st.g.assign((last - first) * udim, 0.0);
+  if (!p.finite) {
+    st.measure = cell_dilatation(p, c, u, dim);
+    st.J = 1;
+    std::copy(p.bbar.begin() + static_cast<std::ptrdiff_t>(first * udim),
+              p.bbar.begin() + static_cast<std::ptrdiff_t>(last * udim), st.g.begin());
+    return true;
+  }
+  double H[3][3] = {};
+  for (auto k = first; k < last; ++k) {
+    const auto n = static_cast<std::size_t>(p.node[k]);
+    for (std::size_t i = 0; i < udim; ++i)
+      for (std::size_t j = 0; j < udim; ++j) H[i][j] += u(n * udim + i, 0) * p.bbar[k * udim + j];
+  }
+  double Finv[3][3] = {}, j_minus_1 = 0;
+  if (dim == 2) {
+    double H2[2][2] = {{H[0][0], H[0][1]}, {H[1][0], H[1][1]}}, F2[2][2], I2[2][2];
+    for (int i = 0; i < 2; ++i)
+      for (int j = 0; j < 2; ++j) F2[i][j] = H2[i][j] + (i == j ? 1.0 : 0.0);
+    j_minus_1 = physics::determinant_of_identity_plus_minus_one<2>(H2);
+    st.J = 1.0 + j_minus_1;
+    if (!(st.J > 0)) return false;
+    physics::inverse<2>(F2, st.J, I2);
+    for (int i = 0; i < 2; ++i)
+      for (int j = 0; j < 2; ++j) Finv[i][j] = I2[i][j];
+  } else {
+    double F[3][3];
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) F[i][j] = H[i][j] + (i == j ? 1.0 : 0.0);
+    j_minus_1 = physics::determinant_of_identity_plus_minus_one<3>(H);
+    st.J = 1.0 + j_minus_1;
+    if (!(st.J > 0)) return false;
+    physics::inverse<3>(F, st.J, Finv);
+  }
+  st.measure = std::log1p(j_minus_1);
+  for (auto k = first; k < last; ++k)
+    for (std::size_t i = 0; i < udim; ++i) {
+      double v = 0;
+      for (std::size_t l = 0; l < udim; ++l) v += Finv[l][i] * p.bbar[k * udim + l];
+      st.g[(k - first) * udim + i] = v;
+    }
+  return true;
+}
+
 }  // namespace
+
+void MixedPressure::report_inverted(const Part& p, std::size_t c) const {
+  const auto& cells = model_.parts[p.model_part].cells;
+  std::ostringstream o;
+  o << "part '" << model_.parts[p.model_part].part->name << "': mixed u-p cell " << p.cell[c] + 1
+    << " at (";
+  for (int d = 0; d < dim_; ++d)
+    o << (d ? ", " : "")
+      << cells.centroid[c * static_cast<std::size_t>(dim_) + static_cast<std::size_t>(d)];
+  o << ") inverted: det F <= 0 of its smoothed deformation gradient";
+  throw NumericalError(o.str());
+}
 
 std::unique_ptr<MixedPressure> MixedPressure::build(const Model& model,
                                                     const SolidOperator& solid) {
@@ -43,6 +118,7 @@ MixedPressure::MixedPressure(const Model& model, const SolidOperator& solid)
     Part p;
     p.model_part = m;
     p.kappa = law.bulk_modulus;
+    p.finite = d.part->section.formulation != Formulation::small_strain;
     if (const auto rho = model.scene.find_material(d.part->material)->density) {
       p.density = *rho;
       p.wave_speed = std::sqrt((p.kappa + 4.0 * law.elastic.mu / 3.0) / p.density);
@@ -75,30 +151,34 @@ void MixedPressure::add_internal_force(const Vector& d_overlap, Vector& f_overla
   const auto u = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
   auto f = f_overlap.getLocalViewHost(Tpetra::Access::ReadWrite);
   const auto udim = static_cast<std::size_t>(dim_);
+  CellState st;
   for (const auto& p : parts_)
     for (std::size_t c = 0; c < p.volume.size(); ++c) {
-      const double s = p.volume[c] * p.kappa * cell_dilatation(p, c, u, dim_);
+      if (!cell_state(p, c, u, dim_, st)) report_inverted(p, c);
+      const double s = p.volume[c] * p.kappa * st.measure;  // V_c U'(J) J
       for (auto k = p.offsets[c]; k < p.offsets[c + 1]; ++k) {
         const auto n = static_cast<std::size_t>(p.node[k]);
-        for (std::size_t i = 0; i < udim; ++i) f(n * udim + i, 0) += s * p.bbar[k * udim + i];
+        const auto e = k - p.offsets[c];
+        for (std::size_t i = 0; i < udim; ++i) f(n * udim + i, 0) += s * st.g[e * udim + i];
       }
     }
 }
 
-void MixedPressure::apply(const Vector& x_overlap, Vector& y_overlap) const {
-  add_internal_force(x_overlap, y_overlap);  // linear in d: K_vol x = f_vol(x)
-}
-
-void MixedPressure::add_tangent(FEMatrix& K) const {
+void MixedPressure::add_tangent(const Vector& d_overlap, FEMatrix& K) const {
   Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewCounter("efg: mixed u-p cells"));
+  const auto u = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
   auto local = K.getLocalMatrixDevice();
   const auto udim = static_cast<std::size_t>(dim_);
   std::vector<int> cols;
   std::vector<double> vals;
+  CellState st;
   for (const auto& p : parts_)
     for (std::size_t c = 0; c < p.volume.size(); ++c) {
+      if (!cell_state(p, c, u, dim_, st)) report_inverted(p, c);
       const auto first = p.offsets[c], last = p.offsets[c + 1];
       const double s = p.volume[c] * p.kappa;
+      // d(m g_Ii)/d d_Jj = g_Ii g_Jj - m g_Ij g_Ji (finite strain: d F^-T / dF; small: 0).
+      const double m = p.finite ? st.measure : 0.0;
       cols.clear();
       for (auto k = first; k < last; ++k)
         for (std::size_t j = 0; j < udim; ++j)
@@ -106,10 +186,12 @@ void MixedPressure::add_tangent(FEMatrix& K) const {
       vals.resize(cols.size());
       for (auto k = first; k < last; ++k)
         for (std::size_t i = 0; i < udim; ++i) {
-          const double bi = s * p.bbar[k * udim + i];
+          const auto a = (k - first) * udim;
           for (auto l = first; l < last; ++l)
-            for (std::size_t j = 0; j < udim; ++j)
-              vals[(l - first) * udim + j] = bi * p.bbar[l * udim + j];
+            for (std::size_t j = 0; j < udim; ++j) {
+              const auto b = (l - first) * udim;
+              vals[b + j] = s * (st.g[a + i] * st.g[b + j] - m * st.g[a + j] * st.g[b + i]);
+            }
           local.sumIntoValues(p.node[k] * dim_ + static_cast<int>(i), cols.data(),
                               static_cast<int>(cols.size()), vals.data(), false, false);
         }
@@ -140,11 +222,11 @@ void MixedPressure::add_bulk_viscosity(const Vector& v_overlap, double linear, d
 double MixedPressure::strain_energy(const Vector& d_overlap) const {
   const auto u = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
   double total = 0;
+  CellState st;
   for (const auto& p : parts_)
-    for (std::size_t c = 0; c < p.volume.size(); ++c) {
-      const double theta = cell_dilatation(p, c, u, dim_);
-      total += 0.5 * p.volume[c] * p.kappa * theta * theta;
-    }
+    for (std::size_t c = 0; c < p.volume.size(); ++c)
+      if (cell_state(p, c, u, dim_, st))  // an inverted cell stores none (the force reports it)
+        total += 0.5 * p.volume[c] * p.kappa * st.measure * st.measure;
   return total;
 }
 
@@ -157,6 +239,16 @@ std::vector<double> MixedPressure::cell_dilatations(std::size_t part,
   return theta;
 }
 
+std::vector<double> MixedPressure::cell_pressures(std::size_t part, const Vector& d_overlap) const {
+  const auto u = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
+  const auto& p = parts_.at(static_cast<std::size_t>(index_.at(part)));
+  std::vector<double> pressure(p.volume.size(), 0.0);
+  CellState st;
+  for (std::size_t c = 0; c < pressure.size(); ++c)
+    if (cell_state(p, c, u, dim_, st)) pressure[c] = -p.kappa * st.measure / st.J;  // -U'(J)
+  return pressure;
+}
+
 std::vector<double> MixedPressure::particle_pressures(const Vector& d_overlap) const {
   const auto& maps = model_.maps;
   // Columns: sum of V_c p_c and of V_c over the cells around each node, summed on the owners.
@@ -165,8 +257,8 @@ std::vector<double> MixedPressure::particle_pressures(const Vector& d_overlap) c
     auto o = overlap.getLocalViewHost(Tpetra::Access::ReadWrite);
     const auto& mesh = model_.mesh;
     for (const auto& p : parts_) {
-      const auto theta = cell_dilatations(p.model_part, d_overlap);
-      for (std::size_t c = 0; c < theta.size(); ++c) {
+      const auto pressure = cell_pressures(p.model_part, d_overlap);
+      for (std::size_t c = 0; c < pressure.size(); ++c) {
         const auto [block, local] = mesh.locate_cell(p.cell[c]);
         const auto npc = static_cast<std::size_t>(cell_node_count(block->type));
         for (std::size_t a = 0; a < npc; ++a) {
@@ -174,7 +266,7 @@ std::vector<double> MixedPressure::particle_pressures(const Vector& d_overlap) c
           const auto lid = maps.overlap_nodes->getLocalElement(gid);
           if (lid == Teuchos::OrdinalTraits<int>::invalid())
             throw std::logic_error("mixed u-p: a cell's node is missing from the overlap map");
-          o(static_cast<std::size_t>(lid), 0) += -p.kappa * theta[c] * p.volume[c];
+          o(static_cast<std::size_t>(lid), 0) += pressure[c] * p.volume[c];
           o(static_cast<std::size_t>(lid), 1) += p.volume[c];
         }
       }

@@ -39,10 +39,8 @@ class MixedPressure {
   void add_couplings(CouplingGraph& graph) const;
   /// f += the cells' volumetric forces at d (overlap vectors).
   void add_internal_force(const Vector& d_overlap, Vector& f_overlap) const;
-  /// K += the cells' volumetric stiffness (independent of d: small strain).
-  void add_tangent(FEMatrix& K) const;
-  /// y += K_vol x.
-  void apply(const Vector& x_overlap, Vector& y_overlap) const;
+  /// K += the cells' volumetric stiffness at d.
+  void add_tangent(const Vector& d_overlap, FEMatrix& K) const;
   /// Volumetric energy of this rank's cells, sum V_c kappa theta_c^2 / 2.
   double strain_energy(const Vector& d_overlap) const;
 
@@ -58,6 +56,9 @@ class MixedPressure {
   /// Whether model part p carries a pressure, and its bulk modulus.
   bool mixed(std::size_t part) const { return index_[part] >= 0; }
   double bulk_modulus(std::size_t part) const;
+  /// The pressure of every owned cell of model part p (mixed), compression positive: -kappa
+  /// theta_c (small strain), -U'(J_c) = -kappa ln J_c / J_c (finite strain, Cauchy).
+  std::vector<double> cell_pressures(std::size_t part, const Vector& d_overlap) const;
   /// theta_c of every owned cell of model part p (mixed), in CellAverages order.
   std::vector<double> cell_dilatations(std::size_t part, const Vector& d_overlap) const;
   /// Pressure at every owned particle (overlap order of the owned nodes; 0 for particles of no
@@ -77,7 +78,9 @@ class MixedPressure {
     std::vector<int> node;     // overlap node of each entry
     std::vector<double> bbar;  // dim per entry
     std::vector<std::size_t> cell;
+    bool finite = false;  // total Lagrangian: U(J) of the cell's smoothed F
   };
+  [[noreturn]] void report_inverted(const Part& p, std::size_t c) const;
   const Model& model_;
   int dim_;
   std::vector<int> index_;  // model part -> parts_ entry, -1 when not mixed

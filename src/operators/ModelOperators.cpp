@@ -33,7 +33,7 @@ void ModelOperators::add_internal_force(const Vector& d_overlap, Vector& f_overl
 
 void ModelOperators::add_tangent(const Vector& d_overlap, FEMatrix& K) const {
   solid_.add_tangent(d_overlap, K);
-  if (mixed_) mixed_->add_tangent(K);
+  if (mixed_) mixed_->add_tangent(d_overlap, K);
 }
 
 void ModelOperators::add_couplings(CouplingGraph& graph) const {

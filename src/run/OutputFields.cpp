@@ -87,11 +87,12 @@ std::vector<std::vector<double>> cell_values(const Model& model, const MixedPres
   std::vector<std::vector<double>> columns;
   for (const auto& field : cell_columns(model.scene.output.fields)) {
     std::vector<double> values;
-    if (field == "cell_pressure" && mixed)  // the condensed pressure p_c = -kappa theta_c
+    if (field == "cell_pressure" && mixed)  // the condensed pressure of each cell
       for (std::size_t p = 0; p < model.parts.size(); ++p)
-        if (mixed->mixed(p))
-          for (double theta : mixed->cell_dilatations(p, d_overlap))
-            values.push_back(-mixed->bulk_modulus(p) * theta);
+        if (mixed->mixed(p)) {
+          const auto cells = mixed->cell_pressures(p, d_overlap);
+          values.insert(values.end(), cells.begin(), cells.end());
+        }
     columns.push_back(std::move(values));
   }
   return columns;
@@ -184,9 +185,11 @@ void particle_tensors(const Model& model, const ParticleValues& values,
   std::vector<physics::SolidMaterial> materials;
   for (std::size_t p = 0; p < model.parts.size(); ++p) {
     const auto& pd = model.parts[p];
+    // Mixed parts: the deviatoric law their points integrate (model/MaterialLaws).
     materials.push_back(
-        solid_material(*model.scene.find_material(pd.part->material), *pd.part, dim));
-    if (mixed && mixed->mixed(p)) materials.back().lambda = -2.0 * materials.back().mu / 3.0;
+        mixed && mixed->mixed(p)
+            ? material_law(model.scene, *pd.part, dim).elastic
+            : solid_material(*model.scene.find_material(pd.part->material), *pd.part, dim));
   }
   for (std::size_t s = 0; s < values.part.size(); ++s) {
     if (values.part[s] < 0) continue;

@@ -1,5 +1,7 @@
 #include "run/Probes.hpp"
 
+#include "tensor/Tensor.hpp"
+
 #include <Teuchos_CommHelpers.hpp>
 
 #include <limits>
@@ -38,6 +40,23 @@ void stress_at(const physics::SolidMaterial& m, const double (&g)[3][3], double 
   physics::stress<Dim>(m, H, P);
   for (int i = 0; i < Dim; ++i)
     for (int j = 0; j < Dim; ++j) s[i][j] = P[i][j];
+}
+
+// The pressure p (compression positive, Cauchy) in the probe's stress s: -p I for small strain,
+// -p J F^-T in the first Piola-Kirchhoff stress of a total Lagrangian part (F = I + g).
+void add_pressure(double (&s)[3][3], const double (&g)[3][3], int dim, double p, bool finite) {
+  if (!finite) {
+    for (int a = 0; a < 3; ++a) s[a][a] -= p;
+    return;
+  }
+  double F[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, Finv[3][3];
+  for (int i = 0; i < dim; ++i)
+    for (int j = 0; j < dim; ++j) F[i][j] += g[i][j];
+  const double J = physics::determinant<3>(F);
+  if (!(J > 0)) return;
+  physics::inverse<3>(F, J, Finv);
+  for (int i = 0; i < dim; ++i)
+    for (int j = 0; j < dim; ++j) s[i][j] -= p * J * Finv[j][i];
 }
 
 }  // namespace
@@ -104,7 +123,8 @@ std::vector<double> probe_values(const Model& model, const SolidOperator& op,
     else
       stress_at<3>(law.elastic, g, s);
     if (law.mixed())  // law.elastic is the deviatoric part (model/MaterialLaws)
-      for (int a = 0; a < 3; ++a) s[a][a] -= p_probe;
+      add_pressure(s, g, dim, p_probe,
+                   model.parts[part].part->section.formulation != Formulation::small_strain);
     for (const auto& [a, b] : pairs) *out++ = s[a][b];
   }
   std::vector<double> global(local.size(), 0.0);

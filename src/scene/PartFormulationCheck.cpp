@@ -22,12 +22,12 @@ void check_part_formulations(const Scene& scene) {
     if (!material) continue;  // reported by the part's own check
     const auto path = "parts[" + std::to_string(i) + "].formulation";
     const YAML::Node at = scene.document["parts"][i]["formulation"];
-    if (material->model != "linear_elastic")
+    if (material->model != "linear_elastic" && material->model != "neo_hookean")
       throw InputError(schema::located_message(
           scene.file, at, path,
-          "mixed_up is available for linear_elastic materials (small strain); material '" +
+          "mixed_up is available for linear_elastic and neo_hookean materials; material '" +
               material->name + "' is " + material->model +
-              ": expected formulation: displacement, or a linear_elastic material"));
+              ": expected formulation: displacement, or one of those materials"));
     if (material->youngs_modulus_field)
       throw InputError(schema::located_message(
           scene.file, at, path,

@@ -111,8 +111,9 @@ SpecPtr part_spec() {
       .optional("formulation",
                 choice("Fields of the part: displacement only, or mixed_up: displacement and a "
                        "constant pressure per background cell, condensed cell by cell (nearly "
-                       "incompressible solids, nu up to 0.5; linear_elastic, plane strain or 3D). "
-                       "See docs/mixed.md.",
+                       "incompressible solids, nu up to 0.5; linear_elastic at small strain, or "
+                       "neo_hookean at finite strain with U(J) = kappa/2 (ln J)^2 per cell; plane "
+                       "strain or 3D). See docs/mixed.md.",
                        {"displacement", "mixed_up"}),
                 "displacement");
 }
