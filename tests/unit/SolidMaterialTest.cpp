@@ -41,7 +41,8 @@ void check_derivatives(const SolidMaterial& m, const double (&H)[Dim][Dim]) {
 
 TEST(SolidMaterial, StressIsTheEnergyGradientAndTangentTheStressGradient) {
   const auto c = elastic_constants(200.0, 0.3);
-  for (auto kind : {MaterialKind::linear_elastic, MaterialKind::neo_hookean}) {
+  for (auto kind : {MaterialKind::linear_elastic, MaterialKind::neo_hookean,
+                    MaterialKind::isochoric_neo_hookean}) {
     const SolidMaterial m{kind, c.lambda, c.mu, false};
     check_derivatives<3>(m, {{0.3, 0.1, -0.05}, {0.02, -0.2, 0.1}, {0.07, 0.04, 0.15}});
     check_derivatives<2>(m, {{0.3, 0.1}, {-0.05, -0.2}});
@@ -65,6 +66,30 @@ TEST(SolidMaterial, NeoHookeanCauchyStressOfAStretch) {
   // Cauchy = P F^T / J.
   double P[3][3], A[3][3][3][3];
   ASSERT_TRUE(stress_and_tangent<3>(m, H, P, A));
+  EXPECT_NEAR(P[0][0] * 2.0 / J, s[0][0], 1e-12);
+}
+
+// The isochoric part of mixed u-p parts: no energy or stress from a volume change (W(s F) =
+// W(F), a pure dilation F = s I gives P = 0), the Cauchy stress is traceless and equals P F^T / J
+// (F = diag(2, 0.8, 0.8) by hand: sigma = mu J^(-5/3) dev(b)).
+TEST(SolidMaterial, IsochoricNeoHookeanIgnoresVolumeChange) {
+  const SolidMaterial m{MaterialKind::isochoric_neo_hookean, 0.0, 3.0, false};
+  const double H[3][3] = {{1.0, 0.1, 0}, {0, -0.2, 0.05}, {0.02, 0, -0.2}};
+  double scaled[3][3];
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) scaled[i][j] = 1.7 * (H[i][j] + (i == j)) - (i == j);
+  EXPECT_NEAR(strain_energy<3>(m, scaled), strain_energy<3>(m, H), 1e-12);
+  const double dilation[3][3] = {{0.3, 0, 0}, {0, 0.3, 0}, {0, 0, 0.3}};
+  double P[3][3], s[3][3];
+  ASSERT_TRUE(stress<3>(m, dilation, P));
+  for (auto& row : P)
+    for (double v : row) EXPECT_NEAR(v, 0.0, 1e-14);
+  const double stretch[3][3] = {{1.0, 0, 0}, {0, -0.2, 0}, {0, 0, -0.2}};
+  cauchy_stress<3>(m, stretch, s);
+  const double J = 2.0 * 0.8 * 0.8, I1 = 4.0 + 2 * 0.64;
+  EXPECT_NEAR(s[0][0], 3.0 * std::pow(J, -5.0 / 3.0) * (4.0 - I1 / 3.0), 1e-12);
+  EXPECT_NEAR(s[0][0] + s[1][1] + s[2][2], 0.0, 1e-12);
+  ASSERT_TRUE(stress<3>(m, stretch, P));
   EXPECT_NEAR(P[0][0] * 2.0 / J, s[0][0], 1e-12);
 }
 
