@@ -19,6 +19,12 @@
 // stress of the part is kappa theta_c; the output pressure is its negative (compression
 // positive, as LS-DYNA reports it). Parts without formulation mixed_up have no entry here, and
 // a model without any builds no MixedPressure at all (ModelOperators::mixed() is null).
+//
+// Finite strain (total Lagrangian neo-Hookean parts): the cell's measure is ln J_c of its
+// smoothed F_c = I + sum_I d_I (x) b_cI with U(J) = kappa/2 (ln J)^2, so f_I += V_c kappa ln J_c
+// g_cI, g_cI = F_c^-T b_cI, and the tangent gains -V_c kappa ln J_c g_Ij g_Ji (docs/mixed.md).
+// Host loops over the cells (the solid operator's points run in Kokkos kernels): fine at the
+// sizes measured (docs/mixed.md), a kernel when threads need it.
 #pragma once
 
 #include <memory>
@@ -41,7 +47,7 @@ class MixedPressure {
   void add_internal_force(const Vector& d_overlap, Vector& f_overlap) const;
   /// K += the cells' volumetric stiffness at d.
   void add_tangent(const Vector& d_overlap, FEMatrix& K) const;
-  /// Volumetric energy of this rank's cells, sum V_c kappa theta_c^2 / 2.
+  /// Volumetric energy of this rank's cells, sum V_c U(J_c) (small strain: V_c kappa theta_c^2/2).
   double strain_energy(const Vector& d_overlap) const;
 
   /// Explicit stages: the bulk viscosity of the cells (von Neumann & Richtmyer; the form of
