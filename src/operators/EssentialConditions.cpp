@@ -10,12 +10,11 @@
 #include <cmath>
 
 #include "core/Errors.hpp"
-#include "discretization/CellSmoothing.hpp"
 #include "discretization/ShapeFunctions.hpp"
 #include "discretization/SmoothingFacets.hpp"
 #include "mesh/SideMeasures.hpp"
+#include "operators/BoundaryCellPressure.hpp"
 #include "operators/SideQuadrature.hpp"
-#include "tensor/Tensor.hpp"
 
 namespace efg {
 namespace {
@@ -254,35 +253,13 @@ long long EssentialConditions::add_boundary_points(const Model& model, const Sol
         b.grad.insert(b.grad.end(), v.grad.begin() + static_cast<std::ptrdiff_t>(k * udim),
                       v.grad.begin() + static_cast<std::ptrdiff_t>((k + 1) * udim));
       }
-      if (law.mixed()) add_cell_pressure(mesh, d, op.overlap_node(p), cell_of[q], law, b);
+      if (law.mixed())
+        b.cell_pressure = attach_cell_pressure(mesh, d, op.overlap_node(p), cell_of[q], law,
+                                               b.nodes, b.phi, b.grad);
       points_.push_back(std::move(b));
     }
   }
   return sides_found;
-}
-
-void EssentialConditions::add_cell_pressure(const BackgroundMesh& mesh, const PartDiscretization& d,
-                                            const std::vector<int>& overlap_node, std::size_t cell,
-                                            const MaterialLaw& law, BoundaryPoint& b) const {
-  const auto udim = static_cast<std::size_t>(dim_);
-  const auto row = cell_averages(mesh, d.cloud, {cell});
-  b.kappa = law.bulk_modulus;
-  b.finite_pressure = d.part->section.formulation != Formulation::small_strain;
-  b.bbar.assign(b.nodes.size() * udim, 0.0);
-  for (std::size_t k = 0; k < row.gradients.particles.size(); ++k) {
-    const int node = overlap_node[static_cast<std::size_t>(row.gradients.particles[k])];
-    auto at = std::find(b.nodes.begin(), b.nodes.end(), node);
-    if (at == b.nodes.end()) {  // reached by the cell, not by the point
-      b.nodes.push_back(node);
-      b.phi.push_back(0.0);
-      b.grad.insert(b.grad.end(), udim, 0.0);
-      b.bbar.insert(b.bbar.end(), udim, 0.0);
-      at = b.nodes.end() - 1;
-    }
-    const auto e = static_cast<std::size_t>(at - b.nodes.begin());
-    for (std::size_t i = 0; i < udim; ++i)
-      b.bbar[e * udim + i] = row.gradients.values[k * udim + i];
-  }
 }
 
 void EssentialConditions::add_couplings(CouplingGraph& graph) const {
@@ -356,46 +333,6 @@ EssentialConditions::PointState EssentialConditions::evaluate_point(const Bounda
     for (int j = 0; j < Dim; ++j)
       st.Pn[i] += P[i][j] * p.weighted_normal[static_cast<std::size_t>(j)];
   }
-  // Mixed u-p: the cell's volumetric stress in the traction, kappa m F^-T N with m the cell's
-  // measure (small strain: theta = tr(F - I), F^-T = I; finite: ln J of the cell-smoothed F), and
-  // its derivative kappa (g_ai (F^-T N)_k - m_f (F^-T N)_i g_ak), g_a = F^-T b_a, m_f = 0 for
-  // small strain (operators/MixedPressure.cpp, cell_state).
-  double m = 0, m_f = 0, FN[Dim] = {}, Finv[Dim][Dim] = {};
-  if (!p.bbar.empty()) {
-    const auto d = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
-    // Hc = sum_a d_a (x) b_a (the cell's) first: theta = tr Hc directly (1 + theta - 1 would lose the digits of
-    // a nearly incompressible theta).
-    double Hc[Dim][Dim] = {}, F[Dim][Dim];
-    for (std::size_t a = 0; a < n; ++a)
-      for (int i = 0; i < Dim; ++i)
-        for (int j = 0; j < Dim; ++j)
-          Hc[i][j] += d(static_cast<std::size_t>(p.nodes[a] * Dim + i), 0) *
-                      p.bbar[a * Dim + static_cast<std::size_t>(j)];
-    for (int i = 0; i < Dim; ++i)
-      for (int j = 0; j < Dim; ++j) F[i][j] = Hc[i][j] + (i == j ? 1.0 : 0.0);
-    if (p.finite_pressure) {
-      const double j_minus_1 = physics::determinant_of_identity_plus_minus_one<Dim>(Hc);
-      const double J = 1.0 + j_minus_1;
-      if (!(J > 0)) throw NumericalError("det F <= 0 in the mixed u-p cell of a boundary point");
-      physics::inverse<Dim>(F, J, Finv);
-      m = m_f = std::log1p(j_minus_1);
-    } else {
-      for (int i = 0; i < Dim; ++i) {
-        m += Hc[i][i];
-        Finv[i][i] = 1.0;
-      }
-    }
-    for (int k = 0; k < Dim; ++k) {
-      for (int l = 0; l < Dim; ++l)
-        FN[k] += Finv[l][k] * p.weighted_normal[static_cast<std::size_t>(l)];
-      st.Pn[k] += p.kappa * m * FN[k];
-    }
-  }
-  auto g = [&](std::size_t a, int i) {  // (F^-T b_a)_i
-    double v = 0;
-    for (int l = 0; l < Dim; ++l) v += Finv[l][i] * p.bbar[a * Dim + static_cast<std::size_t>(l)];
-    return v;
-  };
   st.S.assign(n * Dim * Dim, 0.0);
   for (std::size_t a = 0; a < n; ++a)
     for (int k = 0; k < Dim; ++k)
@@ -405,9 +342,12 @@ EssentialConditions::PointState EssentialConditions::evaluate_point(const Bounda
           for (int l = 0; l < Dim; ++l)
             v += A[k][j][i][l] * p.grad[a * Dim + static_cast<std::size_t>(l)] *
                  p.weighted_normal[static_cast<std::size_t>(j)];
-        if (!p.bbar.empty()) v += p.kappa * (g(a, i) * FN[k] - m_f * FN[i] * g(a, k));
         st.S[(a * Dim + static_cast<std::size_t>(k)) * Dim + static_cast<std::size_t>(i)] = v;
       }
+  if (p.cell_pressure.active())  // mixed u-p: the cell's volumetric stress
+    add_cell_pressure_traction<Dim>(p.cell_pressure, p.nodes,
+                                    d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly),
+                                    p.weighted_normal.data(), st.Pn, st.S);
   return st;
 }
 

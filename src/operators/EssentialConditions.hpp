@@ -30,6 +30,7 @@
 
 #include "model/Curves.hpp"
 #include "model/ExactSolutions.hpp"
+#include "operators/BoundaryCellPressure.hpp"
 #include "operators/SolidOperator.hpp"
 
 namespace efg {
@@ -112,12 +113,10 @@ class EssentialConditions {
     std::size_t history = 0;  // plastic laws: offset of the point's state in committed_/trial_
     std::vector<int> nodes;
     std::vector<double> phi, grad;  // grad: dim per entry
-    // Mixed u-p parts: the traction adds the pressure of the point's cell, kappa theta_c n with
-    // theta_c = sum bbar . d (operators/MixedPressure); bbar: dim per entry of `nodes` (which then
-    // also hold the cell's particles, with phi = grad = 0 where the point does not reach).
-    double kappa = 0;
-    bool finite_pressure = false;  // total Lagrangian: kappa ln J F^-T of the cell's smoothed F
-    std::vector<double> bbar;
+    // Mixed u-p parts: the traction adds the pressure of the point's cell
+    // (operators/BoundaryCellPressure); `nodes` then also hold the cell's particles, with
+    // phi = grad = 0 where the point does not reach.
+    BoundaryCellPressure cell_pressure;
   };
   /// A boundary point evaluated at d: the gap u^h - u_bar on its constrained components, P n dA,
   /// and S(a, k, i) = sum_jl A_kjil dphi_a/dX_l n_j dA, the traction component k of the virtual
@@ -165,9 +164,6 @@ class EssentialConditions {
   std::vector<Prescribed> timed_;
   void add_collocated_nodes(const Model& model, const SolidOperator& op, const Setup& setup);
   long long add_boundary_points(const Model& model, const SolidOperator& op, const Setup& setup);
-  void add_cell_pressure(const BackgroundMesh& mesh, const PartDiscretization& d,
-                         const std::vector<int>& overlap_node, std::size_t cell,
-                         const MaterialLaw& law, BoundaryPoint& b) const;
 
   int dim_;
   std::size_t conditions_;
