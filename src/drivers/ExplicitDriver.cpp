@@ -73,15 +73,15 @@ ExplicitDriver::ExplicitDriver(const ModelOperators& ops, const StageSpec& stage
       previous_v_(mass_.getMap()),
       previous_a_(mass_.getMap()) {
   inverse_mass_.reciprocal(mass_);
+  viscosity_linear_ = stage_.settings["bulk_viscosity_linear"].as<double>();
+  viscosity_quadratic_ = stage_.settings["bulk_viscosity_quadratic"].as<double>();
 }
 
 std::vector<double> ExplicitDriver::acceleration(double time, double wall_dt, const Vector& d,
                                                  const Vector& v, Vector& a) {
   ops_.loads().assemble(curve_factor(ops_.model().scene, time, 1.0, stage_.name), f_ext_);
   ops_.internal_force(d, f_int_);
-  if (ops_.mixed())
-    ops_.bulk_viscosity(v, stage_.settings["bulk_viscosity_linear"].as<double>(),
-                        stage_.settings["bulk_viscosity_quadratic"].as<double>(), f_viscous_);
+  if (ops_.mixed()) ops_.bulk_viscosity(v, viscosity_linear_, viscosity_quadratic_, f_viscous_);
   if (supports_.active()) {  // f_int_ carries the weak supports' resistance from here on
     supports_.set_time(time);
     f_int_.update(1.0, supports_.resistance(d), 1.0);

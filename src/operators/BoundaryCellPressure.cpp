@@ -4,12 +4,11 @@
 
 namespace efg {
 
-BoundaryCellPressure attach_cell_pressure(const BackgroundMesh& mesh, const PartDiscretization& d,
-                                          const std::vector<int>& overlap_node, std::size_t cell,
+BoundaryCellPressure attach_cell_pressure(const CellAverages& row, const PartDiscretization& d,
+                                          const std::vector<int>& overlap_node,
                                           const MaterialLaw& law, std::vector<int>& nodes,
                                           std::vector<double>& phi, std::vector<double>& grad) {
-  const auto udim = static_cast<std::size_t>(mesh.dimension);
-  const auto row = cell_averages(mesh, d.cloud, {cell});
+  const auto udim = static_cast<std::size_t>(d.cloud.dimension);
   BoundaryCellPressure c;
   c.kappa = law.bulk_modulus;
   c.finite = d.part->section.formulation != Formulation::small_strain;

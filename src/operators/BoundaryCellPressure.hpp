@@ -27,10 +27,11 @@ struct BoundaryCellPressure {
   bool active() const { return !bbar.empty(); }
 };
 
-/// The cell's row for a boundary point of a mixed part: `nodes`, `phi` and `grad` (dim per entry)
-/// gain the cell's particles the point does not reach (phi = grad = 0 there).
-BoundaryCellPressure attach_cell_pressure(const BackgroundMesh& mesh, const PartDiscretization& d,
-                                          const std::vector<int>& overlap_node, std::size_t cell,
+/// The row of the point's cell (`row`: cell_averages of that one cell) for a boundary point of a
+/// mixed part: `nodes`, `phi` and `grad` (dim per entry) gain the cell's particles the point does
+/// not reach (phi = grad = 0 there).
+BoundaryCellPressure attach_cell_pressure(const CellAverages& row, const PartDiscretization& d,
+                                          const std::vector<int>& overlap_node,
                                           const MaterialLaw& law, std::vector<int>& nodes,
                                           std::vector<double>& phi, std::vector<double>& grad);
 

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 #include "core/Errors.hpp"
 #include "discretization/ShapeFunctions.hpp"
@@ -199,6 +200,7 @@ long long EssentialConditions::add_boundary_points(const Model& model, const Sol
     std::vector<SidePoint> pts;
     std::vector<double> beta;
     std::vector<std::size_t> cell_of;
+    std::map<std::size_t, CellAverages> cell_rows;  // mixed parts: the rows of the points' cells
     for (const auto& [cell, side] : boundary_sides(mesh, d.part->blocks)) {
       const auto nodes = mesh.side_node_indices(cell, side);
       if (!std::all_of(nodes.begin(), nodes.end(),
@@ -253,9 +255,13 @@ long long EssentialConditions::add_boundary_points(const Model& model, const Sol
         b.grad.insert(b.grad.end(), v.grad.begin() + static_cast<std::ptrdiff_t>(k * udim),
                       v.grad.begin() + static_cast<std::ptrdiff_t>((k + 1) * udim));
       }
-      if (law.mixed())
-        b.cell_pressure = attach_cell_pressure(mesh, d, op.overlap_node(p), cell_of[q], law,
-                                               b.nodes, b.phi, b.grad);
+      if (law.mixed()) {  // each cell's row once, for all its boundary points
+        auto row = cell_rows.find(cell_of[q]);
+        if (row == cell_rows.end())
+          row = cell_rows.emplace(cell_of[q], cell_averages(mesh, d.cloud, {cell_of[q]})).first;
+        b.cell_pressure =
+            attach_cell_pressure(row->second, d, op.overlap_node(p), law, b.nodes, b.phi, b.grad);
+      }
       points_.push_back(std::move(b));
     }
   }

@@ -124,7 +124,10 @@ MixedPressure::MixedPressure(const Model& model, const SolidOperator& solid)
       p.wave_speed = std::sqrt((p.kappa + 4.0 * law.elastic.mu / 3.0) / p.density);
     }
     const double thickness = dim_ == 2 ? d.part->thickness : 1.0;
-    for (double v : d.cells.volume) p.volume.push_back(v * thickness);
+    for (double v : d.cells.volume) {
+      p.volume.push_back(v * thickness);
+      p.length.push_back(std::pow(v, 1.0 / dim_));
+    }
     p.offsets = d.cells.gradients.offsets;
     p.bbar = d.cells.gradients.values;
     p.cell = d.cells.cell;
@@ -204,11 +207,10 @@ void MixedPressure::add_bulk_viscosity(const Vector& v_overlap, double linear, d
   auto f = f_overlap.getLocalViewHost(Tpetra::Access::ReadWrite);
   const auto udim = static_cast<std::size_t>(dim_);
   for (const auto& p : parts_) {
-    const double thickness = dim_ == 2 ? model_.parts[p.model_part].part->thickness : 1.0;
     for (std::size_t c = 0; c < p.volume.size(); ++c) {
       const double rate = cell_dilatation(p, c, v, dim_);
       if (!(rate < 0)) continue;  // expanding cells carry none
-      const double l = std::pow(p.volume[c] / thickness, 1.0 / dim_);
+      const double l = p.length[c];
       const double q = p.density * l * (quadratic * l * rate * rate - linear * p.wave_speed * rate);
       const double s = -p.volume[c] * q;
       for (auto k = p.offsets[c]; k < p.offsets[c + 1]; ++k) {

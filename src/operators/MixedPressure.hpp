@@ -80,6 +80,7 @@ class MixedPressure {
     double kappa = 0;
     double density = 0, wave_speed = 0;  // rho, sqrt((kappa + 4 mu / 3) / rho); 0 without density
     std::vector<double> volume;          // V_c x thickness (2D)
+    std::vector<double> length;  // l_c = V_c^(1/dim) (without thickness), the bulk viscosity's
     std::vector<std::size_t> offsets;
     std::vector<int> node;     // overlap node of each entry
     std::vector<double> bbar;  // dim per entry
