@@ -4,6 +4,7 @@
 #include <array>
 
 #include "core/Errors.hpp"
+#include "discretization/CellOwner.hpp"
 #include "discretization/ShapeFunctions.hpp"
 #include "discretization/SmoothingFacets.hpp"
 
@@ -31,8 +32,7 @@ std::vector<std::size_t> owned_cells(const BackgroundMesh& mesh, const PartSpec&
     for (std::size_t c = 0; c < b.cell_count(); ++c, ++global_cell) {
       if (!in_part) continue;
       const auto* node = &b.connectivity[c * npc];
-      if (owner[static_cast<std::size_t>(*std::min_element(node, node + npc))] == rank)
-        cells.push_back(global_cell);
+      if (cell_owner(node, npc, owner) == rank) cells.push_back(global_cell);
     }
   }
   return cells;

@@ -5,6 +5,7 @@
 #include <map>
 #include <string>
 
+#include "discretization/CellOwner.hpp"
 #include "discretization/ScniGradients.hpp"
 #include "discretization/ShapeFunctions.hpp"
 #include "discretization/SmoothingFacets.hpp"
@@ -112,7 +113,7 @@ void build_gauss(const BackgroundMesh& mesh, const PartSpec& part, const Particl
     for (std::size_t c = 0; c < b.cell_count(); ++c, ++global_cell) {
       if (!in_part) continue;
       const auto* node = &b.connectivity[c * npc];
-      if (owner[static_cast<std::size_t>(*std::min_element(node, node + npc))] != rank) continue;
+      if (cell_owner(node, npc, owner) != rank) continue;
       for (std::size_t a = 0; a < npc; ++a)
         for (std::size_t d = 0; d < dim; ++d)
           x[a * dim + d] = mesh.coordinates[static_cast<std::size_t>(node[a]) * dim + d];

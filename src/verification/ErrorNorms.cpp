@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 
+#include "discretization/CellOwner.hpp"
 #include "discretization/ShapeFunctions.hpp"
 #include "mesh/GaussRules.hpp"
 #include "model/GradedMaterials.hpp"
@@ -38,9 +39,7 @@ PartQuadrature part_quadrature(const Model& model, const PartDiscretization& par
     std::vector<double> cx(npc * udim);
     for (std::size_t c = 0; c < b.cell_count(); ++c) {
       const auto* node = &b.connectivity[c * npc];
-      if (model.partition.owner[static_cast<std::size_t>(*std::min_element(node, node + npc))] !=
-          model.partition.rank)
-        continue;
+      if (cell_owner(node, npc, model.partition.owner) != model.partition.rank) continue;
       for (std::size_t a = 0; a < npc; ++a)
         for (std::size_t k = 0; k < udim; ++k)
           cx[a * udim + k] = mesh.coordinates[static_cast<std::size_t>(node[a]) * udim + k];
