@@ -154,7 +154,8 @@ void write_run_report(const CommPtr& comm, const Model& model, const std::string
                       const std::vector<ReferenceCheck>& checks, double total_seconds,
                       const std::vector<ImplicitStageReport>& implicit, const ProbeValues& probes,
                       const std::vector<MemoryPhase>& memory_phases,
-                      const std::vector<std::pair<std::string, ProbeValues>>& probes_by_stage) {
+                      const std::vector<std::pair<std::string, ProbeValues>>& probes_by_stage,
+                      const std::vector<std::pair<std::string, ProbeValues>>& angles_by_stage) {
   std::vector<double> local, global;
   for (const auto& phase : report_phases()) {
     const auto timer = Teuchos::TimeMonitor::lookupCounter("efg: " + phase);
@@ -211,14 +212,19 @@ void write_run_report(const CommPtr& comm, const Model& model, const std::string
     o << ",\n  \"probes\": ";
     write_probes(probes);
   }
-  if (!probes_by_stage.empty()) {  // at each stage's end: a springback is a difference of two
-    o << ",\n  \"probes_by_stage\": {";
-    for (std::size_t k = 0; k < probes_by_stage.size(); ++k) {
-      o << (k ? ", " : "") << quoted(probes_by_stage[k].first) << ": ";
-      write_probes(probes_by_stage[k].second);
+  // At each stage's end: a springback is a difference of two stages' values.
+  auto write_by_stage = [&](const char* key,
+                            const std::vector<std::pair<std::string, ProbeValues>>& staged) {
+    if (staged.empty()) return;
+    o << ",\n  \"" << key << "\": {";
+    for (std::size_t k = 0; k < staged.size(); ++k) {
+      o << (k ? ", " : "") << quoted(staged[k].first) << ": ";
+      write_probes(staged[k].second);
     }
     o << "}";
-  }
+  };
+  write_by_stage("probes_by_stage", probes_by_stage);
+  write_by_stage("angles_by_stage", angles_by_stage);
   o << ",\n  \"reference_values\": [";
   for (std::size_t i = 0; i < checks.size(); ++i)
     o << (i ? ", " : "") << "{\"name\": " << quoted(checks[i].name)

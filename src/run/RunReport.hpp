@@ -45,7 +45,8 @@ void write_run_report(const CommPtr& comm, const Model& model, const std::string
                       const std::vector<ReferenceCheck>& checks, double total_seconds,
                       const std::vector<ImplicitStageReport>& implicit = {},
                       const ProbeValues& probes = {}, const std::vector<MemoryPhase>& memory = {},
-                      const std::vector<std::pair<std::string, ProbeValues>>& probes_by_stage = {});
+                      const std::vector<std::pair<std::string, ProbeValues>>& probes_by_stage = {},
+                      const std::vector<std::pair<std::string, ProbeValues>>& angles_by_stage = {});
 
 /// The wall-time phases the report lists (Teuchos timer names without the "efg: " prefix).
 const std::vector<std::string>& report_phases();

@@ -13,8 +13,8 @@
 #include <sstream>
 
 #include "core/Errors.hpp"
-#include "core/MemoryAccount.hpp"
 #include "core/Log.hpp"
+#include "core/MemoryAccount.hpp"
 #include "drivers/ExplicitDriver.hpp"
 #include "drivers/ImplicitDriver.hpp"
 #include "io/ResultsOutput.hpp"
@@ -26,6 +26,7 @@
 #include "run/RunRecorder.hpp"
 #include "run/RunReport.hpp"
 #include "run/RunSummary.hpp"
+#include "scene/SceneAngles.hpp"
 #include "verification/ErrorNorms.hpp"
 
 namespace efg {
@@ -74,6 +75,27 @@ ProbeValues probe_values(const RunRecorder& recorder) {
   return out;
 }
 
+// The scene's segment angles (scene/SceneAngles.hpp) from the probes' displacements `at_end`.
+ProbeValues segment_angles(const Scene& scene, const ProbeValues& at_end) {
+  auto value = [&](const std::string& column) {
+    for (const auto& [name, v] : at_end)
+      if (name == column) return v;
+    throw std::logic_error("probe column " + column + " missing");
+  };
+  auto point = [&](const std::string& probe) {
+    for (const auto& p : scene.probes)
+      if (p.name == probe) return p.point;
+    throw std::logic_error("angle of an unknown probe " + probe);
+  };
+  auto u = [&](const std::string& probe) {
+    return std::array<double, 2>{value("probe_" + probe + "_ux"), value("probe_" + probe + "_uy")};
+  };
+  ProbeValues out;
+  for (const auto& a : scene.angles)
+    out.emplace_back(a.name, segment_angle_degrees(point(a.from), point(a.to), u(a.from), u(a.to)));
+  return out;
+}
+
 }  // namespace
 
 RunOutcome run_stages(const CommPtr& comm, const Model& model, const std::string& path,
@@ -110,7 +132,7 @@ RunOutcome run_stages(const CommPtr& comm, const Model& model, const std::string
   };
   const double first_end = model.scene.stages.empty() ? 1.0 : model.scene.stages.front().end_time;
   std::vector<ImplicitStageReport> implicit_reports;
-  std::vector<std::pair<std::string, ProbeValues>> probes_by_stage;
+  std::vector<std::pair<std::string, ProbeValues>> probes_by_stage, angles_by_stage;
   // The first record: an explicit first stage writes it itself, once the start energies are
   // known (written here it would show a kinetic energy of 0 with a nonzero initial velocity).
   const bool explicit_first =
@@ -152,8 +174,9 @@ RunOutcome run_stages(const CommPtr& comm, const Model& model, const std::string
         std::ostringstream o;
         o << "stage '" << stage.name << "' done: " << s.steps << " steps, dt " << s.smallest_dt
           << " to " << s.largest_dt << ", worst energy balance error "
-          << 100 * s.worst_balance_error << " %, kinetic / internal energy " << s.kinetic_to_internal_mean
-          << " (time integrals over the stage), " << s.kinetic_to_internal_end << " at its end";
+          << 100 * s.worst_balance_error << " %, kinetic / internal energy "
+          << s.kinetic_to_internal_mean << " (time integrals over the stage), "
+          << s.kinetic_to_internal_end << " at its end";
         Log::info(o.str());
       }
     });
@@ -161,6 +184,13 @@ RunOutcome run_stages(const CommPtr& comm, const Model& model, const std::string
     memory.mark("stage '" + stage.name + "' (" + stage.driver + ")");
     // The probes where the stage left them (a springback is the difference of two stages').
     auto at_end = probe_values(recorder);
+    if (!model.scene.angles.empty()) {
+      auto angles = segment_angles(model.scene, at_end);
+      for (const auto& [name, degrees] : angles)
+        Log::info("  angle '" + name + "' at the end of stage '" + stage.name +
+                  "': " + std::to_string(degrees) + " degrees");
+      angles_by_stage.emplace_back(stage.name, std::move(angles));
+    }
     if (!at_end.empty()) probes_by_stage.emplace_back(stage.name, std::move(at_end));
   }
   RunOutcome outcome;
@@ -181,7 +211,7 @@ RunOutcome run_stages(const CommPtr& comm, const Model& model, const std::string
   }
   const auto memory_phases = memory_by_phase(comm, model);
   write_run_report(comm, model, path + ".report.json", path, state, outcome.errors, checks, seconds,
-                   implicit_reports, probes, memory_phases, probes_by_stage);
+                   implicit_reports, probes, memory_phases, probes_by_stage, angles_by_stage);
   Log::info("run report: " + path + ".report.json");
   return outcome;
 }

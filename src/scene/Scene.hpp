@@ -130,6 +130,11 @@ struct ProbeSpec {
   std::array<double, 3> point{0, 0, 0};
 };
 
+/// The angle of the segment between two probes (scene/SceneAngles.hpp).
+struct AngleSpec {
+  std::string name, from, to;
+};
+
 /// A node set made by the scene: the nodes of the mesh (or of the node set `within`) inside the
 /// axis-aligned box [lower, upper] (LS-DYNA *SET_NODE_GENERAL with BOX): a single pin, an edge.
 struct NodeSetSpec {
@@ -186,7 +191,7 @@ struct ContactSpec {
 
 /// initial_state: a record of an earlier run's results to start from (a restart).
 struct InitialStateSpec {
-  std::string file;           ///< resolved path
+  std::string file;            ///< resolved path
   std::optional<double> time;  ///< the record's time; empty: the last record
 };
 
@@ -230,6 +235,7 @@ struct Scene {
   std::string exact_solution;                     ///< verification.exact_solution, empty when none
   std::optional<UserSolutionSpec> user_solution;  ///< exact_solution "user"
   std::vector<ProbeSpec> probes;
+  std::vector<AngleSpec> angles;
 
   YAML::Node document;  ///< as written, with line marks (for cross-reference messages)
   YAML::Node resolved;  ///< validated, defaults filled (printed by `efg check`)

@@ -11,6 +11,7 @@
 #include "scene/InitialStateInput.hpp"
 #include "scene/PartFormulationCheck.hpp"
 #include "scene/PlasticityInput.hpp"
+#include "scene/SceneAngles.hpp"
 #include "scene/SceneNodeSets.hpp"
 #include "scene/SceneSchema.hpp"
 #include "scene/SchemaValidator.hpp"
@@ -81,6 +82,7 @@ class SceneBuilder {
     }
     read_initial_state_input(s_);
     read_node_set_input(s_);
+    read_angle_input(s_);
     std::vector<std::string> stage_names;
     for (const auto& st : r["stages"]) stage_names.push_back(st["name"].as<std::string>());
     check_stage_lists(s_, stage_names);

@@ -510,6 +510,14 @@ Spec build_scene_schema() {
           .required(
               "point",
               real_list("Reference coordinates, one entry per dimension.", "length").items(2, 3));
+  auto angle =
+      map("The angle in the x-y plane, in degrees from the x axis (atan2, in (-180, 180]), of the "
+          "deformed segment from probe `from` to probe `to`, in the run report at the end of "
+          "every stage (angles_by_stage): a springback angle is the difference of two stages' "
+          "values.")
+          .required("name", string("Angle name, unique."))
+          .required("from", string("Probe at the segment's start."))
+          .required("to", string("Probe at the segment's end."));
   SpecPtr root =
       map("An efg scene.")
           .optional("title", string("Free text written to the log and the Exodus title."), "\"\"")
@@ -560,6 +568,8 @@ Spec build_scene_schema() {
                     "[]")
           .optional("output", output_spec(), "{}")
           .optional("probes", list("Points sampled at every record.", probe).unique_names(), "[]")
+          .optional("angles", list("Angles of segments between probes.", angle).unique_names(),
+                    "[]")
           .optional("verification", verification_spec());
   return *root;
 }
