@@ -49,7 +49,7 @@ ExplicitDriver::ExplicitDriver(const ModelOperators& ops, const StageSpec& stage
                    ? std::make_unique<RigidContact>(ops, mass_, stage.name)
                    : nullptr),
       motion_(ops.model(), stage.name),
-      supports_(ops, stage.name),
+      supports_(ops, stage.name, stage.settings["transformation_traction"].as<bool>()),
       stable_(ops, mass_, largest_wall_penalty(ops.model().scene),
               supports_.active() ? StableTimeStep::ExtraStiffness(
                                        [this](const Vector& d, const Vector& x, Vector& y) {
@@ -343,7 +343,11 @@ ExplicitSummary ExplicitDriver::run(RunState& state, const StateOutput& output, 
   wall_dt_ = dt;
   start(state, dt);
   auto record = [&] {
-    state.reactions = motion_.reactions(f_support_);
+    // Constrained rows: the constraint's share R = -M a_free; the boundary terms (of every
+    // condition, on every row they reach) are counted by their own condition's totals.
+    Vector constraint(f_support_, Teuchos::Copy);
+    if (supports_.active()) constraint.update(1.0, supports_.last(), 1.0);
+    state.reactions = motion_.reactions(constraint);
     if (supports_.active()) {
       const auto weak = supports_.reactions();
       for (std::size_t c = 0; c < weak.size(); ++c)

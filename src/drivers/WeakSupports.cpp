@@ -4,14 +4,17 @@
 
 namespace efg {
 
-bool WeakSupports::wanted(const Scene& scene, const std::string& stage) {
+bool WeakSupports::wanted(const Scene& scene, const std::string& stage,
+                          bool transformation_traction) {
   for (const auto& bc : scene.boundary_conditions)
-    if (bc.type == "displacement" && bc.method != "transformation" && bc.stages.includes(stage))
+    if (bc.type == "displacement" && bc.stages.includes(stage) &&
+        (transformation_traction || bc.method != "transformation"))
       return true;
   return false;
 }
 
-WeakSupports::WeakSupports(const ModelOperators& ops, const std::string& stage)
+WeakSupports::WeakSupports(const ModelOperators& ops, const std::string& stage,
+                           bool transformation_traction)
     : ops_(ops),
       last_(ops.model().maps.owned_dofs),
       d_overlap_(ops.model().maps.overlap_dofs),
@@ -25,13 +28,18 @@ WeakSupports::WeakSupports(const ModelOperators& ops, const std::string& stage)
   for (const auto& bc : scene.boundary_conditions)
     transformation = transformation || (bc.type == "displacement" &&
                                         bc.method == "transformation" && bc.stages.includes(stage));
-  if (plastic && transformation)
+  // With the traction term the transformation points are in conditions_ (and keep their history
+  // there); without it only their plastic history is tracked.
+  if (plastic && transformation && !transformation_traction)
     tracked_ = std::make_unique<EssentialConditions>(
         ops.model(), ops.solid(), ops.exact(), EssentialConditions::Selection::transformation_only,
         stage);
-  if (!wanted(scene, stage)) return;
+  if (!wanted(scene, stage, transformation_traction)) return;
   conditions_ = std::make_unique<EssentialConditions>(
-      ops.model(), ops.solid(), ops.exact(), EssentialConditions::Selection::weak_only, stage);
+      ops.model(), ops.solid(), ops.exact(),
+      transformation_traction ? EssentialConditions::Selection::explicit_forces
+                              : EssentialConditions::Selection::weak_only,
+      stage);
   totals_.assign(conditions_->condition_count(), {0.0, 0.0, 0.0});
 }
 

@@ -25,10 +25,17 @@ class WeakSupports {
  public:
   /// Builds the boundary points only when the stage has a weakly enforced displacement
   /// condition (a scene builds only what it needs).
-  WeakSupports(const ModelOperators& ops, const std::string& stage);
+  /// `transformation_traction` (the explicit stage's key of that name): the transformation
+  /// conditions' boundary traction term acts too (their generalized dofs stay prescribed by
+  /// drivers/PrescribedMotion), so that the stage's equations on the free dofs are the implicit
+  /// stages' and an implicit equilibrium stays put.
+  WeakSupports(const ModelOperators& ops, const std::string& stage,
+               bool transformation_traction = false);
 
-  /// True when a displacement condition with method nitsche or penalty acts in `stage`.
-  static bool wanted(const Scene& scene, const std::string& stage);
+  /// True when a displacement condition with method nitsche or penalty (or any, with
+  /// `transformation_traction`) acts in `stage`.
+  static bool wanted(const Scene& scene, const std::string& stage,
+                     bool transformation_traction = false);
   bool active() const { return conditions_ != nullptr; }
 
   /// The prescribed values at `time` (value x curve; a condition without a curve holds its

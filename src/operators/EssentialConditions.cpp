@@ -73,8 +73,7 @@ EssentialConditions::EssentialConditions(const Model& model, const SolidOperator
     };
     for (const auto& component : bc.components)
       if (component && component->uses_time()) timed_[c] = setup.prescribed;
-    if (setup.method == 0 && selection != Selection::transformation_only)
-      add_collocated_nodes(model, op, setup);
+    if (setup.method == 0 && selection == Selection::all) add_collocated_nodes(model, op, setup);
     const std::size_t history_begin = committed_.size();
     const auto sides_found = add_boundary_points(model, op, setup);
     if (committed_.size() > history_begin)
@@ -441,6 +440,11 @@ void EssentialConditions::point_product(const BoundaryPoint& p, const Vector& d_
 void EssentialConditions::apply_boundary_stiffness(const Vector& d_overlap, const Vector& x_overlap,
                                                    Vector& y_overlap) const {
   for (const auto& p : points_) {
+    // Transformation points (explicit stages with transformation_traction): their traction
+    // term's stiffness is not symmetric, which the Hermitian eigensolver of the stable step
+    // cannot take (it failed on the bent strip); left out, the estimate misses a boundary term
+    // of the free rows (3e-6 of dt on the switched cantilever; dt_scale covers it).
+    if (p.method == 0) continue;
     if (dim_ == 2)
       point_product<2>(p, d_overlap, x_overlap, y_overlap);
     else

@@ -42,7 +42,9 @@ class EssentialConditions {
   /// of those, the ones active in `stage` ("": every condition, whatever its stages).
   /// transformation_only: the explicit stages' tracking of the transformation conditions'
   /// boundary-point history (drivers/WeakSupports), which they do not otherwise evaluate.
-  enum class Selection { all, weak_only, transformation_only };
+  /// explicit_forces: every condition's boundary points, no collocated rows (explicit stages
+  /// with transformation_traction: the transformation's traction term as a force).
+  enum class Selection { all, weak_only, transformation_only, explicit_forces };
   EssentialConditions(const Model& model, const SolidOperator& op, const ExactSolution* exact,
                       Selection selection = Selection::all, const std::string& stage = "");
 
@@ -59,7 +61,8 @@ class EssentialConditions {
                           std::vector<std::array<double, 3>>* totals = nullptr) const;
   void add_boundary_terms(const Vector& d_overlap, FEMatrix& K) const;
   /// y += K_b(d) x: the matrix of add_boundary_terms(d, K) applied to x without forming it (the
-  /// explicit stable-step estimate). Symmetric for nitsche and penalty by construction: the
+  /// explicit stable-step estimate; transformation points are left out). Symmetric for nitsche
+  /// and penalty by construction: the
   /// consistency and symmetric terms use one tangent, so the product is exactly symmetric where
   /// differences of the nonlinear terms would not be.
   void apply_boundary_stiffness(const Vector& d_overlap, const Vector& x_overlap,

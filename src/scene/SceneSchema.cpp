@@ -389,6 +389,15 @@ SpecPtr stage_spec() {
                              "-")
                             .at_least(0),
                         "1.5"),
+           optional_key(
+               "transformation_traction",
+               boolean("Displacement conditions with method transformation also apply their "
+                       "boundary traction term (the Wagner-Liu consistency term the implicit "
+                       "stages carry) as a force: an implicit equilibrium handed to this stage "
+                       "then stays put to round-off, as with nitsche. Off by default: the term "
+                       "evaluates the stress at the boundary points, which invert in severe "
+                       "impacts (docs/boundary_conditions.md, \"Explicit stages\")."),
+               "false"),
            optional_key("dt",
                         real("Fixed time step instead of the stable estimate.", "time").above(0)),
            optional_key(
