@@ -77,7 +77,7 @@ class ExplicitDriver {
   Vector mass_, inverse_mass_;
   std::unique_ptr<RigidContact> contact_;  ///< rigid walls, bodies and contacts, when any exist
   PrescribedMotion motion_;
-  WeakSupports supports_;  ///< nitsche / penalty displacement conditions (before stable_)
+  WeakSupports supports_;  ///< weak conditions, transformation traction (before stable_)
   StableTimeStep stable_;
   Vector f_ext_, f_ext_old_, f_wall_, f_wall_old_, f_int_, wall_overlap_, d_overlap_;
   void refuse_endless(double span, double dt, double dt_crit) const;
