@@ -13,6 +13,23 @@ bool WeakSupports::wanted(const Scene& scene, const std::string& stage,
   return false;
 }
 
+namespace {
+/// True when a displacement condition with the transformation method acts in `stage` and in an
+/// implicit stage after it.
+bool later_implicit_transformation(const Scene& scene, const std::string& stage) {
+  bool after = false;
+  for (const auto& later : scene.stages) {
+    if (after && later.driver == "implicit")
+      for (const auto& bc : scene.boundary_conditions)
+        if (bc.type == "displacement" && bc.method == "transformation" &&
+            bc.stages.includes(stage) && bc.stages.includes(later.name))
+          return true;
+    after = after || later.name == stage;
+  }
+  return false;
+}
+}  // namespace
+
 WeakSupports::WeakSupports(const ModelOperators& ops, const std::string& stage,
                            bool transformation_traction)
     : ops_(ops),
@@ -22,15 +39,14 @@ WeakSupports::WeakSupports(const ModelOperators& ops, const std::string& stage,
       x_overlap_(ops.model().maps.overlap_dofs),
       scratch_(ops.model().maps.owned_dofs) {
   const auto& scene = ops.model().scene;
-  bool plastic = false, transformation = false;
+  bool plastic = false;
   for (const auto& part : scene.parts)
     plastic = plastic || scene.find_material(part.material)->model == "j2_plasticity";
-  for (const auto& bc : scene.boundary_conditions)
-    transformation = transformation || (bc.type == "displacement" &&
-                                        bc.method == "transformation" && bc.stages.includes(stage));
   // With the traction term the transformation points are in conditions_ (and keep their history
-  // there); without it only their plastic history is tracked.
-  if (plastic && transformation && !transformation_traction)
+  // there); without it only their plastic history is tracked, and only for an implicit stage
+  // after this one that carries it on (tracking costs more than the internal force on a Taylor
+  // impact, whose only stage is explicit).
+  if (plastic && !transformation_traction && later_implicit_transformation(scene, stage))
     tracked_ = std::make_unique<EssentialConditions>(
         ops.model(), ops.solid(), ops.exact(), EssentialConditions::Selection::transformation_only,
         stage);

@@ -51,8 +51,8 @@ class WeakSupports {
   /// (collective), with the implicit drivers' sign.
   std::vector<std::array<double, 3>> reactions() const;
   /// The step is accepted at d: plastic boundary points keep their state, and those of the
-  /// transformation conditions (which act on the generalized values here) are evaluated at d, so
-  /// that the implicit stage after this one continues their history.
+  /// transformation conditions (which act on the generalized values here) are evaluated at d
+  /// when an implicit stage after this one continues their history.
   void commit_history(const Vector& d_owned);
 
  private:

@@ -126,8 +126,8 @@ void EssentialConditions::update_point_history(const BoundaryPoint& p,
                                                const Vector& d_overlap) const {
   double H[Dim][Dim] = {}, u[Dim] = {};
   interpolate_at<Dim>(p, d_overlap, u, H);
-  double P[Dim][Dim] = {}, A[Dim][Dim][Dim][Dim] = {};
-  if (!boundary_stress<Dim>(p, H, P, A))
+  double P[Dim][Dim] = {};
+  if (!boundary_stress<Dim>(p, H, P, nullptr))
     throw NumericalError("det F <= 0 at a boundary point of an essential condition");
 }
 
@@ -307,8 +307,8 @@ double EssentialConditions::constrained_value(const NodeConstraint& c,
 template <int Dim>
 bool EssentialConditions::boundary_stress(const BoundaryPoint& p, const double (&H)[Dim][Dim],
                                           double (&P)[Dim][Dim],
-                                          double (&A)[Dim][Dim][Dim][Dim]) const {
-  if (!p.law.plastic) return physics::stress_and_tangent<Dim>(p.law.elastic, H, P, A);
+                                          double (*A)[Dim][Dim][Dim][Dim]) const {
+  if (!p.law.plastic) return physics::stress<Dim>(p.law.elastic, H, P, A ? *A : nullptr);
   using State = double[physics::j2_state::count];
   const auto& old_state = *reinterpret_cast<const State*>(&committed_[p.history]);
   auto& new_state = *reinterpret_cast<State*>(&trial_[p.history]);
@@ -316,7 +316,10 @@ bool EssentialConditions::boundary_stress(const BoundaryPoint& p, const double (
   // Elastic probes (the explicit stable-step estimate) see the elastic predictor here too, as
   // the solid's points do (MaterialStates::elastic_probe).
   const auto law = states_->elastic_probe() ? physics::without_yield(p.law.j2) : p.law.j2;
-  return j2_stress_and_tangent<Dim>(law, H, old_state, states_->step_time(), P, A, new_state,
+  if (!A)
+    return physics::j2_update<double, Dim>(law, H, old_state, states_->step_time(), P, new_state,
+                                           cauchy);
+  return j2_stress_and_tangent<Dim>(law, H, old_state, states_->step_time(), P, *A, new_state,
                                     cauchy);
 }
 
@@ -327,7 +330,7 @@ EssentialConditions::PointState EssentialConditions::evaluate_point(const Bounda
   double H[Dim][Dim] = {}, u[Dim] = {};
   interpolate_at<Dim>(p, d_overlap, u, H);
   double P[Dim][Dim] = {}, A[Dim][Dim][Dim][Dim] = {};
-  if (!boundary_stress<Dim>(p, H, P, A))
+  if (!boundary_stress<Dim>(p, H, P, &A))
     throw NumericalError("det F <= 0 at a boundary point of an essential condition");
   PointState st;
   st.dim = Dim;
