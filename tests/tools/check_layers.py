@@ -7,7 +7,8 @@ no cycle can form. The order, lowest first:
   core < expressions < geometry < mesh < parallel < io < scene < discretization
   < model                                model data the operators read (scene, mesh, parts,
                                          curves, exact solutions)
-  < solvers < operators < verification   verification: error norms of a solution
+  < solvers < operators < shells         shells: the shell formulation beside the solid's
+  < verification                         verification: error norms of a solution
   < contact                              rigid bodies and contact forces (operators' level)
   < drivers < run < app
 
@@ -18,7 +19,7 @@ import re
 import sys
 
 ORDER = ["tensor", "materials", "core", "expressions", "geometry", "mesh", "parallel", "io", "scene",
-         "discretization", "model", "solvers", "operators", "verification", "contact", "drivers",
+         "discretization", "model", "solvers", "operators", "shells", "verification", "contact", "drivers",
          "run",
          "app"]
 RANK = {name: i for i, name in enumerate(ORDER)}

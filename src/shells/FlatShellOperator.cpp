@@ -1,0 +1,202 @@
+#include "shells/FlatShellOperator.hpp"
+
+#include <Teuchos_CommHelpers.hpp>
+#include <Tpetra_Import.hpp>
+
+#include <map>
+#include <stdexcept>
+
+#include "core/Errors.hpp"
+#include "discretization/ShapeFunctions.hpp"
+#include "operators/CouplingGraph.hpp"
+#include "shells/ShellConstraints.hpp"
+#include "shells/ShellSpacing.hpp"
+
+namespace efg {
+namespace {
+
+constexpr int nd = shell_dofs_per_node;
+
+}  // namespace
+
+FlatShellOperator::FlatShellOperator(const Model& model, int thickness_points,
+                                     double shear_stabilization)
+    : model_(model),
+      maps_(make_dof_maps(model.maps.owned_nodes->getComm(), model.partition, nd)),
+      alpha_(shear_stabilization) {
+  if (model.mesh.dimension != 2)
+    throw InputError(model.scene.file + ": flat shells need a 2D mid-surface mesh");
+  for (const auto& d : model.parts) {
+    const auto& part = *d.part;
+    const auto& material = *model.scene.find_material(part.material);
+    if (material.model != "linear_elastic")
+      throw InputError(model.scene.file + ": part '" + part.name +
+                       "': shells take a linear_elastic material in this version, not " +
+                       material.model);
+    if (d.points.scheme == Integration::gauss)
+      throw InputError(model.scene.file + ": part '" + part.name +
+                       "': shells are integrated at the particles (scni or nodal), not gauss");
+    sections_.push_back(physics::elastic_mindlin_section(material.constants.at("youngs_modulus"),
+                                                         material.constants.at("poissons_ratio"),
+                                                         part.thickness, thickness_points));
+    thickness_.push_back(part.thickness);
+    // Direct gradients and values of the shape functions at the points (the shear rows).
+    const auto& ip = d.points;
+    const auto direct = evaluate_shape_functions(
+        d.cloud, ip.x.data(), ip.size(), true,
+        [&](std::size_t p) { return "shell point of particle " + std::to_string(ip.node[p] + 1); });
+    const auto overlap_lid = [&](LocalIndex node) {
+      return maps_.overlap_nodes->getLocalElement(static_cast<GlobalOrdinal>(node));
+    };
+    std::vector<Point> points(ip.size());
+    for (std::size_t q = 0; q < ip.size(); ++q) {
+      std::map<LocalIndex, std::size_t> slot;  // cloud particle -> entry of the point
+      Point& p = points[q];
+      p.weight = ip.weight[q];
+      p.spacing = shell_spacing(d.cloud, q);  // SCNI and nodal points: owned particles in order
+      const auto entry = [&](LocalIndex particle) {
+        const auto [it, added] = slot.emplace(particle, p.node.size());
+        if (added) {
+          p.node.push_back(overlap_lid(d.cloud.mesh_node[static_cast<std::size_t>(particle)]));
+          p.b.insert(p.b.end(), {0.0, 0.0});
+          p.g.insert(p.g.end(), {0.0, 0.0});
+          p.phi.push_back(0.0);
+        }
+        return it->second;
+      };
+      for (auto k = ip.gradients.offsets[q]; k < ip.gradients.offsets[q + 1]; ++k) {
+        const auto e = entry(ip.gradients.particles[k]);
+        p.b[2 * e] = ip.gradients.values[2 * k];
+        p.b[2 * e + 1] = ip.gradients.values[2 * k + 1];
+      }
+      for (auto k = direct.neighbors.offsets[q]; k < direct.neighbors.offsets[q + 1]; ++k) {
+        const auto e = entry(direct.neighbors.particles[k]);
+        p.phi[e] = direct.phi[k];
+        p.g[2 * e] = direct.grad[2 * k];
+        p.g[2 * e + 1] = direct.grad[2 * k + 1];
+      }
+    }
+    points_.push_back(std::move(points));
+  }
+}
+
+std::vector<double> FlatShellOperator::point_stiffness(const Point& p, std::size_t part) const {
+  const auto s = section_at(part, p.spacing);
+  const std::size_t n = p.node.size(), cols = n * nd;
+  std::vector<double> K(cols * cols, 0.0);
+  std::vector<std::array<std::array<double, nd>, shell_strains>> SB(n);
+  std::vector<double> B(n * shell_strains * nd);
+  for (std::size_t a = 0; a < n; ++a) {
+    double Ba[shell_strains][nd], SBa[shell_strains][nd];
+    plate_strain_rows({p.b[2 * a], p.b[2 * a + 1]}, {p.g[2 * a], p.g[2 * a + 1]}, p.phi[a], Ba);
+    resultant_rows(s, Ba, SBa);
+    for (int i = 0; i < shell_strains; ++i)
+      for (int c = 0; c < nd; ++c) {
+        B[(a * shell_strains + static_cast<std::size_t>(i)) * nd + static_cast<std::size_t>(c)] =
+            Ba[i][c];
+        SB[a][static_cast<std::size_t>(i)][static_cast<std::size_t>(c)] = SBa[i][c];
+      }
+  }
+  for (std::size_t a = 0; a < n; ++a)
+    for (std::size_t b = 0; b < n; ++b)
+      for (std::size_t c = 0; c < nd; ++c)
+        for (std::size_t e = 0; e < nd; ++e) {
+          double v = 0;
+          for (std::size_t i = 0; i < shell_strains; ++i)
+            v += B[(a * shell_strains + i) * nd + c] * SB[b][i][e];
+          K[(a * nd + c) * cols + b * nd + e] = p.weight * v;
+        }
+  return K;
+}
+
+Teuchos::RCP<FlatShellOperator::Matrix> FlatShellOperator::stiffness(
+    const ShellConstraints& constraints) const {
+  CouplingGraph couplings(maps_.overlap_nodes->getNodeNumElements());
+  for (const auto& part : points_)
+    for (const auto& p : part) couplings.add_clique(p.node.data(), p.node.size());
+  constraints.add_couplings(couplings);
+  auto K = Teuchos::rcp(new Matrix(couplings.build(maps_)));
+  K->beginAssembly();
+  std::vector<int> cols;
+  for (std::size_t part = 0; part < points_.size(); ++part)
+    for (const auto& p : points_[part]) {
+      const auto Kp = point_stiffness(p, part);
+      const std::size_t n = p.node.size(), width = n * nd;
+      cols.resize(width);
+      for (std::size_t a = 0; a < n; ++a)
+        for (std::size_t c = 0; c < nd; ++c)
+          cols[a * nd + c] = p.node[a] * nd + static_cast<int>(c);
+      for (std::size_t r = 0; r < width; ++r)
+        K->sumIntoLocalValues(cols[r], static_cast<int>(width), Kp.data() + r * width, cols.data());
+    }
+  constraints.add_edge_terms(*K);
+  K->endAssembly();
+  K->beginModify();
+  constraints.replace_rows(*K);
+  K->endModify();
+  return K;
+}
+
+void FlatShellOperator::add_pressure(const std::vector<double>& pressure_per_part,
+                                     Vector& f_owned) const {
+  Vector f_overlap(maps_.overlap_dofs);
+  {
+    auto f = f_overlap.getLocalViewHost(Tpetra::Access::ReadWrite);
+    for (std::size_t part = 0; part < points_.size(); ++part)
+      for (const auto& p : points_[part])
+        for (std::size_t a = 0; a < p.node.size(); ++a)
+          f(static_cast<std::size_t>(p.node[a]) * nd + shell_w, 0) +=
+              p.weight * p.phi[a] * pressure_per_part[part];
+  }
+  Tpetra::Export<> exporter(maps_.overlap_dofs, maps_.owned_dofs);
+  f_owned.doExport(f_overlap, exporter, Tpetra::ADD);
+}
+
+FlatShellOperator::Vector FlatShellOperator::to_overlap(const Vector& d_owned) const {
+  Vector d(maps_.overlap_dofs);
+  Tpetra::Import<> importer(maps_.owned_dofs, maps_.overlap_dofs);
+  d.doImport(d_owned, importer, Tpetra::INSERT);
+  return d;
+}
+
+std::vector<double> FlatShellOperator::physical_values(const Vector& d_owned) const {
+  const auto d_overlap = to_overlap(d_owned);
+  const auto d = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
+  const auto& owned = *maps_.owned_nodes;
+  const auto& overlap = *maps_.overlap_nodes;
+  std::vector<double> out(owned.getNodeNumElements() * nd, 0.0);
+  for (const auto& part : model_.parts) {
+    const auto& rows = part.particle_values;
+    for (std::size_t r = 0; r < part.cloud.owned_count; ++r) {
+      const auto row = static_cast<std::size_t>(
+          owned.getLocalElement(static_cast<GlobalOrdinal>(part.cloud.mesh_node[r])));
+      for (auto k = rows.offsets[r]; k < rows.offsets[r + 1]; ++k) {
+        const auto node = part.cloud.mesh_node[static_cast<std::size_t>(rows.particles[k])];
+        const auto lid = static_cast<std::size_t>(overlap.getLocalElement(node));
+        for (std::size_t c = 0; c < nd; ++c)
+          out[row * nd + c] += rows.values[k] * d(lid * nd + c, 0);
+      }
+    }
+  }
+  return out;
+}
+
+double FlatShellOperator::strain_energy(const Vector& d_owned) const {
+  const auto d_overlap = to_overlap(d_owned);
+  const auto d = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
+  double energy = 0;
+  for (std::size_t part = 0; part < points_.size(); ++part)
+    for (const auto& p : points_[part]) {
+      const auto Kp = point_stiffness(p, part);
+      const std::size_t width = p.node.size() * nd;
+      std::vector<double> x(width);
+      for (std::size_t a = 0; a < p.node.size(); ++a)
+        for (std::size_t c = 0; c < nd; ++c)
+          x[a * nd + c] = d(static_cast<std::size_t>(p.node[a]) * nd + c, 0);
+      for (std::size_t r = 0; r < width; ++r)
+        for (std::size_t s = 0; s < width; ++s) energy += 0.5 * x[r] * Kp[r * width + s] * x[s];
+    }
+  return energy;
+}
+
+}  // namespace efg

@@ -1,0 +1,78 @@
+// Linear flat Reissner-Mindlin shells (plates with membrane action) on a 2D model: the parts of a
+// 2D scene are the mid-surface in the x-y plane, each particle carries five generalized dofs
+// (u, v, w, theta_x, theta_y; shells/PlateStrains.hpp), the part's thickness is the shell's.
+//
+// Stiffness (SCNI; Chen et al. 2001 for membrane and bending, Wang & Chen 2004 for the shear):
+//   K = sum_L a_L B(L)^T S B(L),  S = diag(A, D, k_s G t I)  (physics MindlinSection)
+// over the nodal integration points L (weights a_L the nodal areas), with the smoothed gradients
+// for the membrane and bending rows and the direct gradients for the shear rows. A pressure q
+// (force per area along +z) gives f_(I,w) = sum_L a_L phi_I(X_L) q, consistent with the same
+// nodal quadrature. Shells are a formulation module of their own beside SolidOperator (a solid
+// scene builds none of this); this first slice is linear, implicit and flat.
+#pragma once
+
+#include <Tpetra_FECrsMatrix.hpp>
+#include <Tpetra_Vector.hpp>
+
+#include <array>
+#include <vector>
+
+#include "materials/MindlinSection.hpp"
+#include "model/Model.hpp"
+#include "parallel/DofMaps.hpp"
+#include "shells/PlateStrains.hpp"
+
+namespace efg {
+
+class ShellConstraints;
+
+class FlatShellOperator {
+ public:
+  using Matrix = Tpetra::FECrsMatrix<>;
+  using Vector = Tpetra::Vector<>;
+
+  /// Every part of the 2D model is a shell of its thickness and elastic material (E, nu);
+  /// `thickness_points` Gauss points integrate the section through the thickness;
+  /// `shear_stabilization` is alpha of with_stabilized_shear (0: none).
+  explicit FlatShellOperator(const Model& model, int thickness_points = 2,
+                             double shear_stabilization = 0.1);
+
+  const DofMaps& maps() const { return maps_; }
+  const physics::MindlinSection& section(std::size_t part) const { return sections_[part]; }
+  /// The section of part p where the particle spacing is h (its shear stabilized).
+  physics::MindlinSection section_at(std::size_t part, double h) const {
+    return physics::with_stabilized_shear(sections_[part], thickness_[part], h, alpha_);
+  }
+
+  /// K on the owned dofs (fill complete), with the constraints' edge terms and the rows of
+  /// constrained dofs replaced by their collocation rows (ShellConstraints).
+  Teuchos::RCP<Matrix> stiffness(const ShellConstraints& constraints) const;
+  /// f_(I,w) += sum_L a_L phi_I(X_L) q_p for every part p (q: force per area along +z), owned.
+  void add_pressure(const std::vector<double>& pressure_per_part, Vector& f_owned) const;
+  /// The physical values u^h(X_J) = sum_I phi_I(X_J) d_I of every owned particle (5 per
+  /// particle, in the order of maps().owned_nodes).
+  std::vector<double> physical_values(const Vector& d_owned) const;
+  /// Strain energy 1/2 d^T K d of this rank's points (without constraints).
+  double strain_energy(const Vector& d_owned) const;
+
+ private:
+  /// One integration point: its weight and, per particle reaching it, the particle's overlap
+  /// node index, smoothed gradient b, direct gradient g and value phi.
+  struct Point {
+    double weight = 0, spacing = 0;
+    std::vector<int> node;
+    std::vector<double> b, g, phi;  // 2, 2, 1 per particle
+  };
+  /// K_L = a_L B^T S B of one point (5n x 5n, row major).
+  std::vector<double> point_stiffness(const Point& p, std::size_t part) const;
+  Vector to_overlap(const Vector& d_owned) const;
+
+  const Model& model_;
+  DofMaps maps_;
+  double alpha_;
+  std::vector<physics::MindlinSection> sections_;
+  std::vector<double> thickness_;
+  std::vector<std::vector<Point>> points_;  ///< per part
+};
+
+}  // namespace efg

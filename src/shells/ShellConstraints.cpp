@@ -1,0 +1,150 @@
+#include "shells/ShellConstraints.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "core/Errors.hpp"
+
+namespace efg {
+namespace {
+constexpr int nd = shell_dofs_per_node;
+}
+
+ShellConstraints::ShellConstraints(const Model& model, const FlatShellOperator& op,
+                                   const std::vector<ShellSupport>& supports)
+    : op_(op) {
+  const auto& overlap = *op.maps().overlap_nodes;
+  const auto lid = [&](LocalIndex node) {
+    return overlap.getLocalElement(static_cast<GlobalOrdinal>(node));
+  };
+  // (node, component) -> value; a later support's value wins on shared nodes (corners).
+  std::map<std::pair<LocalIndex, int>, double> value;
+  for (const auto& s : supports) {
+    const auto* set = model.mesh.find_node_set(s.node_set);
+    if (!set)
+      throw InputError(model.scene.file + ": shell support: node set '" + s.node_set +
+                       "' is not in the mesh");
+    for (auto node : set->nodes) {
+      const double* x = model.mesh.coordinates.data() + 2 * static_cast<std::size_t>(node);
+      for (int c = 0; c < nd; ++c)
+        if (s.value[static_cast<std::size_t>(c)])
+          value[{node, c}] = s.value[static_cast<std::size_t>(c)](x);
+    }
+    long long sides = 0;
+    Edge edge;
+    for (int c = 0; c < nd; ++c)
+      edge.held[static_cast<std::size_t>(c)] =
+          static_cast<bool>(s.value[static_cast<std::size_t>(c)]);
+    for (auto& p : shell_edge_points(model, s.node_set, &sides)) {
+      edge.node.clear();
+      for (auto n : p.node) edge.node.push_back(lid(n));
+      edge.point = std::move(p);
+      edges_.push_back(edge);
+    }
+    if (sides == 0)
+      throw InputError(model.scene.file + ": shell support: node set '" + s.node_set +
+                       "' covers no edge of a shell part");
+  }
+  for (std::size_t p = 0; p < model.parts.size(); ++p) {
+    const auto& part = model.parts[p];
+    const auto& section = op.section(p);
+    const auto& rows = part.particle_values;
+    for (std::size_t r = 0; r < part.cloud.owned_count; ++r)
+      for (int c = 0; c < nd; ++c) {
+        const auto it = value.find({part.cloud.mesh_node[r], c});
+        if (it == value.end()) continue;
+        Row row;
+        row.node = lid(part.cloud.mesh_node[r]);
+        row.component = c;
+        row.scale = c < shell_rx ? section.membrane[0][0] : section.bending[0][0];
+        row.value = it->second;
+        for (auto k = rows.offsets[r]; k < rows.offsets[r + 1]; ++k) {
+          row.columns.push_back(
+              lid(part.cloud.mesh_node[static_cast<std::size_t>(rows.particles[k])]));
+          row.phi.push_back(rows.values[k]);
+        }
+        rows_.push_back(std::move(row));
+        value.erase(it);  // a node shared by two parts is collocated once
+      }
+  }
+}
+
+void ShellConstraints::add_couplings(CouplingGraph& graph) const {
+  for (const auto& e : edges_) graph.add_clique(e.node.data(), e.node.size());
+  for (const auto& r : rows_) graph.add_row(r.node, r.columns.data(), r.columns.size());
+}
+
+void ShellConstraints::add_edge_terms(const Edge& e, FlatShellOperator::Matrix& K) const {
+  const auto& p = e.point;
+  const std::size_t n = p.node.size(), width = n * nd;
+  // T[c][k]: the traction of component c that unit column dof k produces.
+  std::vector<double> T(nd * width);
+  std::vector<int> cols(width);
+  for (std::size_t a = 0; a < n; ++a) {
+    double B[shell_strains][nd], SB[shell_strains][nd];
+    const double g[2] = {p.grad[2 * a], p.grad[2 * a + 1]};
+    plate_strain_rows(g, g, p.phi[a], B);
+    resultant_rows(op_.section_at(p.part, p.spacing), B, SB);
+    for (int d = 0; d < nd; ++d) {
+      const auto k = a * nd + static_cast<std::size_t>(d);
+      cols[k] = e.node[a] * nd + d;
+      double R[shell_strains], t[nd];
+      for (int r = 0; r < shell_strains; ++r) R[r] = SB[r][d];
+      edge_traction(R, p.normal, t);
+      for (int c = 0; c < nd; ++c) T[static_cast<std::size_t>(c) * width + k] = t[c];
+    }
+  }
+  std::vector<double> vals(width);
+  for (std::size_t a = 0; a < n; ++a)
+    for (int c = 0; c < nd; ++c) {
+      if (!e.held[static_cast<std::size_t>(c)]) continue;
+      for (std::size_t k = 0; k < width; ++k)
+        vals[k] = -p.length * p.phi[a] * T[static_cast<std::size_t>(c) * width + k];
+      K.sumIntoLocalValues(e.node[a] * nd + c, static_cast<int>(width), vals.data(), cols.data());
+    }
+}
+
+void ShellConstraints::add_edge_terms(FlatShellOperator::Matrix& K) const {
+  for (const auto& e : edges_) add_edge_terms(e, K);
+}
+
+void ShellConstraints::replace_rows(FlatShellOperator::Matrix& K) const {
+  // Modify mode takes local indices: rows are owned dofs, columns the matrix's column map.
+  const auto& col_map = *K.getColMap();
+  const auto& overlap_dofs = *op_.maps().overlap_dofs;
+  std::vector<int> cols;
+  std::vector<double> vals;
+  for (auto& r : rows_) {
+    const int row = r.node * nd + r.component;
+    const auto count = K.getNumEntriesInLocalRow(row);
+    Teuchos::Array<int> all_cols(count);
+    Teuchos::Array<double> zeros(count);
+    std::size_t found = 0;
+    K.getLocalRowCopy(row, all_cols(), zeros(), found);
+    // The scale of the row it replaces (its largest entry), so that the collocation rows of
+    // rotations, whose stiffness rows carry the shear term k_s G t phi^2 of a thin shell, are not
+    // many orders of magnitude smaller than their neighbours' (pivoting, round-off).
+    double scale = 0;
+    for (auto v : zeros) scale = std::max(scale, std::abs(v));
+    r.scale = scale > 0 ? scale : r.scale;
+    std::fill(zeros.begin(), zeros.end(), 0.0);
+    K.replaceLocalValues(row, all_cols(), zeros());
+    cols.clear();
+    vals.clear();
+    for (std::size_t k = 0; k < r.columns.size(); ++k) {
+      cols.push_back(
+          col_map.getLocalElement(overlap_dofs.getGlobalElement(r.columns[k] * nd + r.component)));
+      vals.push_back(r.scale * r.phi[k]);
+    }
+    K.replaceLocalValues(row, static_cast<int>(cols.size()), vals.data(), cols.data());
+  }
+}
+
+void ShellConstraints::set_values(FlatShellOperator::Vector& rhs_owned) const {
+  auto rhs = rhs_owned.getLocalViewHost(Tpetra::Access::ReadWrite);
+  for (const auto& r : rows_)
+    rhs(static_cast<std::size_t>(r.node * nd + r.component), 0) = r.scale * r.value;
+}
+
+}  // namespace efg

@@ -1,0 +1,89 @@
+// Prescribed generalized values of shells (clamped, simply supported and symmetry edges) by the
+// transformation method in its collocation form (Chen, Pan, Wu & Liu 1996) with the boundary
+// traction term of Wagner & Liu (2000):
+//
+// - with non-interpolating MLS shape functions a particle's dof is not the field's value there,
+//   so the equation row of each constrained dof (J, c) is replaced by the collocation row
+//     s_c sum_I phi_I(X_J) d_(I,c) = s_c g_c(X_J),
+//   which makes the physical value exactly g_c at every particle of the node set; s_c (the
+//   section's A_11 for translations, D_11 for rotations) puts the rows on the scale of the
+//   stiffness rows they replace and does not change the solution;
+// - the test functions phi_I of the remaining rows do not vanish on the constrained edges, so
+//   those rows keep the edge work of the unknown reaction, - integral phi_I T_c(d) ds, with the
+//   edge tractions of component c computed from the resultants (N n, Q . n, M n; see
+//   edge_traction). Without it the method is not consistent: a constant-bending state would not
+//   solve the discrete equations (the patch tests fail).
+#pragma once
+
+#include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_Vector.hpp>
+
+#include <array>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "operators/CouplingGraph.hpp"
+#include "shells/FlatShellOperator.hpp"
+#include "shells/ShellBoundary.hpp"
+
+namespace efg {
+
+/// The value of one component along a node set, as a function of the reference position.
+using ShellValue = std::function<double(const double* x)>;
+
+struct ShellSupport {
+  std::string node_set;
+  /// u, v, w, theta_x, theta_y held on the set (an empty function: the component is free).
+  std::array<ShellValue, shell_dofs_per_node> value;
+};
+
+class ShellConstraints {
+ public:
+  /// Throws InputError naming the scene file and the node set when a set is missing or covers
+  /// no edge of a shell part.
+  ShellConstraints(const Model& model, const FlatShellOperator& op,
+                   const std::vector<ShellSupport>& supports);
+
+  /// The couplings of the edge terms and of the collocation rows.
+  void add_couplings(CouplingGraph& graph) const;
+  /// Adds the edge traction terms (assembly mode; overlap rows).
+  void add_edge_terms(FlatShellOperator::Matrix& K) const;
+  /// Replaces the rows of this rank's constrained dofs by their collocation rows (modify mode).
+  void replace_rows(FlatShellOperator::Matrix& K) const;
+  /// (after replace_rows, whose row scales it uses)
+  /// rhs(J, c) = s_c g_c(X_J) on this rank's constrained dofs (other entries untouched).
+  void set_values(FlatShellOperator::Vector& rhs_owned) const;
+
+ private:
+  struct Row {
+    int node = 0, component = 0;  ///< owned (= overlap) node index of J, component c
+    double scale = 1, value = 0;
+    std::vector<int> columns;  ///< overlap node indices of the particles reaching X_J
+    std::vector<double> phi;   ///< phi_I(X_J)
+  };
+  struct Edge {
+    ShellEdgePoint point;
+    std::vector<int> node;  ///< overlap node indices of point.node
+    std::array<bool, shell_dofs_per_node> held{};
+  };
+  void add_edge_terms(const Edge& e, FlatShellOperator::Matrix& K) const;
+
+  const FlatShellOperator& op_;
+  mutable std::vector<Row> rows_;  ///< this rank's (replace_rows sets the scales)
+  std::vector<Edge> edges_;        ///< this rank's
+};
+
+/// The edge tractions conjugate to (u, v, w, theta_x, theta_y) from the resultants
+/// R = (N_xx, N_yy, N_xy, M_xx, M_yy, M_xy, Q_x, Q_y) on an edge of outward normal n:
+/// (N n)_x, (N n)_y, Q . n, -(M n)_y, (M n)_x (the rotation theta_x turns the normal by -y).
+inline void edge_traction(const double (&R)[shell_strains], const std::array<double, 2>& n,
+                          double (&T)[shell_dofs_per_node]) {
+  T[shell_u] = R[0] * n[0] + R[2] * n[1];
+  T[shell_v] = R[2] * n[0] + R[1] * n[1];
+  T[shell_w] = R[6] * n[0] + R[7] * n[1];
+  T[shell_rx] = -(R[5] * n[0] + R[4] * n[1]);
+  T[shell_ry] = R[3] * n[0] + R[5] * n[1];
+}
+
+}  // namespace efg
