@@ -1,4 +1,5 @@
 #include "run/RunChecks.hpp"
+#include "run/ShellRun.hpp"
 
 #include <algorithm>
 #include <memory>
@@ -71,6 +72,7 @@ void check_run_inputs(const CommPtr& comm, const Scene& scene, const BackgroundM
 }
 
 void check_model_setup(const CommPtr& comm, const Model& model) {
+  if (model.scene.has_shells()) return run_collectively(comm, [&] { check_shell_setup(model); });
   std::shared_ptr<ModelOperators> ops;
   run_collectively(comm, [&] { ops = std::make_shared<ModelOperators>(model); });
   double start = 0;

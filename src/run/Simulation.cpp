@@ -26,6 +26,7 @@
 #include "run/RunRecorder.hpp"
 #include "run/RunReport.hpp"
 #include "run/RunSummary.hpp"
+#include "run/ShellRun.hpp"
 #include "scene/SceneAngles.hpp"
 #include "verification/ErrorNorms.hpp"
 
@@ -100,6 +101,7 @@ ProbeValues segment_angles(const Scene& scene, const ProbeValues& at_end) {
 
 RunOutcome run_stages(const CommPtr& comm, const Model& model, const std::string& path,
                       double setup_seconds) {
+  if (model.scene.has_shells()) return run_shell_stages(comm, model, path, setup_seconds);
   const auto started = std::chrono::steady_clock::now();
   // A scene builds only what it needs: the stiffness graph and solvers only for implicit stages.
   std::shared_ptr<ModelOperators> ops;

@@ -53,6 +53,13 @@ struct SectionSpec {
   Formulation formulation = Formulation::small_strain;
 };
 
+/// parts[].shell: the part is a Reissner-Mindlin shell whose mid-surface is its (2D) mesh.
+struct ShellSpec {
+  double thickness = 1.0;
+  int thickness_points = 2;          ///< Gauss points through the thickness
+  double shear_stabilization = 0.1;  ///< alpha of k_s G t t^2 / (t^2 + alpha h^2)
+};
+
 struct PartSpec {
   std::string name;
   std::vector<std::string> blocks;
@@ -61,6 +68,7 @@ struct PartSpec {
   double thickness = 1.0;
   bool plane_stress = false;
   PartFormulation formulation = PartFormulation::displacement;
+  std::optional<ShellSpec> shell;  ///< a shell part (src/shells); empty: a solid
 };
 
 struct MaterialSpec {
@@ -94,6 +102,7 @@ struct BoundaryConditionSpec {
   std::string method;
   std::optional<double> penalty;  ///< alpha of beta = alpha E / h; method default when empty
   std::array<std::optional<ScalarField>, 3> components;
+  std::array<std::optional<ScalarField>, 2> rotations;  ///< shells: about x and y
   std::array<bool, 3> from_exact{false, false,
                                  false};  ///< components taken from the exact solution
   std::string curve;                      ///< empty: constant
@@ -102,7 +111,7 @@ struct BoundaryConditionSpec {
 
 struct LoadSpec {
   std::string name;
-  std::string type;  ///< traction | pressure | nodal_force | body_force
+  std::string type;  ///< traction | pressure | nodal_force | body_force | shell_pressure
   std::string set;   ///< side set or node set; empty for body forces
   std::vector<std::string> parts;
   std::vector<ScalarField> value;  ///< traction, body force, pressure: may vary in x, y, z, t
@@ -242,6 +251,12 @@ struct Scene {
 
   const MaterialSpec* find_material(const std::string& name) const;
   const CurveSpec* find_curve(const std::string& name) const;
+  /// True when a part is a shell (the run then takes the shell path, src/shells).
+  bool has_shells() const {
+    for (const auto& p : parts)
+      if (p.shell) return true;
+    return false;
+  }
 };
 
 }  // namespace efg

@@ -11,6 +11,7 @@
 #include "scene/ContactInput.hpp"
 #include "scene/ExpressionChecks.hpp"
 #include "scene/SchemaValidator.hpp"
+#include "scene/ShellChecks.hpp"
 #include "scene/Suggest.hpp"
 
 namespace efg {
@@ -91,7 +92,7 @@ class Checker {
       require_name(d["boundary_conditions"][i]["node_set"], path + ".node_set", bc.node_set,
                    "node set", node_sets);
       require_nodes(d["boundary_conditions"][i]["node_set"], path + ".node_set", bc.node_set);
-      if (m_.dimension == 2 && (bc.components[2] || bc.from_exact[2]))
+      if (m_.dimension == 2 && !s_.has_shells() && (bc.components[2] || bc.from_exact[2]))
         fail(bc.components[2] ? d["boundary_conditions"][i]["z"]
                               : d["boundary_conditions"][i]["from_exact_solution"],
              path, "a z component in a 2D mesh; expected x and y only");
@@ -106,7 +107,7 @@ class Checker {
         require_name(ld["node_set"], path + ".node_set", load.set, "node set", node_sets);
         require_nodes(ld["node_set"], path + ".node_set", load.set);
       }
-      if (load.type != "pressure" && !load.from_exact)
+      if (load.type != "pressure" && load.type != "shell_pressure" && !load.from_exact)
         require_dimension(ld["value"], path + ".value", load.value.size());
     }
     for (std::size_t i = 0; i < s_.rigid_walls.size(); ++i) {
@@ -374,6 +375,7 @@ class Checker {
 }  // namespace
 
 void check_scene_against_mesh(const Scene& scene, const BackgroundMesh& mesh) {
+  check_shell_scene(scene, mesh);
   Checker(scene, mesh).run();
 }
 

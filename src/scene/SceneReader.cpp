@@ -211,6 +211,9 @@ class SceneBuilder {
     part.plane_stress = p["plane"].as<std::string>() == "stress";
     if (p["formulation"].as<std::string>() == "mixed_up")
       part.formulation = PartFormulation::mixed_up;
+    if (const auto& sh = p["shell"]; sh)
+      part.shell = ShellSpec{sh["thickness"].as<double>(), sh["thickness_points"].as<int>(),
+                             sh["shear_stabilization"].as<double>()};
     const auto* material = s_.find_material(part.material);
     if (!material) {
       std::string names;
@@ -306,6 +309,11 @@ class SceneBuilder {
       if (b[axes[c]])
         bc.components[c] = field(b[axes[c]], doc[axes[c]], path + "." + axes[c],
                                  ExpressionVariables::position_and_time);
+    const char* rotations[2] = {"rx", "ry"};
+    for (std::size_t c = 0; c < 2; ++c)
+      if (b[rotations[c]])
+        bc.rotations[c] = field(b[rotations[c]], doc[rotations[c]], path + "." + rotations[c],
+                                ExpressionVariables::position_and_time);
     if (b["from_exact_solution"])
       for (const auto& c : b["from_exact_solution"]) {
         const auto axis = static_cast<std::size_t>(c.as<std::string>()[0] - 'x');

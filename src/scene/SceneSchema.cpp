@@ -2,6 +2,7 @@
 
 #include "scene/ContactSchema.hpp"
 #include "scene/ExactSolutionNames.hpp"
+#include "scene/ShellSchema.hpp"
 
 namespace efg {
 namespace {
@@ -108,6 +109,7 @@ SpecPtr part_spec() {
           real("Out-of-plane thickness (2D plane stress and plane strain).", "length").above(0),
           "1")
       .optional("plane", choice("2D assumption.", {"strain", "stress"}), "strain")
+      .optional("shell", shell_spec())
       .optional("formulation",
                 choice("Fields of the part: displacement only, or mixed_up: displacement and a "
                        "constant pressure per background cell, condensed cell by cell (nearly "
@@ -223,9 +225,14 @@ SpecPtr boundary_condition_spec() {
                             "the part.")
                     .items(1, 1000))
       .discriminated_by("type")
-      .variant("displacement", keys("Prescribed displacement", "length"))
+      .variant("displacement",
+               [&] {
+                 auto k = keys("Prescribed displacement", "length");
+                 for (auto& r : rotation_keys()) k.push_back(r);
+                 return k;
+               }())
       .variant("velocity", keys("Prescribed velocity", "length/time"))
-      .at_least_one_of({"x", "y", "z", "from_exact_solution"});
+      .at_least_one_of({"x", "y", "z", "rx", "ry", "from_exact_solution"});
 }
 
 SpecPtr load_spec() {
@@ -237,8 +244,8 @@ SpecPtr load_spec() {
                             "false");
   return map("An external load. Keys after type depend on the type.")
       .required("name", string("Load name, unique."))
-      .required("type",
-                choice("Kind of load.", {"traction", "pressure", "nodal_force", "body_force"}))
+      .required("type", choice("Kind of load.", {"traction", "pressure", "nodal_force",
+                                                 "body_force", "shell_pressure"}))
       .optional("stages", string_list("Stages the load acts in (names of stages); every stage "
                                       "when omitted.")
                               .items(1, 1000))
@@ -275,7 +282,8 @@ SpecPtr load_spec() {
                                        "force/length^3")
                                  .items(2, 3)
                                  .varying(ExpressionVariables::position_and_time)),
-                exact, curve});
+                exact, curve})
+      .variant("shell_pressure", shell_pressure_keys());
 }
 
 SpecPtr initial_condition_spec() {

@@ -21,9 +21,7 @@ constexpr int nd = shell_dofs_per_node;
 
 FlatShellOperator::FlatShellOperator(const Model& model, int thickness_points,
                                      double shear_stabilization)
-    : model_(model),
-      maps_(make_dof_maps(model.maps.owned_nodes->getComm(), model.partition, nd)),
-      alpha_(shear_stabilization) {
+    : model_(model), maps_(make_dof_maps(model.maps.owned_nodes->getComm(), model.partition, nd)) {
   if (model.mesh.dimension != 2)
     throw InputError(model.scene.file + ": flat shells need a 2D mid-surface mesh");
   for (const auto& d : model.parts) {
@@ -36,10 +34,12 @@ FlatShellOperator::FlatShellOperator(const Model& model, int thickness_points,
     if (d.points.scheme == Integration::gauss)
       throw InputError(model.scene.file + ": part '" + part.name +
                        "': shells are integrated at the particles (scni or nodal), not gauss");
-    sections_.push_back(physics::elastic_mindlin_section(material.constants.at("youngs_modulus"),
-                                                         material.constants.at("poissons_ratio"),
-                                                         part.thickness, thickness_points));
-    thickness_.push_back(part.thickness);
+    const double t = part.shell ? part.shell->thickness : part.thickness;
+    sections_.push_back(physics::elastic_mindlin_section(
+        material.constants.at("youngs_modulus"), material.constants.at("poissons_ratio"), t,
+        part.shell ? part.shell->thickness_points : thickness_points));
+    thickness_.push_back(t);
+    alpha_.push_back(part.shell ? part.shell->shear_stabilization : shear_stabilization);
     // Direct gradients and values of the shape functions at the points (the shear rows).
     const auto& ip = d.points;
     const auto direct = evaluate_shape_functions(
@@ -54,6 +54,7 @@ FlatShellOperator::FlatShellOperator(const Model& model, int thickness_points,
       Point& p = points[q];
       p.weight = ip.weight[q];
       p.spacing = shell_spacing(d.cloud, q);  // SCNI and nodal points: owned particles in order
+      p.x = {ip.x[2 * q], ip.x[2 * q + 1]};
       const auto entry = [&](LocalIndex particle) {
         const auto [it, added] = slot.emplace(particle, p.node.size());
         if (added) {
@@ -137,16 +138,17 @@ Teuchos::RCP<FlatShellOperator::Matrix> FlatShellOperator::stiffness(
   return K;
 }
 
-void FlatShellOperator::add_pressure(const std::vector<double>& pressure_per_part,
-                                     Vector& f_owned) const {
+void FlatShellOperator::add_pressure(const Pressure& q, Vector& f_owned) const {
   Vector f_overlap(maps_.overlap_dofs);
   {
     auto f = f_overlap.getLocalViewHost(Tpetra::Access::ReadWrite);
     for (std::size_t part = 0; part < points_.size(); ++part)
-      for (const auto& p : points_[part])
+      for (const auto& p : points_[part]) {
+        const double x[3] = {p.x[0], p.x[1], 0.0};
+        const double load = p.weight * q(part, x);
         for (std::size_t a = 0; a < p.node.size(); ++a)
-          f(static_cast<std::size_t>(p.node[a]) * nd + shell_w, 0) +=
-              p.weight * p.phi[a] * pressure_per_part[part];
+          f(static_cast<std::size_t>(p.node[a]) * nd + shell_w, 0) += load * p.phi[a];
+      }
   }
   Tpetra::Export<> exporter(maps_.overlap_dofs, maps_.owned_dofs);
   f_owned.doExport(f_overlap, exporter, Tpetra::ADD);

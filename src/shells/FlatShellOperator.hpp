@@ -15,6 +15,7 @@
 #include <Tpetra_Vector.hpp>
 
 #include <array>
+#include <functional>
 #include <vector>
 
 #include "materials/MindlinSection.hpp"
@@ -31,9 +32,10 @@ class FlatShellOperator {
   using Matrix = Tpetra::FECrsMatrix<>;
   using Vector = Tpetra::Vector<>;
 
-  /// Every part of the 2D model is a shell of its thickness and elastic material (E, nu);
-  /// `thickness_points` Gauss points integrate the section through the thickness;
-  /// `shear_stabilization` is alpha of with_stabilized_shear (0: none).
+  /// Every part of the 2D model is a shell of its elastic material (E, nu): with parts[].shell
+  /// its thickness, thickness points and shear stabilization; otherwise the part's thickness
+  /// and `thickness_points` Gauss points through it, `shear_stabilization` the alpha of
+  /// with_stabilized_shear (0: none).
   explicit FlatShellOperator(const Model& model, int thickness_points = 2,
                              double shear_stabilization = 0.1);
 
@@ -41,14 +43,16 @@ class FlatShellOperator {
   const physics::MindlinSection& section(std::size_t part) const { return sections_[part]; }
   /// The section of part p where the particle spacing is h (its shear stabilized).
   physics::MindlinSection section_at(std::size_t part, double h) const {
-    return physics::with_stabilized_shear(sections_[part], thickness_[part], h, alpha_);
+    return physics::with_stabilized_shear(sections_[part], thickness_[part], h, alpha_[part]);
   }
 
   /// K on the owned dofs (fill complete), with the constraints' edge terms and the rows of
   /// constrained dofs replaced by their collocation rows (ShellConstraints).
   Teuchos::RCP<Matrix> stiffness(const ShellConstraints& constraints) const;
-  /// f_(I,w) += sum_L a_L phi_I(X_L) q_p for every part p (q: force per area along +z), owned.
-  void add_pressure(const std::vector<double>& pressure_per_part, Vector& f_owned) const;
+  /// Pressure (force per area along +z) of part p at x.
+  using Pressure = std::function<double(std::size_t part, const double* x)>;
+  /// f_(I,w) += sum_L a_L phi_I(X_L) q(X_L) (owned dofs).
+  void add_pressure(const Pressure& q, Vector& f_owned) const;
   /// The physical values u^h(X_J) = sum_I phi_I(X_J) d_I of every owned particle (5 per
   /// particle, in the order of maps().owned_nodes).
   std::vector<double> physical_values(const Vector& d_owned) const;
@@ -60,6 +64,7 @@ class FlatShellOperator {
   /// node index, smoothed gradient b, direct gradient g and value phi.
   struct Point {
     double weight = 0, spacing = 0;
+    std::array<double, 2> x{};
     std::vector<int> node;
     std::vector<double> b, g, phi;  // 2, 2, 1 per particle
   };
@@ -69,9 +74,8 @@ class FlatShellOperator {
 
   const Model& model_;
   DofMaps maps_;
-  double alpha_;
   std::vector<physics::MindlinSection> sections_;
-  std::vector<double> thickness_;
+  std::vector<double> thickness_, alpha_;
   std::vector<std::vector<Point>> points_;  ///< per part
 };
 

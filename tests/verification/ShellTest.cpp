@@ -58,7 +58,7 @@ Solution solve(const Model& model, const std::vector<ShellSupport>& supports, do
   ShellConstraints constraints(model, op, supports);
   const auto K = op.stiffness(constraints);
   FlatShellOperator::Vector f(op.maps().owned_dofs), d(op.maps().owned_dofs);
-  op.add_pressure(std::vector<double>(model.parts.size(), pressure), f);
+  op.add_pressure([pressure](std::size_t, const double*) { return pressure; }, f);
   constraints.set_values(f);
   const auto lu = make_direct_preconditioner(Teuchos::ParameterList());
   lu->set_map(op.maps().owned_dofs);

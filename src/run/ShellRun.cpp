@@ -1,0 +1,244 @@
+#include "run/ShellRun.hpp"
+
+#include <Teuchos_CommHelpers.hpp>
+#include <Teuchos_TimeMonitor.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+
+#include "core/Errors.hpp"
+#include "core/Log.hpp"
+#include "discretization/ShapeFunctions.hpp"
+#include "io/ResultsOutput.hpp"
+#include "mesh/NodalVolume.hpp"
+#include "model/Curves.hpp"
+#include "model/PointOwner.hpp"
+#include "shells/ShellConstraints.hpp"
+#include "solvers/MatrixPreconditioner.hpp"
+
+namespace efg {
+namespace {
+
+constexpr int nd = shell_dofs_per_node;
+const char* const dof_names[nd] = {"ux", "uy", "uz", "rx", "ry"};
+
+// The conditions active in `stage`, their values at the stage's end.
+std::vector<ShellSupport> supports_at(const Scene& scene, const std::string& stage, double time) {
+  const auto factor = curve_factor(scene, time, 1.0, stage);
+  std::vector<ShellSupport> out;
+  for (const auto& bc : scene.boundary_conditions) {
+    if (!bc.stages.includes(stage)) continue;
+    ShellSupport s;
+    s.node_set = bc.node_set;
+    const double scale = factor(bc.curve);
+    for (std::size_t c = 0; c < nd; ++c) {
+      const auto& field = c < 3 ? bc.components[c] : bc.rotations[c - 3];
+      if (field)
+        s.value[c] = [f = *field, scale, time](const double* x) {
+          const double p[3] = {x[0], x[1], 0.0};
+          return scale * f.at(p, time);
+        };
+    }
+    out.push_back(s);
+  }
+  return out;
+}
+
+// The shell_pressure loads active in `stage`, summed, at the stage's end.
+FlatShellOperator::Pressure pressure_at(const Model& model, const std::string& stage, double time) {
+  const auto& scene = model.scene;
+  const auto factor = curve_factor(scene, time, 1.0, stage);
+  std::vector<std::pair<const LoadSpec*, double>> loads;
+  for (const auto& l : scene.loads)
+    if (l.type == "shell_pressure" && l.stages.includes(stage))
+      loads.emplace_back(&l, factor(l.curve));
+  return [&model, loads, time](std::size_t part, const double* x) {
+    double q = 0;
+    for (const auto& [l, scale] : loads) {
+      bool applies = l->parts.empty();
+      for (const auto& name : l->parts) applies = applies || name == model.parts[part].part->name;
+      if (applies) q += scale * l->value.front().at(x, time);
+    }
+    return q;
+  };
+}
+
+// Probe columns: the physical values of the five fields at each probe point (collective).
+std::vector<double> probe_values(const Model& model, const FlatShellOperator::Vector& d_owned,
+                                 const FlatShellOperator& op) {
+  std::vector<double> local(model.scene.probes.size() * nd, 0.0), global(local.size(), 0.0);
+  Tpetra::Import<> importer(op.maps().owned_dofs, op.maps().overlap_dofs);
+  FlatShellOperator::Vector d_overlap(op.maps().overlap_dofs);
+  d_overlap.doImport(d_owned, importer, Tpetra::INSERT);
+  const auto d = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
+  for (std::size_t i = 0; i < model.scene.probes.size(); ++i) {
+    const auto& probe = model.scene.probes[i];
+    const int p = evaluating_part(model, probe.point.data());
+    if (p < 0) continue;
+    const auto& cloud = model.parts[static_cast<std::size_t>(p)].cloud;
+    const auto v = evaluate_shape_functions(cloud, probe.point.data(), 1, false, [&](std::size_t) {
+      return "probe '" + probe.name + "'";
+    });
+    for (auto k = v.neighbors.offsets[0]; k < v.neighbors.offsets[1]; ++k) {
+      const auto node = cloud.mesh_node[static_cast<std::size_t>(v.neighbors.particles[k])];
+      const auto lid = static_cast<std::size_t>(
+          op.maps().overlap_nodes->getLocalElement(static_cast<GlobalOrdinal>(node)));
+      for (std::size_t c = 0; c < nd; ++c) local[i * nd + c] += v.phi[k] * d(lid * nd + c, 0);
+    }
+  }
+  if (!local.empty())
+    Teuchos::reduceAll(*model.maps.owned_nodes->getComm(), Teuchos::REDUCE_SUM,
+                       static_cast<int>(local.size()), local.data(), global.data());
+  return global;
+}
+
+struct StageResult {
+  std::string name;
+  double time = 0, seconds = 0, strain_energy = 0, largest_deflection = 0;
+  long long dofs = 0;
+};
+
+}  // namespace
+
+void check_shell_setup(const Model& model) {
+  const FlatShellOperator op(model);
+  for (const auto& stage : model.scene.stages)
+    ShellConstraints(model, op, supports_at(model.scene, stage.name, stage.end_time));
+}
+
+RunOutcome run_shell_stages(const CommPtr& comm, const Model& model, const std::string& path,
+                            double setup_seconds) {
+  const auto started = std::chrono::steady_clock::now();
+  const auto& scene = model.scene;
+  const FlatShellOperator op(model);
+  const auto& fields = scene.output.fields;
+  const auto wants = [&](const char* f) {
+    return std::find(fields.begin(), fields.end(), f) != fields.end();
+  };
+  OutputLayout layout;
+  for (const char* base : {"displacement_", "rotation_"})
+    for (const char* axis : {"x", "y", "z"})
+      if (std::string(base) == "displacement_" || std::string(axis) != "z")
+        layout.nodal.push_back(std::string(base) + axis);
+  if (wants("nodal_volume")) layout.nodal.push_back("nodal_volume");
+  if (wants("owner_rank")) layout.nodal.push_back("owner_rank");
+  layout.global.push_back("strain_energy");
+  for (const auto& probe : scene.probes)
+    for (const char* n : dof_names) layout.global.push_back("probe_" + probe.name + "_" + n);
+  ResultsOutput output(comm, path, model.mesh, model.maps.owned_nodes, layout,
+                       scene.title.empty() ? scene.name : scene.title);
+  const auto volume = lumped_nodal_volumes(model.mesh);
+  std::vector<std::vector<double>> history;
+  FlatShellOperator::Vector d(op.maps().owned_dofs);
+  RunOutcome outcome;
+  auto record = [&](double time) {
+    const auto values = op.physical_values(d);
+    const auto& owned = model.partition.owned;
+    Tpetra::MultiVector<> nodal(model.maps.owned_nodes, layout.nodal.size());
+    {
+      auto v = nodal.getLocalViewHost(Tpetra::Access::OverwriteAll);
+      for (std::size_t i = 0; i < owned.size(); ++i) {
+        for (std::size_t c = 0; c < nd; ++c) v(i, c) = values[i * nd + c];
+        std::size_t column = nd;
+        if (wants("nodal_volume")) v(i, column++) = volume[static_cast<std::size_t>(owned[i])];
+        if (wants("owner_rank")) v(i, column++) = model.partition.rank;
+      }
+    }
+    double energy = 0, local = op.strain_energy(d);
+    Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, 1, &local, &energy);
+    std::vector<double> global = {energy};
+    for (double p : probe_values(model, d, op)) global.push_back(p);
+    output.write(time, nodal, global);
+    history.push_back(global);
+    history.back().insert(history.back().begin(), time);
+    ++outcome.records;
+  };
+  std::vector<StageResult> results;
+  try {
+    record(0.0);
+    for (const auto& stage : scene.stages) {
+      const auto begun = std::chrono::steady_clock::now();
+      StageResult r;
+      r.name = stage.name;
+      r.time = stage.end_time;
+      r.dofs = static_cast<long long>(op.maps().owned_dofs->getGlobalNumElements());
+      const ShellConstraints constraints(model, op, supports_at(scene, stage.name, r.time));
+      const auto K = op.stiffness(constraints);
+      FlatShellOperator::Vector f(op.maps().owned_dofs);
+      op.add_pressure(pressure_at(model, stage.name, r.time), f);
+      constraints.set_values(f);
+      const auto lu = make_direct_preconditioner(Teuchos::ParameterList());
+      lu->set_map(op.maps().owned_dofs);
+      lu->compute(K);
+      lu->apply(f, d, Teuchos::NO_TRANS, 1.0, 0.0);
+      double w = 0;
+      const auto values = op.physical_values(d);
+      for (std::size_t i = shell_w; i < values.size(); i += nd) {
+        if (!std::isfinite(values[i]))
+          throw NumericalError("shell stage '" + stage.name + "': the solution is not finite");
+        w = std::max(w, std::abs(values[i]));
+      }
+      Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, 1, &w, &r.largest_deflection);
+      r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begun).count();
+      record(r.time);
+      r.strain_energy = history.back()[1];
+      std::ostringstream o;
+      o << "stage '" << stage.name << "' (shells, linear static): " << r.dofs
+        << " dofs, direct (UMFPACK LU), strain energy " << r.strain_energy << ", largest |w| "
+        << r.largest_deflection << ", " << r.seconds << " s";
+      Log::info(o.str());
+      results.push_back(r);
+    }
+  } catch (...) {
+    output.close_partial();
+    throw;
+  }
+  output.close();
+  const auto& names = layout.global;
+  for (std::size_t k = 1; k < names.size(); ++k) {
+    std::ostringstream o;
+    o.precision(10);
+    o << names[k] << " = " << history.back()[k + 1];
+    Log::info(o.str());
+  }
+  if (comm->getRank() == 0) {
+    if (!scene.output.history.empty()) {
+      const auto file = (std::filesystem::path(path).parent_path() / scene.output.history).string();
+      std::ofstream csv(file);
+      csv << "time";
+      for (const auto& n : names) csv << "," << n;
+      csv << "\n" << std::setprecision(17);
+      for (const auto& row : history) {
+        for (std::size_t k = 0; k < row.size(); ++k) csv << (k ? "," : "") << row[k];
+        csv << "\n";
+      }
+    }
+    std::ofstream report(path + ".report.json");
+    report << std::setprecision(17) << "{\n  \"scene\": \"" << scene.file << "\",\n"
+           << "  \"results\": \"" << path
+           << "\",\n  \"formulation\": \"flat Reissner-Mindlin shells\",\n"
+           << "  \"seconds\": "
+           << setup_seconds +
+                  std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count()
+           << ",\n  \"shell_stages\": [";
+    for (std::size_t s = 0; s < results.size(); ++s)
+      report << (s ? "," : "") << "\n    {\"name\": \"" << results[s].name
+             << "\", \"time\": " << results[s].time << ", \"dofs\": " << results[s].dofs
+             << ", \"seconds\": " << results[s].seconds
+             << ", \"strain_energy\": " << results[s].strain_energy
+             << ", \"largest_deflection\": " << results[s].largest_deflection << "}";
+    report << "\n  ],\n  \"probes\": {";
+    for (std::size_t k = 1; k < names.size(); ++k)
+      report << (k > 1 ? "," : "") << "\n    \"" << names[k] << "\": " << history.back()[k + 1];
+    report << "\n  }\n}\n";
+  }
+  Log::info("run report: " + path + ".report.json");
+  return outcome;
+}
+
+}  // namespace efg

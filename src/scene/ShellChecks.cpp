@@ -1,0 +1,114 @@
+#include "scene/ShellChecks.hpp"
+
+#include <set>
+
+#include "core/Errors.hpp"
+#include "scene/SchemaValidator.hpp"
+
+namespace efg {
+namespace {
+
+[[noreturn]] void fail(const Scene& s, const YAML::Node& at, const std::string& path,
+                       const std::string& message) {
+  throw InputError(schema::located_message(s.file, at, path, message));
+}
+
+// Solid scenes: the shell-only keys have nothing to act on.
+void check_solid_scene(const Scene& s) {
+  const auto& d = s.document;
+  for (std::size_t i = 0; i < s.boundary_conditions.size(); ++i)
+    for (std::size_t c = 0; c < 2; ++c)
+      if (s.boundary_conditions[i].rotations[c]) {
+        const char* key = c == 0 ? "rx" : "ry";
+        fail(s, d["boundary_conditions"][i][key],
+             "boundary_conditions[" + std::to_string(i) + "]." + key,
+             "a rotation is a shell dof, and no part of this scene is a shell (parts[].shell); "
+             "expected x, y or z");
+      }
+  for (std::size_t i = 0; i < s.loads.size(); ++i)
+    if (s.loads[i].type == "shell_pressure")
+      fail(s, d["loads"][i]["type"], "loads[" + std::to_string(i) + "].type",
+           "shell_pressure loads the mid-surface of shell parts, and no part of this scene is a "
+           "shell; expected pressure (on a side set) or body_force");
+}
+
+}  // namespace
+
+void check_shell_scene(const Scene& s, const BackgroundMesh& mesh) {
+  if (!s.has_shells()) return check_solid_scene(s);
+  const auto& d = s.document;
+  for (std::size_t i = 0; i < s.parts.size(); ++i) {
+    const auto& part = s.parts[i];
+    const auto path = "parts[" + std::to_string(i) + "]";
+    const auto& pd = d["parts"][i];
+    if (!part.shell)
+      fail(s, pd, path,
+           "a solid part beside shell parts: coupling solids and shells is not built yet; make "
+           "every part a shell (parts[].shell) or none");
+    if (mesh.dimension != 2)
+      fail(s, pd["shell"], path + ".shell",
+           "shells need a 2D mesh of their mid-surface in this version (flat shells in the x-y "
+           "plane); this mesh is " +
+               std::to_string(mesh.dimension) + "D (shell blocks of 3D meshes are not read yet)");
+    if (s.find_material(part.material)->model != "linear_elastic")
+      fail(s, pd["material"], path + ".material",
+           "shells take a linear_elastic material in this version, not " +
+               s.find_material(part.material)->model);
+    if (part.section.integration == Integration::gauss)
+      fail(s, pd["section"]["integration"], path + ".section.integration",
+           "shells are integrated at the particles: expected scni or nodal");
+    if (part.section.formulation != Formulation::small_strain)
+      fail(s, pd["section"]["formulation"], path + ".section.formulation",
+           "shells are linear (small rotations) in this version: expected small_strain");
+    if (part.formulation != PartFormulation::displacement)
+      fail(s, pd["formulation"], path + ".formulation",
+           "a shell has no mixed_up formulation: expected displacement");
+  }
+  for (std::size_t i = 0; i < s.stages.size(); ++i)
+    if (s.stages[i].driver != "implicit")
+      fail(s, d["stages"][i]["driver"], "stages[" + std::to_string(i) + "].driver",
+           "shell parts run implicit (static, linear) stages in this version; explicit shells "
+           "are not built yet");
+  for (std::size_t i = 0; i < s.boundary_conditions.size(); ++i) {
+    const auto& bc = s.boundary_conditions[i];
+    const auto path = "boundary_conditions[" + std::to_string(i) + "]";
+    const auto& bd = d["boundary_conditions"][i];
+    if (bc.type != "displacement")
+      fail(s, bd["type"], path + ".type", "shell conditions prescribe displacements and rotations");
+    if (bc.method != "transformation")
+      fail(s, bd["method"], path + ".method",
+           "shells enforce their conditions by the transformation method in this version");
+    if (bc.from_exact[0] || bc.from_exact[1] || bc.from_exact[2])
+      fail(s, bd["from_exact_solution"], path + ".from_exact_solution",
+           "shells have no exact-solution conditions; give the values");
+  }
+  for (std::size_t i = 0; i < s.loads.size(); ++i)
+    if (s.loads[i].type != "shell_pressure")
+      fail(s, d["loads"][i]["type"], "loads[" + std::to_string(i) + "].type",
+           "shell parts take shell_pressure loads in this version");
+  const std::pair<bool, const char*> unsupported[] = {
+      {!s.initial_conditions.empty(), "initial_conditions"},
+      {s.initial_state.has_value(), "initial_state"},
+      {!s.rigid_walls.empty(), "rigid_walls"},
+      {!s.rigid_bodies.empty(), "rigid_bodies"},
+      {!s.contacts.empty(), "contacts"},
+      {!s.angles.empty(), "angles"},
+      {!s.exact_solution.empty() || s.user_solution.has_value(), "verification"},
+      {!s.output.history_node_sets.empty(), "output.history_node_sets"}};
+  for (const auto& [present, key] : unsupported)
+    if (present) {
+      const std::string k(key);
+      const auto dot = k.find('.');
+      const auto node = dot == std::string::npos ? d[k] : d[k.substr(0, dot)][k.substr(dot + 1)];
+      fail(s, node, k, "not available with shell parts in this version");
+    }
+  const std::set<std::string> written = {"displacement", "nodal_volume", "owner_rank"};
+  for (std::size_t i = 0; i < s.output.fields.size(); ++i)
+    if (!written.count(s.output.fields[i]))
+      fail(s, d["output"]["fields"][i], "output.fields[" + std::to_string(i) + "]",
+           "shell runs write displacement (x, y, z), rotation (x, y), nodal_volume and "
+           "owner_rank; '" +
+               s.output.fields[i] + "' is a solid field");
+}
+
+}  // namespace efg

@@ -1,0 +1,45 @@
+#include "scene/ShellSchema.hpp"
+
+namespace efg {
+
+using namespace schema;
+
+SpecPtr shell_spec() {
+  return map("The part is a Reissner-Mindlin shell whose mid-surface is the part's mesh: today a "
+             "flat shell in the x-y plane of a 2D mesh, linear elastic, implicit stages; five "
+             "dofs per particle (u, v, w and the rotations about x and y). See docs/shells.md.")
+      .required("thickness", real("Shell thickness.", "length").above(0))
+      .optional("thickness_points",
+                integer("Gauss points through the thickness (2 integrate an elastic section "
+                        "exactly).")
+                    .at_least(1)
+                    .at_most(5),
+                "2")
+      .optional("shear_stabilization",
+                real("alpha of the transverse shear stiffness k_s G t t^2 / (t^2 + alpha h^2) "
+                     "(Lyly, Stenberg & Vihinen 1993; h the particle spacing): keeps thin shells "
+                     "free of shear locking; 0 switches it off.",
+                     "-")
+                    .at_least(0),
+                "0.1");
+}
+
+std::vector<Key> rotation_keys() {
+  const auto v = ExpressionVariables::position_and_time;
+  return {optional_key(
+              "rx", real("Prescribed rotation about x (shell parts only).", "radian").varying(v)),
+          optional_key(
+              "ry", real("Prescribed rotation about y (shell parts only).", "radian").varying(v))};
+}
+
+std::vector<Key> shell_pressure_keys() {
+  return {optional_key("parts", string_list("Shell parts loaded; all when omitted.")),
+          required_key("value", real("Pressure on the mid-surface along +z (force per area); a "
+                                     "number or an expression of x, y, z, t.",
+                                     "stress")
+                                    .varying(ExpressionVariables::position_and_time)),
+          optional_key("curve", string("Name of a curve scaling the load over time; see the "
+                                       "stage drivers for what happens without one."))};
+}
+
+}  // namespace efg
