@@ -25,7 +25,9 @@ namespace efg {
 namespace {
 
 constexpr int nd = shell_dofs_per_node;
-const char* const dof_names[nd] = {"ux", "uy", "uz", "rx", "ry"};
+// Probe columns: the five physical values and the bending moments at the point.
+constexpr int probe_columns = nd + 3;
+const char* const probe_names[probe_columns] = {"ux", "uy", "uz", "rx", "ry", "mxx", "myy", "mxy"};
 
 // The conditions active in `stage`, their values at the stage's end.
 std::vector<ShellSupport> supports_at(const Scene& scene, const std::string& stage, double time) {
@@ -68,10 +70,12 @@ FlatShellOperator::Pressure pressure_at(const Model& model, const std::string& s
   };
 }
 
-// Probe columns: the physical values of the five fields at each probe point (collective).
+// Probe columns at each probe point (collective): u^h of the five fields and M = D kappa with
+// the curvature from the direct gradients of the rotations there.
 std::vector<double> probe_values(const Model& model, const FlatShellOperator::Vector& d_owned,
                                  const FlatShellOperator& op) {
-  std::vector<double> local(model.scene.probes.size() * nd, 0.0), global(local.size(), 0.0);
+  std::vector<double> local(model.scene.probes.size() * probe_columns, 0.0),
+      global(local.size(), 0.0);
   Tpetra::Import<> importer(op.maps().owned_dofs, op.maps().overlap_dofs);
   FlatShellOperator::Vector d_overlap(op.maps().overlap_dofs);
   d_overlap.doImport(d_owned, importer, Tpetra::INSERT);
@@ -81,15 +85,25 @@ std::vector<double> probe_values(const Model& model, const FlatShellOperator::Ve
     const int p = evaluating_part(model, probe.point.data());
     if (p < 0) continue;
     const auto& cloud = model.parts[static_cast<std::size_t>(p)].cloud;
-    const auto v = evaluate_shape_functions(cloud, probe.point.data(), 1, false, [&](std::size_t) {
+    const auto v = evaluate_shape_functions(cloud, probe.point.data(), 1, true, [&](std::size_t) {
       return "probe '" + probe.name + "'";
     });
+    double* out = &local[i * probe_columns];
+    double grad_rx[2] = {0, 0}, grad_ry[2] = {0, 0};
     for (auto k = v.neighbors.offsets[0]; k < v.neighbors.offsets[1]; ++k) {
       const auto node = cloud.mesh_node[static_cast<std::size_t>(v.neighbors.particles[k])];
       const auto lid = static_cast<std::size_t>(
           op.maps().overlap_nodes->getLocalElement(static_cast<GlobalOrdinal>(node)));
-      for (std::size_t c = 0; c < nd; ++c) local[i * nd + c] += v.phi[k] * d(lid * nd + c, 0);
+      for (std::size_t c = 0; c < nd; ++c) out[c] += v.phi[k] * d(lid * nd + c, 0);
+      for (std::size_t a = 0; a < 2; ++a) {
+        grad_rx[a] += v.grad[2 * k + a] * d(lid * nd + shell_rx, 0);
+        grad_ry[a] += v.grad[2 * k + a] * d(lid * nd + shell_ry, 0);
+      }
     }
+    const double kappa[3] = {grad_ry[0], -grad_rx[1], grad_ry[1] - grad_rx[0]};
+    const auto& D = op.section(static_cast<std::size_t>(p)).bending;
+    for (std::size_t r = 0; r < 3; ++r)
+      for (std::size_t c = 0; c < 3; ++c) out[nd + r] += D[r][c] * kappa[c];
   }
   if (!local.empty())
     Teuchos::reduceAll(*model.maps.owned_nodes->getComm(), Teuchos::REDUCE_SUM,
@@ -125,19 +139,37 @@ RunOutcome run_shell_stages(const CommPtr& comm, const Model& model, const std::
     for (const char* axis : {"x", "y", "z"})
       if (std::string(base) == "displacement_" || std::string(axis) != "z")
         layout.nodal.push_back(std::string(base) + axis);
+  const char* const resultant_names[shell_strains] = {
+      "membrane_force_xx", "membrane_force_yy", "membrane_force_xy", "moment_xx",
+      "moment_yy",         "moment_xy",         "shear_force_xz",    "shear_force_yz"};
+  if (wants("stress"))
+    for (const char* side : {"top", "bottom"})
+      for (const char* c : {"xx", "yy", "xy"})
+        layout.nodal.push_back(std::string("stress_") + side + "_" + c);
+  if (wants("resultants"))
+    for (const char* n : resultant_names) layout.nodal.push_back(n);
   if (wants("nodal_volume")) layout.nodal.push_back("nodal_volume");
   if (wants("owner_rank")) layout.nodal.push_back("owner_rank");
   layout.global.push_back("strain_energy");
   for (const auto& probe : scene.probes)
-    for (const char* n : dof_names) layout.global.push_back("probe_" + probe.name + "_" + n);
+    for (const char* n : probe_names) layout.global.push_back("probe_" + probe.name + "_" + n);
   ResultsOutput output(comm, path, model.mesh, model.maps.owned_nodes, layout,
                        scene.title.empty() ? scene.name : scene.title);
   const auto volume = lumped_nodal_volumes(model.mesh);
+  std::vector<double> node_thickness(model.mesh.node_count(), 0.0);
+  for (const auto& part : model.parts)
+    for (auto n : part.cloud.mesh_node)
+      node_thickness[static_cast<std::size_t>(n)] = part.part->shell->thickness;
+  const auto thickness_of_node = [&](LocalIndex n) {
+    return node_thickness[static_cast<std::size_t>(n)];
+  };
   std::vector<std::vector<double>> history;
   FlatShellOperator::Vector d(op.maps().owned_dofs);
   RunOutcome outcome;
   auto record = [&](double time) {
     const auto values = op.physical_values(d);
+    const auto resultants =
+        wants("stress") || wants("resultants") ? op.resultants(d) : std::vector<double>{};
     const auto& owned = model.partition.owned;
     Tpetra::MultiVector<> nodal(model.maps.owned_nodes, layout.nodal.size());
     {
@@ -145,6 +177,15 @@ RunOutcome run_shell_stages(const CommPtr& comm, const Model& model, const std::
       for (std::size_t i = 0; i < owned.size(); ++i) {
         for (std::size_t c = 0; c < nd; ++c) v(i, c) = values[i * nd + c];
         std::size_t column = nd;
+        const double* r = resultants.empty() ? nullptr : &resultants[i * shell_strains];
+        if (wants("stress")) {  // sigma = N / t +- 6 M / t^2 at z = +- t / 2
+          const double t = thickness_of_node(owned[i]);
+          for (double side : {1.0, -1.0})
+            for (std::size_t c = 0; c < 3; ++c)
+              v(i, column++) = r[c] / t + side * 6 * r[3 + c] / (t * t);
+        }
+        if (wants("resultants"))
+          for (std::size_t c = 0; c < shell_strains; ++c) v(i, column++) = r[c];
         if (wants("nodal_volume")) v(i, column++) = volume[static_cast<std::size_t>(owned[i])];
         if (wants("owner_rank")) v(i, column++) = model.partition.rank;
       }

@@ -455,11 +455,13 @@ SpecPtr output_spec() {
                       "pressure: -tr(sigma)/3, compression positive (mixed_up parts: the mean "
                       "of the cell pressures around the particle). cell_pressure: the condensed "
                       "pressure of every background cell of the mixed_up parts (an element "
-                      "field; 0 in other cells).")
+                      "field; 0 in other cells). Shell parts (docs/shells.md): stress is the top "
+                      "and bottom surface stress, resultants the membrane forces, moments and "
+                      "transverse shear forces per unit length.")
               .choices({"displacement", "velocity", "acceleration", "stress", "strain", "von_mises",
                         "pressure", "cell_pressure", "plastic_strain", "eroded", "nodal_volume",
                         "owner_rank", "generalized_displacement", "generalized_velocity",
-                        "material_state"}),
+                        "material_state", "resultants"}),
           "[displacement, nodal_volume, owner_rank]")
       .optional("history",
                 string("CSV file, beside the results file (relative to its folder), of the global "

@@ -25,6 +25,11 @@ void check_solid_scene(const Scene& s) {
              "a rotation is a shell dof, and no part of this scene is a shell (parts[].shell); "
              "expected x, y or z");
       }
+  for (std::size_t i = 0; i < s.output.fields.size(); ++i)
+    if (s.output.fields[i] == "resultants")
+      fail(s, d["output"]["fields"][i], "output.fields[" + std::to_string(i) + "]",
+           "resultants (forces and moments per unit length) are shell fields, and no part of "
+           "this scene is a shell; expected stress or strain");
   for (std::size_t i = 0; i < s.loads.size(); ++i)
     if (s.loads[i].type == "shell_pressure")
       fail(s, d["loads"][i]["type"], "loads[" + std::to_string(i) + "].type",
@@ -102,7 +107,8 @@ void check_shell_scene(const Scene& s, const BackgroundMesh& mesh) {
       const auto node = dot == std::string::npos ? d[k] : d[k.substr(0, dot)][k.substr(dot + 1)];
       fail(s, node, k, "not available with shell parts in this version");
     }
-  const std::set<std::string> written = {"displacement", "nodal_volume", "owner_rank"};
+  const std::set<std::string> written = {"displacement", "nodal_volume", "owner_rank", "stress",
+                                         "resultants"};
   for (std::size_t i = 0; i < s.output.fields.size(); ++i)
     if (!written.count(s.output.fields[i]))
       fail(s, d["output"]["fields"][i], "output.fields[" + std::to_string(i) + "]",

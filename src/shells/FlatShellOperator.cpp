@@ -55,6 +55,7 @@ FlatShellOperator::FlatShellOperator(const Model& model, int thickness_points,
       p.weight = ip.weight[q];
       p.spacing = shell_spacing(d.cloud, q);  // SCNI and nodal points: owned particles in order
       p.x = {ip.x[2 * q], ip.x[2 * q + 1]};
+      p.owned_row = maps_.owned_nodes->getLocalElement(static_cast<GlobalOrdinal>(ip.node[q]));
       const auto entry = [&](LocalIndex particle) {
         const auto [it, added] = slot.emplace(particle, p.node.size());
         if (added) {
@@ -180,6 +181,41 @@ std::vector<double> FlatShellOperator::physical_values(const Vector& d_owned) co
       }
     }
   }
+  return out;
+}
+
+template <class View>
+void FlatShellOperator::point_strains(const Point& p, const View& d,
+                                      double (&e)[shell_strains]) const {
+  for (auto& v : e) v = 0;
+  for (std::size_t a = 0; a < p.node.size(); ++a) {
+    double B[shell_strains][nd];
+    plate_strain_rows({p.b[2 * a], p.b[2 * a + 1]}, {p.g[2 * a], p.g[2 * a + 1]}, p.phi[a], B);
+    for (std::size_t c = 0; c < nd; ++c) {
+      const double dc = d(static_cast<std::size_t>(p.node[a]) * nd + c, 0);
+      for (std::size_t i = 0; i < shell_strains; ++i) e[i] += B[i][c] * dc;
+    }
+  }
+}
+
+std::vector<double> FlatShellOperator::resultants(const Vector& d_owned) const {
+  const auto d_overlap = to_overlap(d_owned);
+  const auto d = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
+  std::vector<double> out(maps_.owned_nodes->getNodeNumElements() * shell_strains, 0.0);
+  for (std::size_t part = 0; part < points_.size(); ++part)
+    for (const auto& p : points_[part]) {
+      double e[shell_strains], N[3], M[3], Q[2];
+      point_strains(p, d, e);
+      physics::mindlin_resultants(section_at(part, p.spacing), {e[0], e[1], e[2]},
+                                  {e[3], e[4], e[5]}, {e[6], e[7]}, N, M, Q);
+      double* r = &out[static_cast<std::size_t>(p.owned_row) * shell_strains];
+      for (int i = 0; i < 3; ++i) {
+        r[i] = N[i];
+        r[3 + i] = M[i];
+      }
+      r[6] = Q[0];
+      r[7] = Q[1];
+    }
   return out;
 }
 

@@ -56,6 +56,11 @@ class FlatShellOperator {
   /// The physical values u^h(X_J) = sum_I phi_I(X_J) d_I of every owned particle (5 per
   /// particle, in the order of maps().owned_nodes).
   std::vector<double> physical_values(const Vector& d_owned) const;
+  /// The resultants (N_xx, N_yy, N_xy, M_xx, M_yy, M_xy, Q_x, Q_y) of every owned particle
+  /// (8 per particle, in the order of maps().owned_nodes): the section law of its integration
+  /// point's strains (smoothed membrane and bending strains, i.e. the means over its nodal cell;
+  /// the shear strain at the particle, with the stabilized shear stiffness the solve used).
+  std::vector<double> resultants(const Vector& d_owned) const;
   /// Strain energy 1/2 d^T K d of this rank's points (without constraints).
   double strain_energy(const Vector& d_owned) const;
 
@@ -65,12 +70,16 @@ class FlatShellOperator {
   struct Point {
     double weight = 0, spacing = 0;
     std::array<double, 2> x{};
+    int owned_row = 0;  ///< the particle's index in maps().owned_nodes
     std::vector<int> node;
     std::vector<double> b, g, phi;  // 2, 2, 1 per particle
   };
   /// K_L = a_L B^T S B of one point (5n x 5n, row major).
   std::vector<double> point_stiffness(const Point& p, std::size_t part) const;
   Vector to_overlap(const Vector& d_owned) const;
+  /// The 8 generalized strains of a point at the overlap values d.
+  template <class View>
+  void point_strains(const Point& p, const View& d, double (&e)[shell_strains]) const;
 
   const Model& model_;
   DofMaps maps_;
