@@ -220,19 +220,19 @@ std::vector<double> FlatShellOperator::resultants(const Vector& d_owned) const {
 }
 
 double FlatShellOperator::strain_energy(const Vector& d_owned) const {
+  // 1/2 a_L e . S e per point, the same as 1/2 d^T K_L d without forming K_L.
   const auto d_overlap = to_overlap(d_owned);
   const auto d = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
   double energy = 0;
   for (std::size_t part = 0; part < points_.size(); ++part)
     for (const auto& p : points_[part]) {
-      const auto Kp = point_stiffness(p, part);
-      const std::size_t width = p.node.size() * nd;
-      std::vector<double> x(width);
-      for (std::size_t a = 0; a < p.node.size(); ++a)
-        for (std::size_t c = 0; c < nd; ++c)
-          x[a * nd + c] = d(static_cast<std::size_t>(p.node[a]) * nd + c, 0);
-      for (std::size_t r = 0; r < width; ++r)
-        for (std::size_t s = 0; s < width; ++s) energy += 0.5 * x[r] * Kp[r * width + s] * x[s];
+      double e[shell_strains], N[3], M[3], Q[2];
+      point_strains(p, d, e);
+      physics::mindlin_resultants(section_at(part, p.spacing), {e[0], e[1], e[2]},
+                                  {e[3], e[4], e[5]}, {e[6], e[7]}, N, M, Q);
+      double work = Q[0] * e[6] + Q[1] * e[7];
+      for (int i = 0; i < 3; ++i) work += N[i] * e[i] + M[i] * e[3 + i];
+      energy += 0.5 * p.weight * work;
     }
   return energy;
 }

@@ -51,6 +51,7 @@ std::vector<ShellSupport> all_edges(const Field& field) {
 struct Solution {
   std::vector<double> d, physical;  ///< generalized and physical values, 5 per owned particle
   std::vector<double> resultants;   ///< N, M, Q: 8 per owned particle
+  double strain_energy = 0;         ///< this rank's
   std::vector<double> x;            ///< particle positions, 2 per owned particle
 };
 
@@ -70,6 +71,7 @@ Solution solve(const Model& model, const std::vector<ShellSupport>& supports, do
   for (std::size_t i = 0; i < v.extent(0); ++i) s.d.push_back(v(i, 0));
   s.physical = op.physical_values(d);
   s.resultants = op.resultants(d);
+  s.strain_energy = op.strain_energy(d);
   for (auto gid : op.maps().owned_nodes->getNodeElementList()) {
     const double* x = model.mesh.coordinates.data() + 2 * static_cast<std::size_t>(gid);
     s.x.insert(s.x.end(), {x[0], x[1]});
@@ -102,9 +104,15 @@ TEST(Shell, MembranePatchTestOnPerturbedParticles) {
     d[shell_v] = 1e-3 * (-0.5 + 1.5 * x[0] + 0.7 * x[1]);
     d[shell_w] = d[shell_rx] = d[shell_ry] = 0;
   };
-  const double err = patch_error(solve(model, all_edges(field), 0.0), field);
+  const auto solution = solve(model, all_edges(field), 0.0);
+  const double err = patch_error(solution, field);
   RecordProperty("error", (std::ostringstream() << err).str());
   EXPECT_LT(err, 1e-10);
+  // Strain energy of the constant membrane state over the unit square, by hand:
+  // 1/2 eps . A eps, eps = (2, 0.7, -3 + 1.5) 1e-3, A = E t / (1 - nu^2) [1 nu 0; nu 1 0; 0 0 0.35].
+  const double s = 1000.0 * 0.05 / (1 - 0.09), exx = 2e-3, eyy = 0.7e-3, gxy = -1.5e-3;
+  const double energy = 0.5 * s * (exx * exx + eyy * eyy + 2 * 0.3 * exx * eyy + 0.35 * gxy * gxy);
+  EXPECT_NEAR(solution.strain_energy, energy, 1e-10 * energy);
 }
 
 // Constant bending (Kirchhoff mode): w quadratic, theta its gradient (theta_y = -dw/dx,
