@@ -200,15 +200,11 @@ long long EssentialConditions::add_boundary_points(const Model& model, const Sol
     std::vector<double> beta;
     std::vector<std::size_t> cell_of;
     std::map<std::size_t, CellAverages> cell_rows;  // mixed parts: the rows of the points' cells
-    for (const auto& [cell, side] : boundary_sides(mesh, d.part->blocks)) {
-      const auto nodes = mesh.side_node_indices(cell, side);
-      if (!std::all_of(nodes.begin(), nodes.end(),
-                       [&](LocalIndex n) { return in_set[static_cast<std::size_t>(n)] != 0; }))
-        continue;
-      ++sides_found;
-      const auto first = *std::min_element(nodes.begin(), nodes.end());
-      if (model.partition.owner[static_cast<std::size_t>(first)] != model.partition.rank) continue;
-      const double h = side_longest_edge(mesh, nodes);
+    const auto sides =
+        node_set_sides(mesh, d.part->blocks, in_set, model.partition.owner, model.partition.rank);
+    sides_found += sides.count;
+    for (const auto& [cell, side] : sides.here) {
+      const double h = side_longest_edge(mesh, mesh.side_node_indices(cell, side));
       for (const auto& q : side_quadrature(mesh, cell, side)) {
         pts.push_back(q);
         beta.push_back(setup.beta_factor / h);

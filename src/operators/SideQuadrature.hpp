@@ -4,6 +4,8 @@
 #pragma once
 
 #include <array>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "mesh/BackgroundMesh.hpp"
@@ -18,5 +20,16 @@ struct SidePoint {
 
 /// Points on side `side` of global cell `cell`.
 std::vector<SidePoint> side_quadrature(const BackgroundMesh& mesh, std::size_t cell, int side);
+
+/// The boundary sides of the blocks (discretization/SmoothingFacets boundary_sides) whose nodes
+/// all lie in the node set (`in_set` flags per mesh node): `count` of them on every rank, and
+/// the ones this rank integrates (the owner of a side's lowest node), as (cell, side).
+struct NodeSetSides {
+  long long count = 0;
+  std::vector<std::pair<std::size_t, int>> here;
+};
+NodeSetSides node_set_sides(const BackgroundMesh& mesh, const std::vector<std::string>& blocks,
+                            const std::vector<char>& in_set, const std::vector<int>& owner,
+                            int rank);
 
 }  // namespace efg

@@ -134,6 +134,8 @@ RunOutcome run_shell_stages(const CommPtr& comm, const Model& model, const std::
   const auto wants = [&](const char* f) {
     return std::find(fields.begin(), fields.end(), f) != fields.end();
   };
+  const bool with_stress = wants("stress"), with_resultants = wants("resultants"),
+             with_volume = wants("nodal_volume"), with_rank = wants("owner_rank");
   OutputLayout layout;
   for (const char* base : {"displacement_", "rotation_"})
     for (const char* axis : {"x", "y", "z"})
@@ -142,14 +144,14 @@ RunOutcome run_shell_stages(const CommPtr& comm, const Model& model, const std::
   const char* const resultant_names[shell_strains] = {
       "membrane_force_xx", "membrane_force_yy", "membrane_force_xy", "moment_xx",
       "moment_yy",         "moment_xy",         "shear_force_xz",    "shear_force_yz"};
-  if (wants("stress"))
+  if (with_stress)
     for (const char* side : {"top", "bottom"})
       for (const char* c : {"xx", "yy", "xy"})
         layout.nodal.push_back(std::string("stress_") + side + "_" + c);
-  if (wants("resultants"))
+  if (with_resultants)
     for (const char* n : resultant_names) layout.nodal.push_back(n);
-  if (wants("nodal_volume")) layout.nodal.push_back("nodal_volume");
-  if (wants("owner_rank")) layout.nodal.push_back("owner_rank");
+  if (with_volume) layout.nodal.push_back("nodal_volume");
+  if (with_rank) layout.nodal.push_back("owner_rank");
   layout.global.push_back("strain_energy");
   for (const auto& probe : scene.probes)
     for (const char* n : probe_names) layout.global.push_back("probe_" + probe.name + "_" + n);
@@ -169,7 +171,7 @@ RunOutcome run_shell_stages(const CommPtr& comm, const Model& model, const std::
   auto record = [&](double time) {
     const auto values = op.physical_values(d);
     const auto resultants =
-        wants("stress") || wants("resultants") ? op.resultants(d) : std::vector<double>{};
+        with_stress || with_resultants ? op.resultants(d) : std::vector<double>{};
     const auto& owned = model.partition.owned;
     Tpetra::MultiVector<> nodal(model.maps.owned_nodes, layout.nodal.size());
     {
@@ -178,16 +180,16 @@ RunOutcome run_shell_stages(const CommPtr& comm, const Model& model, const std::
         for (std::size_t c = 0; c < nd; ++c) v(i, c) = values[i * nd + c];
         std::size_t column = nd;
         const double* r = resultants.empty() ? nullptr : &resultants[i * shell_strains];
-        if (wants("stress")) {  // sigma = N / t +- 6 M / t^2 at z = +- t / 2
+        if (with_stress) {  // sigma = N / t +- 6 M / t^2 at z = +- t / 2
           const double t = thickness_of_node(owned[i]);
           for (double side : {1.0, -1.0})
             for (std::size_t c = 0; c < 3; ++c)
               v(i, column++) = r[c] / t + side * 6 * r[3 + c] / (t * t);
         }
-        if (wants("resultants"))
+        if (with_resultants)
           for (std::size_t c = 0; c < shell_strains; ++c) v(i, column++) = r[c];
-        if (wants("nodal_volume")) v(i, column++) = volume[static_cast<std::size_t>(owned[i])];
-        if (wants("owner_rank")) v(i, column++) = model.partition.rank;
+        if (with_volume) v(i, column++) = volume[static_cast<std::size_t>(owned[i])];
+        if (with_rank) v(i, column++) = model.partition.rank;
       }
     }
     double energy = 0, local = op.strain_energy(d);

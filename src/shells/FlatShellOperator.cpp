@@ -3,6 +3,7 @@
 #include <Teuchos_CommHelpers.hpp>
 #include <Tpetra_Import.hpp>
 
+#include <algorithm>
 #include <map>
 #include <stdexcept>
 
@@ -198,23 +199,32 @@ void FlatShellOperator::point_strains(const Point& p, const View& d,
   }
 }
 
+template <class View>
+void FlatShellOperator::point_resultants(std::size_t part, const Point& p, const View& d,
+                                         double (&e)[shell_strains],
+                                         double (&R)[shell_strains]) const {
+  point_strains(p, d, e);
+  double N[3], M[3], Q[2];
+  physics::mindlin_resultants(section_at(part, p.spacing), {e[0], e[1], e[2]}, {e[3], e[4], e[5]},
+                              {e[6], e[7]}, N, M, Q);
+  for (int i = 0; i < 3; ++i) {
+    R[i] = N[i];
+    R[3 + i] = M[i];
+  }
+  R[6] = Q[0];
+  R[7] = Q[1];
+}
+
 std::vector<double> FlatShellOperator::resultants(const Vector& d_owned) const {
   const auto d_overlap = to_overlap(d_owned);
   const auto d = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
   std::vector<double> out(maps_.owned_nodes->getNodeNumElements() * shell_strains, 0.0);
   for (std::size_t part = 0; part < points_.size(); ++part)
     for (const auto& p : points_[part]) {
-      double e[shell_strains], N[3], M[3], Q[2];
-      point_strains(p, d, e);
-      physics::mindlin_resultants(section_at(part, p.spacing), {e[0], e[1], e[2]},
-                                  {e[3], e[4], e[5]}, {e[6], e[7]}, N, M, Q);
-      double* r = &out[static_cast<std::size_t>(p.owned_row) * shell_strains];
-      for (int i = 0; i < 3; ++i) {
-        r[i] = N[i];
-        r[3 + i] = M[i];
-      }
-      r[6] = Q[0];
-      r[7] = Q[1];
+      double e[shell_strains], R[shell_strains];
+      point_resultants(part, p, d, e, R);
+      std::copy(R, R + shell_strains,
+                out.begin() + static_cast<std::ptrdiff_t>(p.owned_row) * shell_strains);
     }
   return out;
 }
@@ -226,12 +236,9 @@ double FlatShellOperator::strain_energy(const Vector& d_owned) const {
   double energy = 0;
   for (std::size_t part = 0; part < points_.size(); ++part)
     for (const auto& p : points_[part]) {
-      double e[shell_strains], N[3], M[3], Q[2];
-      point_strains(p, d, e);
-      physics::mindlin_resultants(section_at(part, p.spacing), {e[0], e[1], e[2]},
-                                  {e[3], e[4], e[5]}, {e[6], e[7]}, N, M, Q);
-      double work = Q[0] * e[6] + Q[1] * e[7];
-      for (int i = 0; i < 3; ++i) work += N[i] * e[i] + M[i] * e[3 + i];
+      double e[shell_strains], R[shell_strains], work = 0;
+      point_resultants(part, p, d, e, R);
+      for (int i = 0; i < shell_strains; ++i) work += R[i] * e[i];
       energy += 0.5 * p.weight * work;
     }
   return energy;

@@ -80,6 +80,10 @@ class FlatShellOperator {
   /// The 8 generalized strains of a point at the overlap values d.
   template <class View>
   void point_strains(const Point& p, const View& d, double (&e)[shell_strains]) const;
+  /// The strains e and resultants R = (N, M, Q) of a point of part `part`.
+  template <class View>
+  void point_resultants(std::size_t part, const Point& p, const View& d, double (&e)[shell_strains],
+                        double (&R)[shell_strains]) const;
 
   const Model& model_;
   DofMaps maps_;

@@ -1,11 +1,6 @@
 #include "shells/ShellBoundary.hpp"
 
-#include <Teuchos_CommHelpers.hpp>
-
-#include <algorithm>
-
 #include "discretization/ShapeFunctions.hpp"
-#include "discretization/SmoothingFacets.hpp"
 #include "operators/SideQuadrature.hpp"
 #include "shells/ShellSpacing.hpp"
 
@@ -22,16 +17,11 @@ std::vector<ShellEdgePoint> shell_edge_points(const Model& model, const std::str
   for (std::size_t p = 0; p < model.parts.size(); ++p) {
     const auto& d = model.parts[p];
     std::vector<SidePoint> sides;
-    for (const auto& [cell, side] : boundary_sides(mesh, d.part->blocks)) {
-      const auto nodes = mesh.side_node_indices(cell, side);
-      if (!std::all_of(nodes.begin(), nodes.end(),
-                       [&](LocalIndex n) { return in_set[static_cast<std::size_t>(n)] != 0; }))
-        continue;
-      if (sides_found) ++*sides_found;
-      const auto first = *std::min_element(nodes.begin(), nodes.end());
-      if (model.partition.owner[static_cast<std::size_t>(first)] != model.partition.rank) continue;
+    const auto covered =
+        node_set_sides(mesh, d.part->blocks, in_set, model.partition.owner, model.partition.rank);
+    if (sides_found) *sides_found += covered.count;
+    for (const auto& [cell, side] : covered.here)
       for (const auto& q : side_quadrature(mesh, cell, side)) sides.push_back(q);
-    }
     if (sides.empty()) continue;
     std::vector<double> x;
     for (const auto& q : sides) x.insert(x.end(), {q.x[0], q.x[1]});
@@ -58,11 +48,6 @@ std::vector<ShellEdgePoint> shell_edge_points(const Model& model, const std::str
       }
       out.push_back(std::move(e));
     }
-  }
-  if (sides_found) {
-    long long local = *sides_found;
-    Teuchos::reduceAll(*model.maps.owned_nodes->getComm(), Teuchos::REDUCE_SUM, 1, &local,
-                       sides_found);
   }
   return out;
 }

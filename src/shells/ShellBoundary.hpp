@@ -23,7 +23,8 @@ struct ShellEdgePoint {
 };
 
 /// The points of this rank's edges (an edge belongs to the owner of its lowest node) whose
-/// nodes all lie in `node_set`; `sides_found` counts the covered edges on every rank.
+/// nodes all lie in `node_set`; `sides_found` counts the covered edges of every rank (the mesh
+/// is the same on all ranks).
 std::vector<ShellEdgePoint> shell_edge_points(const Model& model, const std::string& node_set,
                                               long long* sides_found = nullptr);
 
