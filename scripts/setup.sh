@@ -14,6 +14,7 @@ packages=(
   libsuitesparse-dev     # UMFPACK, the direct solver
   libopenblas0-serial    # one-thread optimized BLAS: UMFPACK's frontal matrices 1.7x faster than reference
   python3-netcdf4 python3-matplotlib python3-numpy
+  python3-scipy          # tests/verification/shells/clamped_plate_fd.py (the plate reference values)
 )
 
 missing=()
