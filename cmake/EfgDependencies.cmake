@@ -52,6 +52,9 @@ efg_debian_library(efg_exodus exodusII.h "exodusii" "exoIIv2;exodus;exoIIv2c" "E
                    libexodusii-dev)
 # UMFPACK (Debian's libsuitesparse-dev): the default sparse direct solver (solvers/SparseLU).
 efg_debian_library(efg_umfpack suitesparse/umfpack.h "" "umfpack" UMFPACK libsuitesparse-dev)
+# MUMPS with Scotch / PT-Scotch orderings (Debian's libmumps-ptscotch-dev): the distributed
+# sparse direct solver (solvers/DistributedLU).
+efg_debian_library(efg_mumps dmumps_c.h "" "dmumps_ptscotch" MUMPS libmumps-ptscotch-dev)
 
 # yaml-cpp as a SYSTEM include as well.
 add_library(efg_yaml INTERFACE)

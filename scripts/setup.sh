@@ -11,7 +11,8 @@ packages=(
   libexodusii-dev libnetcdf-dev
   libyaml-cpp-dev libgtest-dev python3-yaml
   libmuparser-dev        # expressions in scene values (issue 19)
-  libsuitesparse-dev     # UMFPACK, the direct solver
+  libsuitesparse-dev     # UMFPACK, the one-process direct solver
+  libmumps-ptscotch-dev  # MUMPS, the distributed direct solver
   libopenblas0-serial    # one-thread optimized BLAS: UMFPACK's frontal matrices 1.7x faster than reference
   python3-netcdf4 python3-matplotlib python3-numpy
   python3-scipy          # tests/verification/shells/clamped_plate_fd.py (the plate reference values)

@@ -9,6 +9,7 @@
 #include <limits>
 
 #include "core/Errors.hpp"
+#include "parallel/Collective.hpp"
 
 namespace efg {
 namespace {
@@ -88,18 +89,23 @@ void SolidModelEvaluator::evalModelImpl(
   } catch (const NumericalError& e) {
     failure_ = e.what();
     failed = 1;
-  }
-  // The preconditioner is built from the Jacobian NOX evaluated last (NOX asks for W_prec right
-  // after W_op, before the linear solve). A singular factorization is no failure of the
-  // evaluation point but of the linear system: it propagates as a NumericalError.
-  if (out.supports(Thyra::ModelEvaluatorBase::OUT_ARG_W_prec) && !out.get_W_prec().is_null() &&
-      !preconditioner_.is_null() && !last_jacobian_.is_null()) {
-    Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewCounter("efg: linear solver setup"));
-    preconditioner_->compute(last_jacobian_);
+  } catch (const PeerFailure& e) {  // the evaluation failed on another rank (agreed collectively)
+    if (e.exit_code() != static_cast<int>(ExitCode::numerical)) throw;
+    failure_ = "numerical failure on another rank";
+    failed = 1;
   }
   int any = 0;
   Teuchos::reduceAll(*problem_.owned_dofs()->getComm(), Teuchos::REDUCE_MAX, failed,
                      Teuchos::outArg(any));
+  // The preconditioner is built from the Jacobian NOX evaluated last (NOX asks for W_prec right
+  // after W_op, before the linear solve), on every rank or none (MUMPS factors collectively). A
+  // singular factorization is no failure of the evaluation point but of the linear system: it
+  // propagates as a NumericalError.
+  if (!any && out.supports(Thyra::ModelEvaluatorBase::OUT_ARG_W_prec) &&
+      !out.get_W_prec().is_null() && !preconditioner_.is_null() && !last_jacobian_.is_null()) {
+    Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewCounter("efg: linear solver setup"));
+    preconditioner_->compute(last_jacobian_);
+  }
   if (any && !f_thyra.is_null())
     Thyra::assign(f_thyra.ptr(), std::numeric_limits<double>::quiet_NaN());
   if (any && failure_.empty()) failure_ = "numerical failure on another rank";

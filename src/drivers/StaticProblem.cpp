@@ -2,6 +2,10 @@
 
 #include <Teuchos_TimeMonitor.hpp>
 
+#include <exception>
+
+#include "parallel/Collective.hpp"
+
 namespace efg {
 
 StaticProblem::StaticProblem(const Model& model)
@@ -81,12 +85,16 @@ void StaticProblem::set_load_factor(const LoadFactor& factor) {
 void StaticProblem::unconstrained_residual(const Vector& d_owned, Vector& r_owned) {
   to_overlap(d_owned, d_overlap_);
   r_overlap_.putScalar(0.0);
-  ops_->add_internal_force(d_overlap_, r_overlap_);
-  {
-    Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewCounter("efg: essential conditions"));
-    conditions_->add_boundary_terms(d_overlap_, r_overlap_);
-  }
-  if (contact_) contact_->add_residual(d_overlap_, r_overlap_);
+  // A failure among one rank's points (det F <= 0 in a line-search trial) stops every rank here,
+  // before the export where the others would wait for it forever (seen on 2 ranks).
+  run_collectively(model_.maps.owned_dofs->getComm(), [&] {
+    ops_->add_internal_force(d_overlap_, r_overlap_);
+    {
+      Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewCounter("efg: essential conditions"));
+      conditions_->add_boundary_terms(d_overlap_, r_overlap_);
+    }
+    if (contact_) contact_->add_residual(d_overlap_, r_overlap_);
+  });
   ops_->to_owned(r_overlap_, r_owned);
   internal_norm_ = r_owned.norm2();
   r_owned.update(-1.0, f_ext_, 1.0);
@@ -102,13 +110,24 @@ void StaticProblem::jacobian(const Vector& d_owned, FEMatrix& K) {
   to_overlap(d_owned, d_overlap_);
   K.beginAssembly();
   K.setAllToScalar(0.0);
-  ops_->add_tangent(d_overlap_, K);
-  {
-    Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewCounter("efg: essential conditions"));
-    conditions_->add_boundary_terms(d_overlap_, K);
+  // As in the residual: every rank learns of a failure before the assembly's communication, and
+  // the matrix leaves assembly mode either way.
+  std::exception_ptr failure;
+  try {
+    run_collectively(model_.maps.owned_dofs->getComm(), [&] {
+      ops_->add_tangent(d_overlap_, K);
+      {
+        Teuchos::TimeMonitor timer(
+            *Teuchos::TimeMonitor::getNewCounter("efg: essential conditions"));
+        conditions_->add_boundary_terms(d_overlap_, K);
+      }
+      if (contact_) contact_->add_tangent(d_overlap_, K);
+    });
+  } catch (...) {
+    failure = std::current_exception();
   }
-  if (contact_) contact_->add_tangent(d_overlap_, K);
   K.endAssembly();
+  if (failure) std::rethrow_exception(failure);
   Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewCounter("efg: essential conditions"));
   K.beginModify();
   conditions_->replace_rows(K);

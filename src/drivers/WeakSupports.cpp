@@ -2,6 +2,8 @@
 
 #include <Teuchos_CommHelpers.hpp>
 
+#include "parallel/Collective.hpp"
+
 namespace efg {
 
 bool WeakSupports::wanted(const Scene& scene, const std::string& stage,
@@ -69,7 +71,9 @@ const Vector& WeakSupports::resistance(const Vector& d_owned) {
   for (auto& t : totals_) t = {0.0, 0.0, 0.0};
   ops_.to_overlap(d_owned, d_overlap_);
   r_overlap_.putScalar(0.0);
-  conditions_->add_boundary_terms(d_overlap_, r_overlap_, &totals_);
+  // det F <= 0 at one rank's boundary point stops every rank before the export.
+  run_collectively(ops_.model().maps.owned_dofs->getComm(),
+                   [&] { conditions_->add_boundary_terms(d_overlap_, r_overlap_, &totals_); });
   ops_.to_owned(r_overlap_, last_);
   return last_;
 }

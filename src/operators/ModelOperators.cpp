@@ -1,5 +1,7 @@
 #include "operators/ModelOperators.hpp"
 
+#include "parallel/Collective.hpp"
+
 namespace efg {
 namespace {
 std::unique_ptr<ExactSolution> exact_of(const Model& model) {
@@ -22,7 +24,10 @@ ModelOperators::ModelOperators(const Model& model)
 void ModelOperators::internal_force(const Vector& d_owned, Vector& f_owned) const {
   to_overlap(d_owned, d_overlap_);
   f_overlap_.putScalar(0.0);
-  add_internal_force(d_overlap_, f_overlap_);
+  // An inverted point on one rank must stop every rank before the export, where the others
+  // would otherwise wait for it forever.
+  run_collectively(model_.maps.owned_dofs->getComm(),
+                   [&] { add_internal_force(d_overlap_, f_overlap_); });
   to_owned(f_overlap_, f_owned);
 }
 

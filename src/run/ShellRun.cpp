@@ -232,7 +232,7 @@ RunOutcome run_shell_stages(const CommPtr& comm, const Model& model, const std::
       r.strain_energy = history.back()[1];
       std::ostringstream o;
       o << "stage '" << stage.name << "' (shells, linear static): " << r.dofs
-        << " dofs, direct (UMFPACK LU), strain energy " << r.strain_energy << ", largest |w| "
+        << " dofs, direct (MUMPS LU), strain energy " << r.strain_energy << ", largest |w| "
         << r.largest_deflection << ", " << r.seconds << " s";
       Log::info(o.str());
       results.push_back(r);

@@ -464,11 +464,11 @@ class SceneBuilder {
         fail(written["Type"], at + ".Type",
              "'" + type + "' contradicts solver: direct (remove one of them)");
     }
-    if (prec["solver"] && prec["solver"].as<std::string>() != "UMFPACK" &&
-        prec["solver"].as<std::string>() != "KLU2")
+    const auto direct = prec["solver"] ? prec["solver"].as<std::string>() : "MUMPS";
+    if (direct != "MUMPS" && direct != "UMFPACK" && direct != "KLU2")
       fail(written["solver"], at + ".solver",
-           "expected UMFPACK (the default) or KLU2 (Amesos2; Tacho crashed in this Trilinos "
-           "build), found '" +
+           "expected MUMPS (the default), UMFPACK or KLU2 (Amesos2; Tacho crashed in this "
+           "Trilinos build), found '" +
                prec["solver"].as<std::string>() + "'");
   }
 

@@ -368,7 +368,7 @@ SpecPtr stage_spec() {
            optional_key(
                "preconditioner",
                passthrough("'Type': direct, MueLu, Ifpack2 or None; the other keys go "
-                           "to that package's list ('solver': UMFPACK or KLU2 for direct)."),
+                           "to that package's list ('solver': MUMPS, UMFPACK or KLU2 for direct)."),
                "{}")})
       .variant(
           "explicit",

@@ -1,12 +1,13 @@
-// The direct path: the whole Jacobian factored by a sparse LU: UMFPACK (multifrontal, BLAS 3;
-// the default) or Amesos2 KLU2 (left-looking; kept as an option). The matrix is gathered onto
-// rank 0 and factored there on one process, because Amesos2 KLU2 in Trilinos 13.2 returns wrong
+// The direct path: the whole Jacobian factored by a sparse LU: MUMPS (multifrontal, BLAS 3, all
+// processes factor together; solvers/DistributedLU), UMFPACK (multifrontal, one process) or
+// Amesos2 KLU2 (left-looking; kept as an option). UMFPACK and KLU2 get the matrix gathered onto
+// rank 0 and factor it there on one process, because Amesos2 KLU2 in Trilinos 13.2 returns wrong
 // solutions when it is handed a distributed matrix (toolchain.md) and UMFPACK is a one-process
-// library; right-hand sides are gathered, solved on rank 0 and scattered back. So every rank
-// count gets the same factorization, at the cost of one process's time and memory: the
-// automatic choice uses it only below a size limit (LinearSolverPlan).
+// library; MUMPS reads each rank's rows where they are. Right-hand sides are gathered, solved on
+// rank 0 (MUMPS: by all ranks, from rank 0's copy) and scattered back.
 #include <Amesos2.hpp>
 #include <Teuchos_CommHelpers.hpp>
+#include <Teuchos_DefaultMpiComm.hpp>
 #include <Teuchos_DefaultSerialComm.hpp>
 #include <Teuchos_Time.hpp>
 #include <Tpetra_Import.hpp>
@@ -16,6 +17,7 @@
 #include <vector>
 
 #include "core/Errors.hpp"
+#include "solvers/DistributedLU.hpp"
 #include "solvers/MatrixPreconditioner.hpp"
 #include "solvers/SparseLU.hpp"
 
@@ -152,9 +154,56 @@ class Amesos2RootSolver : public RootSolver {
   Teuchos::RCP<Amesos2::Solver<Matrix, MultiVector>> solver_;
 };
 
+// MUMPS on the rows each rank owns: positions are the global ids less the smallest (the dof maps
+// number 0 .. n-1 without gaps; checked), which is also the order of the root map.
+class MumpsSolver {
+ public:
+  explicit MumpsSolver(const Teuchos::Comm<int>& comm) : lu_(raw_comm(comm)) {}
+
+  void factor(const Matrix& K) {
+    const auto& map = *K.getRowMap();
+    const GO first = map.getMinAllGlobalIndex(), last = map.getMaxAllGlobalIndex();
+    if (last - first + 1 != static_cast<GO>(map.getGlobalNumElements()))
+      throw std::logic_error("MumpsSolver: the row ids have gaps");
+    const auto local = K.getLocalMatrixHost();
+    const auto& columns = *K.getColMap();
+    std::vector<int> rows(local.nnz()), cols(local.nnz());
+    std::vector<double> values(local.nnz());
+    for (LO i = 0; i < static_cast<LO>(local.numRows()); ++i) {
+      const auto row = static_cast<int>(map.getGlobalElement(i) - first);
+      for (auto e = local.graph.row_map(i); e < local.graph.row_map(i + 1); ++e) {
+        rows[e] = row;
+        cols[e] = static_cast<int>(columns.getGlobalElement(local.graph.entries(e)) - first);
+        values[e] = local.values(e);
+      }
+    }
+    lu_.factor(static_cast<std::int64_t>(map.getGlobalNumElements()), std::move(rows),
+               std::move(cols), std::move(values));
+  }
+
+  /// z = A^-1 x: x and z on the root map (all on rank 0); every rank calls.
+  void solve(const MultiVector& x, MultiVector& z) {
+    const auto n = static_cast<int>(x.getNumVectors());
+    Tpetra::deep_copy(z, x);
+    auto zv = z.getLocalViewHost(Tpetra::Access::ReadWrite);
+    const bool root = x.getMap()->getComm()->getRank() == 0;
+    if (root && zv.stride(1) != zv.extent(0) && n > 1)
+      throw std::logic_error("MumpsSolver: the vectors are not stored one after another");
+    lu_.solve(root ? zv.data() : nullptr, n);
+  }
+
+ private:
+  static MPI_Comm raw_comm(const Teuchos::Comm<int>& comm) {
+    const auto* mpi = dynamic_cast<const Teuchos::MpiComm<int>*>(&comm);
+    return mpi ? (*mpi->getRawMpiComm())() : MPI_COMM_SELF;
+  }
+  DistributedLU lu_;
+};
+
 class DirectPreconditioner : public MatrixPreconditioner {
  public:
   explicit DirectPreconditioner(std::string solver) : solver_name_(std::move(solver)) {
+    if (solver_name_ == "MUMPS") return;  // built with the first matrix (its communicator)
     if (solver_name_ == "UMFPACK")
       root_solver_ = std::make_unique<UmfpackRootSolver>();
     else
@@ -167,6 +216,11 @@ class DirectPreconditioner : public MatrixPreconditioner {
       root_ = root_map(*K->getRowMap());
       gather_ = Teuchos::rcp(new Tpetra::Import<>(K->getRowMap(), root_));
       scatter_ = Teuchos::rcp(new Tpetra::Import<>(root_, K->getRowMap()));
+    }
+    if (solver_name_ == "MUMPS") {
+      factor_distributed(*K);
+      setup_seconds_ += clock.stop();
+      return;
     }
     // Gather the rows onto rank 0 (one rank: K is whole already) and factor them there.
     Teuchos::RCP<const Matrix> whole = K;
@@ -187,13 +241,7 @@ class DirectPreconditioner : public MatrixPreconditioner {
       }
     }
     Teuchos::broadcast(*root_->getComm(), 0, Teuchos::outArg(failed));
-    if (failed)
-      throw NumericalError(
-          "the direct solver (" + solver_name_ +
-          ") could not factor the Jacobian: it is singular. Candidates: a body or part that "
-          "is not held against rigid motion (missing or too few essential conditions), "
-          "particles with no neighbours, a material with zero stiffness" +
-          (why.empty() ? std::string(".") : " (" + why + ")."));
+    if (failed) singular(why);
     setup_seconds_ += clock.stop();
   }
 
@@ -204,15 +252,38 @@ class DirectPreconditioner : public MatrixPreconditioner {
     const auto n = X.getNumVectors();
     MultiVector x_root(root_, n), z_root(root_, n);
     x_root.doImport(X, *gather_, Tpetra::INSERT);
-    if (root_->getComm()->getRank() == 0) root_solver_->solve(x_root, z_root);
+    if (mumps_)
+      mumps_->solve(x_root, z_root);
+    else if (root_->getComm()->getRank() == 0)
+      root_solver_->solve(x_root, z_root);
     MultiVector z(Y.getMap(), n);
     z.doImport(z_root, *scatter_, Tpetra::INSERT);
     Y.update(alpha, z, beta);
   }
 
  private:
+  [[noreturn]] void singular(const std::string& why) const {
+    throw NumericalError(
+        "the direct solver (" + solver_name_ +
+        ") could not factor the Jacobian: it is singular. Candidates: a body or part that "
+        "is not held against rigid motion (missing or too few essential conditions), "
+        "particles with no neighbours, a material with zero stiffness" +
+        (why.empty() ? std::string(".") : " (" + why + ")."));
+  }
+
+  void factor_distributed(const Matrix& K) {
+    if (!mumps_) mumps_ = std::make_unique<MumpsSolver>(*K.getRowMap()->getComm());
+    // MUMPS throws on every rank alike (its status is global).
+    try {
+      mumps_->factor(K);
+    } catch (const std::runtime_error& e) {
+      singular(e.what());
+    }
+  }
+
   std::string solver_name_;
   std::unique_ptr<RootSolver> root_solver_;
+  std::unique_ptr<MumpsSolver> mumps_;
   Teuchos::RCP<const Tpetra::Map<>> root_;
   Teuchos::RCP<Tpetra::Import<>> gather_, scatter_;
 };
@@ -222,7 +293,7 @@ class DirectPreconditioner : public MatrixPreconditioner {
 Teuchos::RCP<MatrixPreconditioner> make_direct_preconditioner(
     const Teuchos::ParameterList& settings) {
   return Teuchos::rcp(new DirectPreconditioner(
-      settings.isParameter("solver") ? settings.get<std::string>("solver") : "UMFPACK"));
+      settings.isParameter("solver") ? settings.get<std::string>("solver") : "MUMPS"));
 }
 
 }  // namespace efg

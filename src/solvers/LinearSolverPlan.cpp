@@ -48,7 +48,7 @@ std::string LinearSolverPlan::describe() const {
   const std::string krylov_name = text(krylov, "Solver Type", "Block GMRES");
   switch (preconditioner) {
     case Preconditioner::direct:
-      return "direct (" + text(settings, "solver", "UMFPACK") + " LU)";
+      return "direct (" + text(settings, "solver", "MUMPS") + " LU)";
     case Preconditioner::multigrid:
       return krylov_name + " + MueLu smoothed aggregation with rigid-body modes";
     case Preconditioner::ifpack2:
@@ -59,9 +59,10 @@ std::string LinearSolverPlan::describe() const {
   return krylov_name + " without preconditioner";
 }
 
-// UMFPACK factor times measured on this machine (docs/implicit.md): 2D 0.6 s at 8.5k dofs,
-// 3.3 s at 33k, 22 s at 132k (where multigrid did not converge on the beam); 3D 3.4 s at 9.3k,
-// 35 s at 31k dofs (multigrid: 22 s). Above these limits multigrid is faster where it converges.
+// Direct factor times measured on this machine (docs/implicit.md; MUMPS, UMFPACK up to 1.9x
+// slower): 2D 0.33 s at 8.5k dofs, 1.8 s at 33k, 14 s at 132k (where multigrid did not converge
+// on the beam); 3D (UMFPACK) 3.4 s at 9.3k, 35 s at 31k dofs (multigrid: 22 s). Above these
+// limits multigrid is faster where it converges.
 std::int64_t default_direct_limit(int dimension) {
   return dimension <= 2 ? 150000 : 12000;
 }
@@ -86,7 +87,6 @@ LinearSolverPlan plan_linear_solver(const std::string& solver, std::int64_t dire
   } else if (global_dofs <= limit) {
     plan.preconditioner = Plan::Preconditioner::direct;
     plan.reason = "auto: " + std::to_string(global_dofs) + " dofs <= " + std::to_string(limit);
-    if (ranks > 1) plan.reason += ", factored on rank 0";
   } else {
     plan.preconditioner = Plan::Preconditioner::multigrid;
     plan.reason = "auto: " + std::to_string(global_dofs) + " dofs > " + std::to_string(limit);
@@ -109,7 +109,8 @@ LinearSolverPlan plan_linear_solver(const std::string& solver, std::int64_t dire
 
   switch (plan.preconditioner) {
     case Plan::Preconditioner::direct:
-      plan.settings.set("solver", "UMFPACK");  // KLU2 2-20x slower here; Tacho crashed (measured)
+      // UMFPACK 1.3-1.9x and KLU2 2-20x slower here; Tacho crashed (measured, docs/implicit.md).
+      plan.settings.set("solver", "MUMPS");
       break;
     case Plan::Preconditioner::multigrid:
       plan.settings = multigrid_defaults(dimension);
@@ -136,6 +137,9 @@ LinearSolverPlan plan_linear_solver(const std::string& solver, std::int64_t dire
   for (auto it = preconditioner.begin(); it != preconditioner.end(); ++it)
     if (preconditioner.name(it) != "Type")
       plan.settings.setEntry(preconditioner.name(it), preconditioner.entry(it));
+  if (plan.preconditioner == Plan::Preconditioner::direct && ranks > 1 &&
+      text(plan.settings, "solver", "MUMPS") != "MUMPS")
+    plan.reason += ", gathered and factored on rank 0";
   return plan;
 }
 

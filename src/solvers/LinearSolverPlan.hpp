@@ -1,10 +1,10 @@
 // Which linear solver an implicit stage uses (docs/implicit.md, "Linear solvers"):
 //
-//   direct     - a sparse LU factorization (UMFPACK; Amesos2 KLU2 on request) of the whole
-//                Jacobian, used as the preconditioner of GMRES, which then converges in one
-//                iteration. On more than one rank the matrix is gathered and factored on rank 0
-//                (UMFPACK is a one-process library; Amesos2 KLU2 in Trilinos 13.2 returns wrong
-//                solutions for distributed matrices).
+//   direct     - a sparse LU factorization (MUMPS, all ranks together; UMFPACK or Amesos2 KLU2
+//                on request, gathered and factored on rank 0: UMFPACK is a one-process library,
+//                Amesos2 KLU2 in Trilinos 13.2 returns wrong solutions for distributed matrices)
+//                of the whole Jacobian, used as the preconditioner of GMRES, which then
+//                converges in one iteration.
 //   iterative  - GMRES preconditioned by smoothed-aggregation multigrid (MueLu) with the
 //                rigid-body modes as near-null space, or by the preconditioner the stage names.
 //   auto       - direct up to `direct_limit` dofs, iterative above.
@@ -27,7 +27,7 @@ struct LinearSolverPlan {
   Teuchos::ParameterList settings;  ///< the preconditioner's own list (MueLu, Ifpack2, Amesos2)
   int max_iterations = 0;
 
-  /// A short name for messages: "direct (UMFPACK LU)", "GMRES + MueLu SA-AMG", ...
+  /// A short name for messages: "direct (MUMPS LU)", "GMRES + MueLu SA-AMG", ...
   std::string describe() const;
 };
 
