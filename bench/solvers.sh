@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
-# Implicit solve time, today's default solver against the previous default (GMRES + Ifpack2
-# ILU(2)), side by side in one run: the Timoshenko beam at 8,514 dofs and the cantilever block
-# at about 10,000 and 75,000 particles (docs/implicit.md). Prints, per model and solver, the
-# Newton phase (linear solver setup + Krylov + assembly inside Newton), the setup share, the
-# linear iterations and the ratio previous / default. Runs longer than EFG_BENCH_TIMEOUT seconds
+# Implicit solve time, today's default solver against the previous defaults, side by side in one
+# run (docs/implicit.md): the Timoshenko beam at 8,514 dofs (default MUMPS, the previous direct
+# default UMFPACK, the first default GMRES + Ifpack2 ILU(2)), at 33,410 and 132,354 dofs on 1 and
+# 2 ranks (MUMPS; UMFPACK on 1), and the cantilever block at about 10,000 and 75,000 particles.
+# Prints, per model and solver, the Newton phase (linear solver setup + Krylov + assembly inside
+# Newton), the setup share and the linear iterations. Runs longer than EFG_BENCH_TIMEOUT seconds
 # (default 600) are stopped and shown as "> limit". Not part of the test suite.
-#   bench/solvers.sh [--quick]     --quick: the beam and the 10k block only
+#   bench/solvers.sh [--quick]     --quick: the 8,514- and 33,410-dof beams and the 10k block
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 "$here/scripts/setup.sh" >/dev/null
@@ -28,14 +29,20 @@ open(out, "w").write(s)
 PY
 }
 
-run() {  # run NAME SCENE -> prints one row
-  local name="$1" file="$2" out="$work/out_$1"
-  if timeout "$limit" "$efg" run "$file" -o "$out" >"$work/$name.log" 2>&1; then
+run() {  # run NAME SCENE [RANKS] -> prints one row
+  local name="$1" file="$2" ranks="${3:-1}" out="$work/out_${1// /_}"
+  local launch=()
+  if [ "$ranks" -gt 1 ]; then
+    launch=(mpirun -np "$ranks")
+    if [ "$(id -u)" -eq 0 ]; then launch+=(--allow-run-as-root); fi
+  fi
+  if timeout "$limit" "${launch[@]}" "$efg" run "$file" -o "$out" >"$work/$name.log" 2>&1; then
     /usr/bin/python3 - "$out"/*.report.json "$name" <<'PY'
 import json, sys
 r = json.load(open(sys.argv[1]))
 st = r["implicit_stages"][0]
 newton = r["phase_seconds"]["Newton iterations"]
+newton = max(newton) if isinstance(newton, list) else newton
 print("| %s | %d | %s | %.2f | %.2f | %d |" % (sys.argv[2], r["dofs"], st["linear_solver"].split(" (")[0],
       newton, st["linear_setup_seconds"], st["linear_iterations"]))
 PY
@@ -47,9 +54,21 @@ PY
 echo "| model, solver | dofs | linear solver | Newton phase s | setup s | linear its |"
 echo "|---|---|---|---|---|---|"
 scene "$here/input/timoshenko_beam.yaml" "$work/beam.yaml" "128, 32" ""
+scene "$here/input/timoshenko_beam.yaml" "$work/beam_umf.yaml" "128, 32" ", preconditioner: {Type: direct, solver: UMFPACK}"
 scene "$here/input/timoshenko_beam.yaml" "$work/beam_old.yaml" "128, 32" ", preconditioner: {Type: Ifpack2}"
 run "beam 8514 dofs, default" "$work/beam.yaml"
-run "beam 8514 dofs, previous" "$work/beam_old.yaml"
+run "beam 8514 dofs, UMFPACK" "$work/beam_umf.yaml"
+run "beam 8514 dofs, ILU(2)" "$work/beam_old.yaml"
+beams=("256, 64")                     # 33,410 dofs
+if [ $quick -eq 0 ]; then beams+=("512, 128"); fi  # 132,354 dofs
+for cells in "${beams[@]}"; do
+  tag="beam ${cells// /}"
+  scene "$here/input/timoshenko_beam.yaml" "$work/beam.yaml" "$cells" ", solver: direct"
+  scene "$here/input/timoshenko_beam.yaml" "$work/beam_umf.yaml" "$cells" ", preconditioner: {Type: direct, solver: UMFPACK}"
+  run "$tag, default" "$work/beam.yaml"
+  run "$tag, default, 2 ranks" "$work/beam.yaml" 2
+  run "$tag, UMFPACK" "$work/beam_umf.yaml"
+done
 models=("45, 14, 14")                 # 46 x 15 x 15 = 10,350 particles
 if [ $quick -eq 0 ]; then models+=("100, 26, 26"); fi  # 101 x 27 x 27 = 73,629 particles
 for cells in "${models[@]}"; do

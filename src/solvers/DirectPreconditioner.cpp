@@ -292,6 +292,11 @@ class DirectPreconditioner : public MatrixPreconditioner {
 
 Teuchos::RCP<MatrixPreconditioner> make_direct_preconditioner(
     const Teuchos::ParameterList& settings) {
+  // (efg check builds this on a small matrix: a misspelt key is bad input, not ignored.)
+  for (auto it = settings.begin(); it != settings.end(); ++it)
+    if (settings.name(it) != "solver")
+      throw std::invalid_argument("'" + settings.name(it) +
+                                  "' is not a parameter of the direct solver (it takes 'solver')");
   return Teuchos::rcp(new DirectPreconditioner(
       settings.isParameter("solver") ? settings.get<std::string>("solver") : "MUMPS"));
 }
