@@ -64,13 +64,17 @@ MaterialLaw material_law(const Scene& scene, const PartSpec& part, int dimension
     law.j2 = j2_parameters(scene, material, part, dimension);
   }
   if (part.formulation == PartFormulation::mixed_up) {
-    // scene/PartFormulationCheck: linear elastic or neo-Hookean, one modulus, plane strain or 3D
-    // (the 3D constants), so kappa = lambda + 2 mu / 3. The points keep the deviatoric law.
+    // scene/PartFormulationCheck: linear elastic, neo-Hookean or J2, one modulus, plane strain
+    // or 3D (the 3D constants), so kappa = lambda + 2 mu / 3. The points keep the deviatoric law.
     law.bulk_modulus = law.elastic.lambda + 2.0 * law.elastic.mu / 3.0;
     if (law.elastic.kind == physics::MaterialKind::neo_hookean)
       law.elastic.kind = physics::MaterialKind::isochoric_neo_hookean;
     else
       law.elastic.lambda = -2.0 * law.elastic.mu / 3.0;
+    // J2: the return map acts on the deviatoric stress only and the flow is isochoric, so the
+    // law with a zero bulk modulus (lambda = -2 mu / 3) is its deviatoric part exactly, small
+    // strain and finite (Hencky: tau = kappa ln J 1 + dev tau, the first term the cells').
+    if (law.plastic) law.j2.lambda = -2.0 * law.j2.mu / 3.0;
   }
   return law;
 }

@@ -22,12 +22,8 @@ void check_part_formulations(const Scene& scene) {
     if (!material) continue;  // reported by the part's own check
     const auto path = "parts[" + std::to_string(i) + "].formulation";
     const YAML::Node at = scene.document["parts"][i]["formulation"];
-    if (material->model != "linear_elastic" && material->model != "neo_hookean")
-      throw InputError(schema::located_message(
-          scene.file, at, path,
-          "mixed_up is available for linear_elastic and neo_hookean materials; material '" +
-              material->name + "' is " + material->model +
-              ": expected formulation: displacement, or one of those materials"));
+    // Every material model takes mixed_up: linear elastic and J2 through their deviatoric
+    // constants, neo-Hookean through its isochoric part (model/MaterialLaws).
     if (material->youngs_modulus_field)
       throw InputError(schema::located_message(
           scene.file, at, path,
