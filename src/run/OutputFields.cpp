@@ -210,10 +210,13 @@ void particle_tensors(const Model& model, const ParticleValues& values,
 }
 
 // Path-dependent parts: stress, plastic strain and erosion flag from the committed history of
-// each particle's integration point (SCNI and nodal integration: one point per particle).
+// each particle's integration point (SCNI and nodal integration: one point per particle). Mixed
+// u-p parts: the history stress is the deviatoric law's, and -p I (the particle's pressure, as in
+// particle_tensors) completes it.
 void history_values(const Model& model, const SolidOperator& op, const Vector& d_overlap,
-                    std::vector<Tensor>& stresses, std::vector<double>& plastic,
-                    std::vector<double>& eroded) {
+                    const ParticleValues& values, const std::vector<double>& pressure,
+                    const MixedPressure* mixed, std::vector<Tensor>& stresses,
+                    std::vector<double>& plastic, std::vector<double>& eroded) {
   const auto slot = owned_slots(model);
   const std::size_t none = model.partition.owned.size();
   for (const auto& h : op.history_output(d_overlap))
@@ -221,8 +224,12 @@ void history_values(const Model& model, const SolidOperator& op, const Vector& d
       const auto s = h.node[q] >= 0 ? slot[static_cast<std::size_t>(h.node[q])] : none;
       if (s == none) continue;
       const std::size_t row = q * SolidOperator::history_columns;
+      const bool with_pressure =
+          mixed && values.part[s] >= 0 && mixed->mixed(static_cast<std::size_t>(values.part[s]));
       for (std::size_t i = 0; i < 3; ++i)
-        for (std::size_t j = 0; j < 3; ++j) stresses[s][i][j] = h.values[row + i * 3 + j];
+        for (std::size_t j = 0; j < 3; ++j)
+          stresses[s][i][j] =
+              h.values[row + i * 3 + j] - (i == j && with_pressure ? pressure[s] : 0.0);
       plastic[s] = h.values[row + 9];
       eroded[s] = h.values[row + 10];
     }
@@ -264,14 +271,14 @@ std::vector<std::vector<double>> state_columns(const Model& model, const SolidOp
   const auto particles = interpolate(model, op, d_overlap, v_overlap, a_overlap);
   std::vector<Tensor> strains(owned.size(), Tensor{}), stresses(owned.size(), Tensor{});
   const auto& fields = model.scene.output.fields;
+  const auto pressure = mixed ? mixed->particle_pressures(d_overlap) : std::vector<double>{};
   if (std::any_of(fields.begin(), fields.end(), [](const std::string& f) {
         return f == "stress" || f == "strain" || f == "von_mises" || f == "pressure";
       }))
-    particle_tensors(model, particles,
-                     mixed ? mixed->particle_pressures(d_overlap) : std::vector<double>{}, mixed,
-                     strains, stresses);
+    particle_tensors(model, particles, pressure, mixed, strains, stresses);
   std::vector<double> plastic(owned.size(), 0.0), eroded(owned.size(), 0.0);
-  if (op.history().any()) history_values(model, op, d_overlap, stresses, plastic, eroded);
+  if (op.history().any())
+    history_values(model, op, d_overlap, particles, pressure, mixed, stresses, plastic, eroded);
   const auto udim = static_cast<std::size_t>(dim);
   const auto material = std::find(fields.begin(), fields.end(), "material_state") != fields.end()
                             ? committed_states(model, op)
