@@ -28,7 +28,8 @@ StageSummary ImplicitDriver::run(Vector& d, const OutputHook& output) {
   summary.linear_solver = newton.plan().describe() + " (" + newton.plan().reason + ")";
   double t = start_, dt = span / steps, next_output = std::min(end, start_ + interval),
          last_output = start_;
-  Vector saved(d, Teuchos::Copy);
+  Vector saved(d, Teuchos::Copy), increment(d.getMap()), increment_scratch(d.getMap());
+  double previous_dt = 0;
   auto set_loads = [&](double time) {
     const double ramp = std::min(1.0, time / first_end_);
     problem_.set_load_factor(curve_factor(scene, time, ramp, stage_.name));
@@ -52,7 +53,18 @@ StageSummary ImplicitDriver::run(Vector& d, const OutputHook& output) {
               ": t = " + std::to_string(target));
     Tpetra::deep_copy(saved, d);
     problem_.solid().history().set_step_time(target - t);
-    const auto result = newton.solve(d);
+    // Extrapolated predictor (the last accepted increment scaled to this step; the start of
+    // Newton, not a change of the history, which each iterate recomputes from the committed
+    // state): on a steady load path Newton starts near the answer instead of at the last one,
+    // where a plastic step's first iterate overshot (det F <= 0 in a trial, cutbacks). The
+    // residual of the unpredicted start stays the scale of the Newton test.
+    double step_scale = 0;
+    if (previous_dt > 0) {
+      problem_.residual(d, increment_scratch);
+      step_scale = increment_scratch.norm2();
+      d.update((target - t) / previous_dt, increment, 1.0);
+    }
+    const auto result = newton.solve(d, step_scale);
     summary.newton_iterations += result.iterations;
     summary.linear_iterations += result.linear_iterations;
     summary.newton_records.push_back(result.record);
@@ -96,6 +108,8 @@ StageSummary ImplicitDriver::run(Vector& d, const OutputHook& output) {
     // Accepted: the history of the converged state becomes the start of the next load step (a
     // cut-back step above never reaches here and leaves the committed history untouched).
     problem_.commit_history(d);
+    increment.update(1.0, d, -1.0, saved, 0.0);
+    previous_dt = target - t;
     t = target;
     ++summary.steps;
     summary.residual_histories.push_back(result.residual_history);

@@ -48,7 +48,7 @@ NOX::StatusTest::StatusType NewtonConvergence::checkStatus(const NOX::Solver::Ge
     record_linear_solve(solver, *dd);
   }
   const double r0 = record_.residuals.front();
-  const double scale = std::max(problem_.force_scale(), r0);
+  const double scale = std::max({problem_.force_scale(), r0, step_scale_});
   if (!std::isfinite(r)) return status_;  // the finite-value test reports it
   if (r <= tol_ * scale) {
     record_.reason = "||r|| below the force tolerance";

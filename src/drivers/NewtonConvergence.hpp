@@ -1,7 +1,9 @@
 // Newton's stopping test for static equilibrium, in force and energy units rather than relative to
 // wherever the step happened to start (a hold stage starts converged; an exactly solved linear
 // step leaves only round-off). Converged when, after the iterate's update:
-//   (a) ||r|| <= tol * max(||f_ext||, ||f_int(d)||, ||r_0||)   (residual against the force scale),
+//   (a) ||r|| <= tol * max(||f_ext||, ||f_int(d)||, ||r_0||, ||r_step||)   (residual against the
+//       force scale; r_step the residual where the load step began before the extrapolated
+//       predictor moved it, ImplicitDriver),
 //   (b) the problem is linear and the linear solve of the iteration converged (one Newton step of
 //       an affine residual with an exact direction is the solution: never cut back), or
 //   (c) |dd_k . r_{k-1}| <= energy_tol * |dd_1 . r_0|   (energy norm of the update: Bathe 1996,
@@ -39,13 +41,16 @@ class NewtonConvergence : public NOX::StatusTest::Generic {
   using LinearResidualRatio =
       std::function<double(const NOX::Abstract::Vector& dd, const NOX::Abstract::Vector& r)>;
 
+  /// `step_scale`: the residual norm of the load step's start before a predictor moved it (0:
+  /// none), kept in the force scale so that a predicted start judges by the step's forces.
   NewtonConvergence(const StaticProblem& problem, double tolerance, double energy_tolerance,
-                    LinearResidualRatio ratio, NewtonRecord& record)
+                    LinearResidualRatio ratio, NewtonRecord& record, double step_scale = 0.0)
       : problem_(problem),
         tol_(tolerance),
         energy_tol_(energy_tolerance),
         ratio_(std::move(ratio)),
-        record_(record) {}
+        record_(record),
+        step_scale_(step_scale) {}
 
   NOX::StatusTest::StatusType checkStatus(const NOX::Solver::Generic& solver,
                                           NOX::StatusTest::CheckType type) override;
@@ -59,7 +64,7 @@ class NewtonConvergence : public NOX::StatusTest::Generic {
   double tol_, energy_tol_;
   LinearResidualRatio ratio_;
   NewtonRecord& record_;
-  double first_energy_ = 0;
+  double first_energy_ = 0, step_scale_ = 0;
   NOX::StatusTest::StatusType status_ = NOX::StatusTest::Unevaluated;
 };
 

@@ -153,7 +153,7 @@ double NewtonSolver::preconditioner_seconds() const {
   return preconditioner_.is_null() ? 0.0 : preconditioner_->setup_seconds();
 }
 
-NewtonResult NewtonSolver::solve(Vector& d) {
+NewtonResult NewtonSolver::solve(Vector& d, double step_scale) {
   Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewCounter("efg: Newton iterations"));
   NewtonResult result;
   model_->set_initial_guess(d);
@@ -173,8 +173,8 @@ NewtonResult NewtonSolver::solve(Vector& d) {
         dynamic_cast<const NOX::Thyra::Vector&>(dd).getThyraVector(),
         dynamic_cast<const NOX::Thyra::Vector&>(r).getThyraVector());
   };
-  tests->addStatusTest(Teuchos::rcp(
-      new NewtonConvergence(problem_, tolerance_, energy_tolerance_, ratio, result.record)));
+  tests->addStatusTest(Teuchos::rcp(new NewtonConvergence(problem_, tolerance_, energy_tolerance_,
+                                                          ratio, result.record, step_scale)));
   tests->addStatusTest(NOX::StatusTest::buildStatusTests(params->sublist("Status Tests"), utils));
   auto solver = NOX::Solver::buildSolver(group, tests, params);
   group->computeF();

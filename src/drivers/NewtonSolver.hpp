@@ -32,8 +32,10 @@ class NewtonSolver {
   NewtonSolver(StaticProblem& problem, const YAML::Node& stage, const std::string& scene_file,
                const std::string& where);
 
-  /// Solves r(d) = 0 starting from d; d holds the last iterate on return.
-  NewtonResult solve(Vector& d);
+  /// Solves r(d) = 0 starting from d; d holds the last iterate on return. `step_scale`: the
+  /// residual norm where the load step began before a predictor moved d (0: none), a further
+  /// floor of the Newton test's force scale (NewtonConvergence).
+  NewtonResult solve(Vector& d, double step_scale = 0.0);
 
   const LinearSolverPlan& plan() const { return plan_; }
   /// Seconds spent building preconditioners / factorizations so far.

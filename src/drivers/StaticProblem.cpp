@@ -16,7 +16,8 @@ StaticProblem::StaticProblem(std::shared_ptr<const ModelOperators> operators)
       model_(ops_->model()),
       d_overlap_(model_.maps.overlap_dofs),
       r_overlap_(model_.maps.overlap_dofs),
-      f_ext_(model_.maps.owned_dofs) {
+      f_ext_(model_.maps.owned_dofs),
+      boundary_owned_(model_.maps.owned_dofs) {
   // The conditions of each implicit stage; stages with the same active conditions share them.
   const auto& scene = model_.scene;
   std::vector<std::string> stages;
@@ -87,16 +88,24 @@ void StaticProblem::unconstrained_residual(const Vector& d_owned, Vector& r_owne
   r_overlap_.putScalar(0.0);
   // A failure among one rank's points (det F <= 0 in a line-search trial) stops every rank here,
   // before the export where the others would wait for it forever (seen on 2 ranks).
-  run_collectively(model_.maps.owned_dofs->getComm(), [&] {
-    ops_->add_internal_force(d_overlap_, r_overlap_);
+  const auto comm = model_.maps.owned_dofs->getComm();
+  run_collectively(comm, [&] { ops_->add_internal_force(d_overlap_, r_overlap_); });
+  ops_->to_owned(r_overlap_, r_owned);
+  // The Newton test's force scale: f_int alone, whose rows carry the reactions of the supports
+  // and prescribed motions. With the boundary terms and contact forces added the sum vanishes at
+  // equilibrium, and a load step that starts converged (the extrapolated predictor on a steady
+  // load path) then had only round-off as its scale.
+  internal_norm_ = r_owned.norm2();
+  r_overlap_.putScalar(0.0);
+  run_collectively(comm, [&] {
     {
       Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewCounter("efg: essential conditions"));
       conditions_->add_boundary_terms(d_overlap_, r_overlap_);
     }
     if (contact_) contact_->add_residual(d_overlap_, r_overlap_);
   });
-  ops_->to_owned(r_overlap_, r_owned);
-  internal_norm_ = r_owned.norm2();
+  ops_->to_owned(r_overlap_, boundary_owned_);
+  r_owned.update(1.0, boundary_owned_, 1.0);
   r_owned.update(-1.0, f_ext_, 1.0);
   if (released_) r_owned.update(-release_scale_, *released_, 1.0);
 }

@@ -63,7 +63,7 @@ class StaticProblem {
   const Model& model() const { return model_; }
 
   /// The force scale of the last residual evaluation: max(||f_ext||, ||f_int(d)||) (2-norms over
-  /// the owned dofs). Newton's tolerance is relative to it, so that a step that starts converged
+  /// the owned dofs; f_int without the boundary terms, so that it carries the reactions). Newton's tolerance is relative to it, so that a step that starts converged
   /// (a hold stage) or a load that is reacted by stiff supports is judged in force units.
   double force_scale() const { return std::max(external_norm_, internal_norm_); }
   /// True when r(d) is affine in d (small-strain linear elastic parts only): one Newton step
@@ -82,9 +82,10 @@ class StaticProblem {
   std::vector<std::unique_ptr<EssentialConditions>> condition_sets_;
   std::map<std::string, std::size_t> set_of_stage_;
   EssentialConditions* conditions_ = nullptr;  ///< the current stage's
-  std::unique_ptr<ImplicitContact> contact_;  ///< only with contacts in the scene
+  std::unique_ptr<ImplicitContact> contact_;   ///< only with contacts in the scene
   Teuchos::RCP<const FEGraph> graph_;
   Vector d_overlap_, r_overlap_, f_ext_;
+  Vector boundary_owned_;          ///< the boundary terms' and contacts' share of the residual
   Teuchos::RCP<Vector> released_;  ///< springback: r(d0) of the stage (null: no release)
   double release_scale_ = 0;
   double external_norm_ = 0, internal_norm_ = 0;
