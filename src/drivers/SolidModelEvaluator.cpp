@@ -91,7 +91,7 @@ void SolidModelEvaluator::evalModelImpl(
     failed = 1;
   } catch (const PeerFailure& e) {  // the evaluation failed on another rank (agreed collectively)
     if (e.exit_code() != static_cast<int>(ExitCode::numerical)) throw;
-    failure_ = "numerical failure on another rank";
+    failure_ = e.what();
     failed = 1;
   }
   int any = 0;
