@@ -28,7 +28,7 @@ StageSummary ImplicitDriver::run(Vector& d, const OutputHook& output) {
   summary.linear_solver = newton.plan().describe() + " (" + newton.plan().reason + ")";
   double t = start_, dt = span / steps, next_output = std::min(end, start_ + interval),
          last_output = start_;
-  Vector saved(d, Teuchos::Copy), increment(d.getMap()), increment_scratch(d.getMap());
+  Vector saved(d, Teuchos::Copy), increment(d.getMap()), start_residual(d.getMap());
   double previous_dt = 0;
   auto set_loads = [&](double time) {
     const double ramp = std::min(1.0, time / first_end_);
@@ -60,8 +60,8 @@ StageSummary ImplicitDriver::run(Vector& d, const OutputHook& output) {
     // residual of the unpredicted start stays the scale of the Newton test.
     double step_scale = 0;
     if (previous_dt > 0) {
-      problem_.residual(d, increment_scratch);
-      step_scale = increment_scratch.norm2();
+      problem_.residual(d, start_residual);
+      step_scale = start_residual.norm2();
       d.update((target - t) / previous_dt, increment, 1.0);
     }
     const auto result = newton.solve(d, step_scale);

@@ -63,8 +63,9 @@ class StaticProblem {
   const Model& model() const { return model_; }
 
   /// The force scale of the last residual evaluation: max(||f_ext||, ||f_int(d)||) (2-norms over
-  /// the owned dofs; f_int without the boundary terms, so that it carries the reactions). Newton's tolerance is relative to it, so that a step that starts converged
-  /// (a hold stage) or a load that is reacted by stiff supports is judged in force units.
+  /// the owned dofs; f_int without the boundary terms, so that it carries the reactions).
+  /// Newton's tolerance is relative to it, so that a step that starts converged (a hold stage)
+  /// or a load that is reacted by stiff supports is judged in force units.
   double force_scale() const { return std::max(external_norm_, internal_norm_); }
   /// True when r(d) is affine in d (small-strain linear elastic parts only): one Newton step
   /// with a converged linear solve is then the solution.

@@ -276,8 +276,12 @@ class DirectPreconditioner : public MatrixPreconditioner {
     // MUMPS throws on every rank alike (its status is global).
     try {
       mumps_->factor(K);
-    } catch (const std::runtime_error& e) {
+    } catch (const SingularMatrixError& e) {
       singular(e.what());
+    } catch (const std::runtime_error& e) {
+      throw NumericalError(
+          "the direct solver (MUMPS) could not factor the Jacobian: " + std::string(e.what()) +
+          " (a smaller model, more ranks, or solver: iterative)");
     }
   }
 

@@ -108,11 +108,12 @@ void DistributedLU::factor(std::int64_t n, std::vector<int> rows, std::vector<in
     if (!short_of_space || attempt == 3) break;
     icntl(id, 14) *= 2;
   }
+  if (infog(id, 1) == -10) throw SingularMatrixError(failure(id, "factorization"));
   if (infog(id, 1) < 0) throw std::runtime_error(failure(id, "factorization"));
   analysed_ = true;
   if (infog(id, 28) > 0)
-    throw std::runtime_error("MUMPS factorization failed: the matrix is singular (" +
-                             std::to_string(infog(id, 28)) + " null pivots)");
+    throw SingularMatrixError("MUMPS factorization failed: the matrix is singular (" +
+                              std::to_string(infog(id, 28)) + " null pivots)");
   // INFOG(29): entries in the factors; negative values count millions (MUMPS user guide).
   const auto entries = static_cast<std::int64_t>(infog(id, 29));
   factor_nonzeros_ = entries >= 0 ? entries : -entries * 1000000;

@@ -15,9 +15,16 @@
 
 #include <cstdint>
 #include <memory>
+#include <stdexcept>
 #include <vector>
 
 namespace efg {
+
+/// A factorization that met a null pivot (the message says where it came from).
+class SingularMatrixError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
 
 class DistributedLU {
  public:
@@ -27,8 +34,8 @@ class DistributedLU {
   ~DistributedLU();
 
   /// Factors the n x n matrix whose entries (rows[k], columns[k], values[k]) this process holds
-  /// (collective). Throws std::runtime_error naming the cause when the matrix is singular (a
-  /// pivot below 1e-14 of the scaled matrix's norm) or MUMPS fails.
+  /// (collective). Throws SingularMatrixError when a pivot falls below 1e-14 of the scaled
+  /// matrix's norm, std::runtime_error naming MUMPS' status when MUMPS fails otherwise (memory).
   void factor(std::int64_t n, std::vector<int> rows, std::vector<int> columns,
               std::vector<double> values);
 
