@@ -17,6 +17,7 @@ ImplicitContact::ImplicitContact(const ModelOperators& ops)
   const auto& model = ops.model();
   const auto& mesh = model.mesh;
   for (const auto& spec : model.scene.contacts) {
+    if (spec.rigid_body.empty()) continue;  // between deformable parts: refused by the scene
     Pair pair;
     pair.spec = &spec;
     for (std::size_t b = 0; b < bodies_.count(); ++b)

@@ -38,6 +38,15 @@ struct ParticleRow {
 /// The row of owned particle j of part p.
 ParticleRow particle_row(const ModelOperators& ops, std::size_t p, std::size_t j);
 
+/// The lumped mass of owned particle j of part p, `mass` a host view of the owned lumped masses
+/// (one entry per owned dof, equal over a particle's components).
+template <class View>
+double particle_mass(const Model& model, const View& mass, std::size_t p, std::size_t j) {
+  const auto dof = static_cast<GlobalOrdinal>(model.parts[p].cloud.mesh_node[j]) *
+                   static_cast<GlobalOrdinal>(model.mesh.dimension);
+  return mass(static_cast<std::size_t>(model.maps.owned_dofs->getLocalElement(dof)), 0);
+}
+
 /// 1 for the mesh nodes on the boundary of part p (the nodes of its boundary sides).
 std::vector<char> surface_nodes(const Model& model, std::size_t p);
 

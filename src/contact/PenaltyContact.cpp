@@ -8,13 +8,14 @@
 
 #include "contact/CoulombFriction.hpp"
 #include "core/Errors.hpp"
+#include "scene/ContactInput.hpp"
 
 namespace efg {
 
-double PenaltyContact::largest_penalty(const Scene& scene) {
-  double p = 0;
-  for (const auto& c : scene.contacts) p = std::max(p, c.penalty);
-  return p;
+double PenaltyContact::largest_share(const Scene& scene) {
+  double share = 0;
+  for (const auto& c : scene.contacts) share = std::max(share, contact_stability_share(c));
+  return share;
 }
 
 PenaltyContact::PenaltyContact(const ModelOperators& ops, const Vector& mass_owned,
@@ -28,13 +29,12 @@ PenaltyContact::PenaltyContact(const ModelOperators& ops, const Vector& mass_own
   auto candidate = [&](std::size_t p, std::size_t j) {
     Candidate c;
     c.row = particle_row(ops, p, j);
-    c.mass = mass(static_cast<std::size_t>(model.maps.owned_dofs->getLocalElement(
-                      static_cast<GlobalOrdinal>(model.parts[p].cloud.mesh_node[j]) * dim_)),
-                  0);
+    c.mass = particle_mass(model, mass, p, j);
     return c;
   };
   for (const auto& spec : model.scene.contacts) {
-    if (!spec.stages.includes(stage)) continue;  // a tool this stage does without
+    // a tool this stage does without, or a contact between deformable parts (SurfaceContact)
+    if (!spec.stages.includes(stage) || spec.rigid_body.empty()) continue;
     Pair pair;
     for (std::size_t b = 0; b < bodies.scene_count(); ++b)
       if (bodies.name(b) == spec.rigid_body) pair.body = b;

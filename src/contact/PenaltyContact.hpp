@@ -5,9 +5,9 @@
 // position is x_J = X_J + sum_I phi_I(X_J) d_I (shape functions do not interpolate). When x_J is
 // inside the body (gap g < 0 along the outward normal n):
 //   normal force    F_n = max(0, k (-g) - c v_n) n,   k = penalty x m_J / dt^2 (m_J the lumped
-//                   mass; stable for penalty <= 1 as the rigid walls, reducing the stable step by
-//                   sqrt(1 - penalty / 4)), c = 2 damping sqrt(k m_J) a viscous damping on the
-//                   normal approach speed v_n over the last step (never pulling);
+//                   mass), c = 2 damping sqrt(k m_J) a viscous damping on the normal approach
+//                   speed v_n over the last step (never pulling); the stable step is reduced by
+//                   sqrt(1 - (penalty + 4 damping sqrt(penalty)) / 4) (scene/ContactInput.hpp);
 //   friction        the elastic-slip return map of contact/CoulombFriction.hpp on the slip
 //                   increment of the particle relative to the body over the step.
 // The force F = F_n + F_t acts on the particle through its shape-function row (ParticleRow)
@@ -33,8 +33,9 @@ class PenaltyContact {
   PenaltyContact(const ModelOperators& ops, const Vector& mass_owned, const RigidBodies& bodies,
                  const std::string& stage);
 
-  /// The largest penalty factor of the scene's contacts (the stable-step reduction).
-  static double largest_penalty(const Scene& scene);
+  /// The largest share of the scene's contacts in the stability condition (P + 2 D of
+  /// contact_stability_share: the stable step falls by sqrt(1 - share / 4)).
+  static double largest_share(const Scene& scene);
 
   /// Sets the friction reference (positions, body displacements) to the state at a stage start.
   void start(const Vector& d_overlap, const std::vector<RigidBodyState>& bodies);

@@ -5,13 +5,24 @@ namespace efg {
 RigidContact::RigidContact(const ModelOperators& ops, const Vector& mass_owned,
                            const std::string& stage)
     : bodies_(ops.model().scene, ops.model().mesh.dimension),
-      contact_(ops, mass_owned, bodies_, stage) {}
+      contact_(ops, mass_owned, bodies_, stage),
+      surfaces_(SurfaceContact::wanted(ops.model().scene)
+                    ? std::make_unique<SurfaceContact>(ops, mass_owned, stage)
+                    : nullptr) {}
+
+std::vector<double> RigidContact::wall_forces() const {
+  auto forces = contact_.wall_forces();
+  if (surfaces_)
+    forces.insert(forces.end(), surfaces_->forces().begin(), surfaces_->forces().end());
+  return forces;
+}
 
 void RigidContact::begin(const std::vector<RigidBodyState>& carried, double time,
                          const Vector& d_overlap) {
   states_ = carried.size() == bodies_.count() ? carried : bodies_.initial_states(time);
   previous_ = states_;
   contact_.start(d_overlap, states_);
+  if (surfaces_) surfaces_->start(d_overlap);
 }
 
 void RigidContact::move(double time, double dt) {
@@ -22,6 +33,7 @@ void RigidContact::move(double time, double dt) {
 
 void RigidContact::add_forces(const Vector& d_overlap, double dt, Vector& f_overlap) {
   contact_.add_forces(d_overlap, dt, states_, f_overlap);
+  if (surfaces_) surfaces_->add_forces(d_overlap, dt, f_overlap);
 }
 
 RigidContact::Work RigidContact::finish(double dt) {
@@ -40,6 +52,7 @@ RigidContact::Work RigidContact::finish(double dt) {
 
 void RigidContact::commit() {
   contact_.commit(states_);
+  if (surfaces_) surfaces_->commit();
 }
 
 void RigidContact::restore() {

@@ -1,8 +1,9 @@
-// Rigid bodies, rigid walls and their penalty contacts as one explicit-stage component (built
-// only when the scene has any of them): the bodies' velocity-Verlet halves around the particles'
-// force evaluation, the contact forces, the bodies' share of the energy account, and the state
-// kept for a failed step. The driver sees forces on particles like the rigid walls' (their work
-// is in wall_work) and body states for the history.
+// Rigid bodies, rigid walls and contacts as one explicit-stage component (built only when the
+// scene has any of them): the bodies' velocity-Verlet halves around the particles' force
+// evaluation, the contact forces (with rigid bodies: PenaltyContact; between deformable parts:
+// SurfaceContact, built only when the scene has such a contact), the bodies' share of the
+// energy account, and the state kept for a failed step. The driver sees forces on particles
+// like the rigid walls' (their work is in wall_work) and body states for the history.
 #pragma once
 
 #include <memory>
@@ -10,6 +11,7 @@
 
 #include "contact/PenaltyContact.hpp"
 #include "contact/RigidBodies.hpp"
+#include "contact/SurfaceContact.hpp"
 
 namespace efg {
 
@@ -42,13 +44,17 @@ class RigidContact {
   const std::vector<RigidBodyState>& states() const { return states_; }
   const RigidBodies& bodies() const { return bodies_; }
   double kinetic_energy() const { return bodies_.kinetic_energy(states_); }
-  long long active_count() const { return contact_.active_count(); }
-  /// The normal force on each rigid wall at the last add_forces.
-  const std::vector<double>& wall_forces() const { return contact_.wall_forces(); }
+  long long active_count() const {
+    return contact_.active_count() + (surfaces_ ? surfaces_->active_count() : 0);
+  }
+  /// The normal force on each rigid wall at the last add_forces, then the force of each contact
+  /// between deformable parts on its target parts (3 components each).
+  std::vector<double> wall_forces() const;
 
  private:
   RigidBodies bodies_;
   PenaltyContact contact_;
+  std::unique_ptr<SurfaceContact> surfaces_;
   std::vector<RigidBodyState> states_, previous_;
   double step_start_ = 0.0;  // time of the step under way (applied forces of free bodies)
 };

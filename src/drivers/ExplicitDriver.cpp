@@ -16,8 +16,6 @@
 
 namespace efg {
 namespace {
-// The largest penalty factor of walls and contacts: both add penalty / dt^2 to a particle's
-// omega^2 (StableTimeStep).
 // The stage's lumped mass: the row-sum mass times its mass_scale (uniform mass scaling).
 Vector stage_mass(const ModelOperators& ops, const StageSpec& stage) {
   Vector mass = lumped_mass(ops);
@@ -33,8 +31,10 @@ Vector stage_mass(const ModelOperators& ops, const StageSpec& stage) {
   return mass;
 }
 
+// The largest share of walls and contacts in the stability condition: a wall adds penalty /
+// dt^2 to a particle's omega^2, a contact its spring and damper (contact_stability_share).
 double largest_wall_penalty(const Scene& scene) {
-  double p = PenaltyContact::largest_penalty(scene);
+  double p = PenaltyContact::largest_share(scene);
   for (const auto& w : scene.rigid_walls) p = std::max(p, w.penalty);
   return p;
 }

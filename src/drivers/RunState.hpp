@@ -27,6 +27,8 @@ struct RunState {
   /// E_0 + W_ext + W_wall.
   double damping_work = 0;
   bool energy_started = false;
+  /// The normal force of each rigid wall, then the force of each contact between deformable
+  /// parts on its target parts (3 components each).
   std::vector<double> wall_forces;
   /// Rigid bodies (scene order): displacement, velocity and contact force, carried across stages.
   std::vector<RigidBodyState> bodies;

@@ -27,7 +27,8 @@ namespace efg {
 
 class StableTimeStep {
  public:
-  /// `wall_penalty`: the largest rigid-wall penalty factor p of the model (0 without walls);
+  /// `wall_penalty`: the largest share P + 2 D of walls and contacts in the stability condition
+  /// (their spring and damper; 0 without any): the step falls by sqrt(1 - wall_penalty / 4);
   /// `extra(d, x, y)` adds a further stiffness times x to y.
   using ExtraStiffness = std::function<void(const Vector& d, const Vector& x, Vector& y)>;
   StableTimeStep(const ModelOperators& ops, const Vector& mass_owned, double wall_penalty = 0.0,

@@ -1,5 +1,6 @@
 #include "mesh/MeshGenerator.hpp"
 
+#include <algorithm>
 #include <random>
 #include <sstream>
 
@@ -224,6 +225,47 @@ BackgroundMesh generate_mesh(const GeneratorSpec& s) {
           xyz[3 * n + static_cast<std::size_t>(d)];
   add_boundary_sets(s, lat, mesh);
   return mesh;
+}
+
+void append_generated(BackgroundMesh& mesh, const GeneratorSpec& spec) {
+  if (spec.dimension != mesh.dimension)
+    throw InputError("a " + std::to_string(spec.dimension) + "D block cannot join a " +
+                     std::to_string(mesh.dimension) + "D mesh (expected " +
+                     std::to_string(mesh.dimension) + "D cells)");
+  if (mesh.find_block(spec.block_name))
+    throw InputError("block name '" + spec.block_name +
+                     "' is taken (expected a block_name of its own)");
+  const auto body = generate_mesh(spec);
+  const auto offset = static_cast<LocalIndex>(mesh.node_count());
+  const auto cell_offset = static_cast<LocalIndex>(mesh.cell_count());
+  std::int64_t block_id = 0, set_id = 0;
+  for (const auto& b : mesh.blocks) block_id = std::max(block_id, b.id);
+  for (const auto& s : mesh.node_sets) set_id = std::max(set_id, s.id);
+  for (const auto& s : mesh.side_sets) set_id = std::max(set_id, s.id);
+  mesh.coordinates.insert(mesh.coordinates.end(), body.coordinates.begin(), body.coordinates.end());
+  for (auto block : body.blocks) {
+    for (auto& n : block.connectivity) n += offset;
+    block.id = ++block_id;
+    mesh.blocks.push_back(std::move(block));
+  }
+  const auto prefix = spec.block_name + "_";
+  for (auto set : body.node_sets) {
+    for (auto& n : set.nodes) n += offset;
+    if (set.name == "all")
+      for (auto& all : mesh.node_sets)
+        if (all.name == "all")
+          all.nodes.insert(all.nodes.end(), set.nodes.begin(), set.nodes.end());
+    set.name = prefix + set.name;
+    set.id = ++set_id;
+    mesh.node_sets.push_back(std::move(set));
+  }
+  for (auto set : body.side_sets) {
+    for (auto& c : set.cells) c += cell_offset;
+    set.name = prefix + set.name;
+    set.id = ++set_id;
+    mesh.side_sets.push_back(std::move(set));
+  }
+  mesh.source += " + " + describe(spec);
 }
 
 }  // namespace efg

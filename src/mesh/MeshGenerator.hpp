@@ -35,6 +35,12 @@ constexpr double kMaxGeneratedNodes = 2e8;
 
 BackgroundMesh generate_mesh(const GeneratorSpec& spec);
 
+/// Generates `spec` and appends it to `mesh` as a separate body: its own nodes (not joined to
+/// the mesh's), its block, and its sets named <block_name>_xmin .. and <block_name>_all; the
+/// node set "all" grows to hold every node. Throws InputError when the dimensions differ or
+/// the block name is taken.
+void append_generated(BackgroundMesh& mesh, const GeneratorSpec& spec);
+
 /// A one-line description ("box 10x4x4 hex8 on [0,10]x[0,1]x[0,1], perturbation 0.2 seed 7").
 std::string describe(const GeneratorSpec& spec);
 

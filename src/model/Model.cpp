@@ -33,6 +33,7 @@ BackgroundMesh load_mesh(const CommPtr& comm, const Scene& scene) {
     try {
       auto m =
           scene.generator ? generate_mesh(*scene.generator) : read_exodus_mesh(scene.mesh_file);
+      for (const auto& block : scene.more_blocks) append_generated(m, block);
       validate_mesh(m);
       return m;
     } catch (const InputError& e) {

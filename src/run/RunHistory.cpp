@@ -18,6 +18,14 @@ bool has_mixed_parts(const Scene& scene) {
   return false;
 }
 
+// The contacts between deformable parts, in scene order.
+std::vector<const ContactSpec*> part_contacts(const Scene& scene) {
+  std::vector<const ContactSpec*> out;
+  for (const auto& c : scene.contacts)
+    if (!c.target_parts.empty()) out.push_back(&c);
+  return out;
+}
+
 bool erodes(const Scene& scene) {
   for (const auto& m : scene.materials)
     if (m.constants.count("failure_strain")) return true;
@@ -37,9 +45,13 @@ std::vector<std::string> history_names(const Scene& scene, int dimension) {
   const std::string axes = "xyz";
   const auto dim = static_cast<std::size_t>(dimension);
   for (const auto& w : scene.rigid_walls) names.push_back(short_name("wall_", w.name, "_force"));
-  // Rigid bodies: the momentum of particles and free bodies, and per body the contact force on
-  // it, its displacement and velocity.
-  if (!scene.rigid_bodies.empty())
+  // Contacts between deformable parts: the force of the parts on the target parts.
+  for (const auto* c : part_contacts(scene))
+    for (std::size_t d = 0; d < dim; ++d)
+      names.push_back(short_name("contact_", c->name, std::string("_F") + axes[d]));
+  // Rigid bodies or contacts between parts: the momentum of particles and free bodies; per body
+  // the contact force on it, its displacement and velocity.
+  if (!scene.rigid_bodies.empty() || !part_contacts(scene).empty())
     for (std::size_t d = 0; d < dim; ++d) names.push_back(std::string("momentum_") + axes[d]);
   // ... and the moment of the contact forces about its reference point (2D: z only).
   for (const auto& b : scene.rigid_bodies) {
@@ -97,7 +109,14 @@ std::vector<double> RunHistory::values(const ModelOperators& ops, const RunState
   if (has_mixed_parts(model_.scene)) out.push_back(state.damping_work);
   for (std::size_t w = 0; w < model_.scene.rigid_walls.size(); ++w)
     out.push_back(w < state.wall_forces.size() ? state.wall_forces[w] : 0.0);
-  if (!model_.scene.rigid_bodies.empty())
+  // After the walls' normal forces: 3 components per contact between deformable parts.
+  const auto walls = model_.scene.rigid_walls.size();
+  for (std::size_t c = 0; c < part_contacts(model_.scene).size(); ++c)
+    for (std::size_t d = 0; d < dim; ++d) {
+      const auto at = walls + 3 * c + d;
+      out.push_back(at < state.wall_forces.size() ? state.wall_forces[at] : 0.0);
+    }
+  if (!model_.scene.rigid_bodies.empty() || !part_contacts(model_.scene).empty())
     for (std::size_t d = 0; d < dim; ++d) out.push_back(state.momentum[d]);
   for (std::size_t b = 0; b < model_.scene.rigid_bodies.size(); ++b) {
     const RigidBodyState none;

@@ -18,6 +18,16 @@ inline double rigid_body_mass(const RigidBodySpec& body, int dim) {
   return body.mass > 0 ? body.mass : body.density * rigid_body_volume(body, dim);
 }
 
+/// The share of a contact in the central-difference stability condition, P + 2 D, with P the
+/// omega^2 dt^2 of its spring and D = c dt / m of its damper for the motion they act on (a
+/// particle on a rigid body; two facing particles of equal mass, reduced mass m / 2, between
+/// deformable parts, two-way with two springs and dampers): with the lagged damping velocity the
+/// condition is omega_el^2 dt^2 + P + 2 D <= 4, so the stable step falls by
+/// sqrt(1 - (P + 2 D) / 4). Rigid: P = penalty, D = 2 damping sqrt(penalty); between parts
+/// one-way P = 2 penalty, D = 2 sqrt(2) damping sqrt(penalty); two-way P = 4 penalty,
+/// D = 4 damping sqrt(penalty) (the dampers of SurfaceContact and PenaltyContact).
+double contact_stability_share(const ContactSpec& contact);
+
 /// Fills scene.rigid_bodies and scene.contacts from scene.resolved; throws InputError at
 /// file:line:col and key path for the first problem.
 void read_contact_input(Scene& scene);

@@ -71,13 +71,26 @@ SpecPtr rigid_body_spec() {
 
 SpecPtr contact_spec() {
   return map("Penalty contact between the surface particles of deformable parts and a rigid "
-             "body, with Coulomb friction in explicit stages; frictionless with fixed bodies in "
+             "body, or the surface of other deformable parts (target_parts; explicit stages), "
+             "with Coulomb friction in explicit stages; frictionless with fixed bodies in "
              "implicit stages.")
       .required("name", string("Contact name, unique."))
-      .required("rigid_body", string("Name of an entry of rigid_bodies."))
-      .required(
-          "parts",
-          string_list("Meshfree parts whose surface particles touch the body.").items(1, 1000))
+      .optional("rigid_body", string("Name of an entry of rigid_bodies."))
+      .optional("target_parts",
+                string_list("Deformable parts whose surface (the sides of their boundary, in "
+                            "the current configuration) the surface particles of parts touch; "
+                            "bin search; explicit stages.")
+                    .items(1, 1000))
+      .exactly_one_of({"rigid_body", "target_parts"})
+      .required("parts",
+                string_list("Meshfree parts whose surface particles touch the body or the target "
+                            "parts' surface.")
+                    .items(1, 1000))
+      .optional("two_way",
+                boolean("With target_parts: also the target parts' surface particles against "
+                        "the parts' surface (symmetric, LS-DYNA's surface-to-surface; the "
+                        "stable step then counts twice the penalty)."),
+                "true")
       .optional("penalty",
                 real("Normal stiffness per particle as a fraction of its mass / dt^2 (stable "
                      "up to about 1; the stable step is reduced by sqrt(1 - penalty / 4)).",

@@ -186,10 +186,13 @@ struct RigidBodySpec {
   std::vector<double> angular_velocity;
 };
 
-/// Penalty contact of the surface particles of deformable parts with a rigid body.
+/// Penalty contact of the surface particles of deformable parts with a rigid body, or with the
+/// surface of other deformable parts (target_parts).
 struct ContactSpec {
   std::string name;
-  std::string rigid_body;
+  std::string rigid_body;                 ///< empty: contact with target_parts
+  std::vector<std::string> target_parts;  ///< deformable surfaces touched (rigid_body empty)
+  bool two_way = true;                    ///< target_parts: the other way round too
   std::vector<std::string> parts;
   double penalty = 0.1;  ///< normal stiffness k = penalty x m / dt^2 per particle
   double static_friction = 0, dynamic_friction = 0, decay = 0;
@@ -227,6 +230,7 @@ struct Scene {
   std::map<std::string, double> parameters;  ///< named constants (parameters:), usable in values
   std::string mesh_file;                     ///< resolved path, empty when generated
   std::optional<GeneratorSpec> generator;
+  std::vector<GeneratorSpec> more_blocks;  ///< mesh.more_blocks: appended, nodes of their own
   std::vector<PartSpec> parts;
   std::vector<MaterialSpec> materials;
   std::vector<BoundaryConditionSpec> boundary_conditions;

@@ -132,9 +132,33 @@ class SceneBuilder {
         fail(doc["file"], "mesh.file",
              "cannot read mesh file '" + s_.mesh_file +
                  "' (expected an existing, readable Exodus II file)");
+      if (m["more_blocks"].size() > 0)
+        fail(doc["more_blocks"], "mesh.more_blocks",
+             "further generated blocks join a generated mesh only (expected mesh.generate, or "
+             "the blocks in the Exodus file)");
       return;
     }
-    const auto& g = m["generate"];
+    s_.generator = generator_spec(m["generate"], doc["generate"], "mesh.generate");
+    for (std::size_t i = 0; i < m["more_blocks"].size(); ++i) {
+      const auto path = "mesh.more_blocks[" + std::to_string(i) + "]";
+      const auto& at = doc["more_blocks"][i];
+      auto spec = generator_spec(m["more_blocks"][i], at, path);
+      if (spec.dimension != s_.generator->dimension)
+        fail(at["element"], path + ".element",
+             "a " + std::to_string(spec.dimension) + "D cell cannot join the " +
+                 std::to_string(s_.generator->dimension) + "D mesh of mesh.generate (expected " +
+                 std::to_string(s_.generator->dimension) + "D cells)");
+      bool taken = spec.block_name == s_.generator->block_name;
+      for (const auto& other : s_.more_blocks) taken = taken || other.block_name == spec.block_name;
+      if (taken)
+        fail(at["block_name"] ? at["block_name"] : at, path + ".block_name",
+             "block name '" + spec.block_name +
+                 "' is taken by an earlier generated block (expected a name of its own)");
+      s_.more_blocks.push_back(std::move(spec));
+    }
+  }
+
+  GeneratorSpec generator_spec(const YAML::Node& g, const YAML::Node& at, const std::string& path) {
     GeneratorSpec spec;
     spec.element =
         enum_of<CellType>(g["element"].as<std::string>(), {{"quad4", CellType::quad4},
@@ -146,7 +170,7 @@ class SceneBuilder {
     const auto dim = static_cast<std::size_t>(spec.dimension);
     for (const char* key : {"lower", "upper", "cells"})
       if (g[key].size() != dim)
-        fail(doc["generate"][key], std::string("mesh.generate.") + key,
+        fail(at[key], path + "." + key,
              "expected " + std::to_string(dim) + " entries for a " + std::to_string(dim) + "D " +
                  g["element"].as<std::string>() + " mesh, found " + std::to_string(g[key].size()));
     for (std::size_t i = 0; i < dim; ++i) {
@@ -154,7 +178,7 @@ class SceneBuilder {
       spec.upper[i] = g["upper"][i].as<double>();
       spec.cells[i] = g["cells"][i].as<int>();
       if (!(spec.upper[i] > spec.lower[i]))
-        fail(doc["generate"]["upper"][i], "mesh.generate.upper[" + std::to_string(i) + "]",
+        fail(at["upper"][i], path + ".upper[" + std::to_string(i) + "]",
              "expected a value greater than lower[" + std::to_string(i) +
                  "] = " + g["lower"][i].Scalar());
     }
@@ -163,11 +187,10 @@ class SceneBuilder {
     spec.block_name = g["block_name"].as<std::string>();
     if (g["map"]) {
       if (g["map"].size() != dim)
-        fail(doc["generate"]["map"], "mesh.generate.map",
+        fail(at["map"], path + ".map",
              "expected " + std::to_string(dim) + " expressions, one per coordinate, found " +
                  std::to_string(g["map"].size()));
-      const auto map = fields(g["map"], doc["generate"]["map"], "mesh.generate.map",
-                              ExpressionVariables::position);
+      const auto map = fields(g["map"], at["map"], path + ".map", ExpressionVariables::position);
       spec.coordinate_map = [map](const double* box, double* mapped) {
         for (std::size_t k = 0; k < map.size(); ++k) mapped[k] = map[k].at(box, 0.0);
       };
@@ -176,7 +199,7 @@ class SceneBuilder {
                                                              : std::to_string(map[k].constant));
       spec.map_text += ")";
     }
-    s_.generator = spec;
+    return spec;
   }
 
   void build_material(const YAML::Node& m, const YAML::Node& doc, std::size_t i) {

@@ -1,0 +1,72 @@
+// The closest point of a surface facet to a particle, a plain function for the contact between
+// deformable parts (no Trilinos). A facet is a segment (2D) or a triangle (3D) of a part's
+// boundary in the current configuration, its nodes ordered so that the normal below points out
+// of the part: 2D n = (b - a)^perp = (dy, -dx) / |b - a|, 3D n = (b - a) x (c - a) / |...|.
+// The particle x is projected on the facet's line or plane: p = x - ((x - a) . n) n, with the
+// facet coordinates w (barycentric, summing to one). It counts as over the facet when no w is
+// below -tolerance; the signed gap is g = (x - a) . n (negative inside the part), and the
+// weights that spread a force over the facet's nodes are w clipped to [0, 1] and rescaled to
+// sum to one (so the nodes receive exactly the force: momentum is kept).
+#pragma once
+
+#include <cmath>
+
+namespace efg::contact {
+
+struct FacetPoint {
+  bool over = false;  ///< the projection falls on the facet (within the tolerance)
+  double gap = 0;     ///< signed distance along the outward normal
+  double normal[3] = {0, 0, 0};
+  double weight[3] = {0, 0, 0};  ///< of the facet's nodes, clipped, summing to one
+};
+
+/// x: the particle; nodes: 2 (2D) or 3 (3D) node positions, 3 components each (z = 0 in 2D).
+inline FacetPoint project_on_facet(const double* x, const double (*node)[3], int dim,
+                                   double tolerance) {
+  FacetPoint f;
+  const double* a = node[0];
+  const double ab[3] = {node[1][0] - a[0], node[1][1] - a[1], node[1][2] - a[2]};
+  const double ax[3] = {x[0] - a[0], x[1] - a[1], x[2] - a[2]};
+  double w[3] = {0, 0, 0};
+  int count = 2;
+  if (dim == 2) {
+    const double len2 = ab[0] * ab[0] + ab[1] * ab[1];
+    if (!(len2 > 0)) return f;
+    const double len = std::sqrt(len2);
+    f.normal[0] = ab[1] / len;
+    f.normal[1] = -ab[0] / len;
+    const double t = (ax[0] * ab[0] + ax[1] * ab[1]) / len2;
+    w[0] = 1.0 - t;
+    w[1] = t;
+  } else {
+    count = 3;
+    const double ac[3] = {node[2][0] - a[0], node[2][1] - a[1], node[2][2] - a[2]};
+    const double m[3] = {ab[1] * ac[2] - ab[2] * ac[1], ab[2] * ac[0] - ab[0] * ac[2],
+                         ab[0] * ac[1] - ab[1] * ac[0]};
+    const double area2 = m[0] * m[0] + m[1] * m[1] + m[2] * m[2];
+    if (!(area2 > 0)) return f;
+    const double len = std::sqrt(area2);
+    for (int k = 0; k < 3; ++k) f.normal[k] = m[k] / len;
+    // Barycentric coordinates of the projection: the sub-areas (x-a) x ac and ab x (x-a)
+    // against m (the projection's normal part drops out of the dot products with m).
+    const double u[3] = {ax[1] * ac[2] - ax[2] * ac[1], ax[2] * ac[0] - ax[0] * ac[2],
+                         ax[0] * ac[1] - ax[1] * ac[0]};
+    const double v[3] = {ab[1] * ax[2] - ab[2] * ax[1], ab[2] * ax[0] - ab[0] * ax[2],
+                         ab[0] * ax[1] - ab[1] * ax[0]};
+    w[1] = (u[0] * m[0] + u[1] * m[1] + u[2] * m[2]) / area2;
+    w[2] = (v[0] * m[0] + v[1] * m[1] + v[2] * m[2]) / area2;
+    w[0] = 1.0 - w[1] - w[2];
+  }
+  f.gap = ax[0] * f.normal[0] + ax[1] * f.normal[1] + ax[2] * f.normal[2];
+  f.over = true;
+  double sum = 0;
+  for (int k = 0; k < count; ++k) {
+    if (w[k] < -tolerance) f.over = false;
+    f.weight[k] = std::fmin(1.0, std::fmax(0.0, w[k]));
+    sum += f.weight[k];
+  }
+  for (int k = 0; k < count; ++k) f.weight[k] /= sum;
+  return f;
+}
+
+}  // namespace efg::contact

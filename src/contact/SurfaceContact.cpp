@@ -1,0 +1,310 @@
+#include "contact/SurfaceContact.hpp"
+
+#include <Teuchos_CommHelpers.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace efg {
+
+namespace {
+// A projection may fall this far (in facet coordinates) beyond a facet's edge and still count:
+// a particle over the node shared by two facets belongs to one of them, and a particle on the
+// line of an edge keeps its facet when round-off moves it a little past the edge.
+constexpr double kOverTolerance = 0.01;
+// Surfaces face each other when the candidate's normal and the facet's make more than about
+// 100 degrees (n_c . n_f below -0.2). A corner particle (normal between its two faces) then
+// meets a flush target end through the end face, not through the side it merely lies on; and a
+// particle of a base just ahead of a block sliding over it (pressed a little into the base by
+// the penalty) is not pushed out through the block's leading side, which would catch the block
+// on the kerb.
+constexpr double kFacing = -0.2;
+
+const double* at3(const std::vector<double>& v, std::size_t node) {
+  return &v[3 * node];
+}
+}  // namespace
+
+bool SurfaceContact::wanted(const Scene& scene) {
+  return std::any_of(scene.contacts.begin(), scene.contacts.end(),
+                     [](const ContactSpec& c) { return !c.target_parts.empty(); });
+}
+
+SurfaceContact::Surface SurfaceContact::make_surface(const ModelOperators& ops,
+                                                     const std::vector<std::string>& parts) const {
+  const auto& model = ops.model();
+  Surface surface;
+  surface.facets = surface_facets(model, parts);
+  std::vector<int> surface_index(model.mesh.node_count(), -1);
+  for (std::size_t s = 0; s < surface.facets.mesh_node.size(); ++s)
+    surface_index[static_cast<std::size_t>(surface.facets.mesh_node[s])] = static_cast<int>(s);
+  for (std::size_t p = 0; p < model.parts.size(); ++p) {
+    const auto& part = model.parts[p];
+    if (std::find(parts.begin(), parts.end(), part.part->name) == parts.end()) continue;
+    for (std::size_t j = 0; j < part.cloud.owned_count; ++j) {
+      const int node = surface_index[static_cast<std::size_t>(part.cloud.mesh_node[j])];
+      if (node < 0) continue;
+      surface.rows.push_back(particle_row(ops, p, j));
+      surface.row_node.push_back(node);
+      surface.particle.push_back({p, j});
+    }
+  }
+  const std::size_t nodes = surface.facets.mesh_node.size();
+  surface.x.assign(3 * nodes, 0.0);
+  surface.x_old = surface.normal = surface.x;
+  return surface;
+}
+
+SurfaceContact::SurfaceContact(const ModelOperators& ops, const Vector& mass_owned,
+                               const std::string& stage)
+    : dim_(ops.model().mesh.dimension), comm_(ops.model().maps.owned_dofs->getComm()) {
+  const auto& model = ops.model();
+  const auto mass = mass_owned.getLocalViewHost(Tpetra::Access::ReadOnly);
+  std::size_t index = 0;
+  for (const auto& spec : model.scene.contacts) {
+    if (spec.target_parts.empty()) continue;
+    const std::size_t contact = index++;
+    if (!spec.stages.includes(stage)) continue;
+    // The candidates of `from` against the surface of `to` (and, two-way, the reverse).
+    auto add_pair = [&](const std::vector<std::string>& from, const std::vector<std::string>& to,
+                        double sign) {
+      Pair pair;
+      pair.contact = contact;
+      pair.sign = sign;
+      pair.penalty = spec.penalty;
+      // The damping is a fraction of critical for the relative motion of two facing particles
+      // of equal mass m (reduced mass m / 2): one-way one spring k and damper c, c = sqrt(2)
+      // damping sqrt(k m); two-way two of each, c = damping sqrt(k m) (pair.damping holds the
+      // factor of sqrt(k m)).
+      pair.damping = spec.damping * (spec.two_way ? 1.0 : std::sqrt(2.0));
+      pair.friction = {spec.static_friction, spec.dynamic_friction, spec.decay};
+      pair.own = make_surface(ops, from);
+      pair.target = make_surface(ops, to);
+      // Candidates: the owned surface particles of `from`.
+      for (std::size_t row = 0; row < pair.own.rows.size(); ++row) {
+        Candidate c;
+        c.row = row;
+        c.mass = particle_mass(model, mass, pair.own.particle[row][0], pair.own.particle[row][1]);
+        pair.candidates.push_back(c);
+      }
+      pair.reaction = pair.target.x;
+      pairs_.push_back(std::move(pair));
+    };
+    add_pair(spec.parts, spec.target_parts, 1.0);
+    if (spec.two_way) add_pair(spec.target_parts, spec.parts, -1.0);
+  }
+  forces_.assign(3 * index, 0.0);
+}
+
+// Positions of every surface node (each owned by one rank: the sum over ranks is a gather,
+// exact), then the nodal normals: the sum of the adjacent facets' normals scaled by their
+// length (2D) or twice their area (3D), normalized.
+void SurfaceContact::gather(Surface& surface, const Vector& d_overlap) const {
+  const auto d = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
+  const auto udim = static_cast<std::size_t>(dim_);
+  std::vector<double> mine(surface.x.size(), 0.0);
+  for (std::size_t r = 0; r < surface.rows.size(); ++r) {
+    const auto x = surface.rows[r].position(d, udim);
+    std::copy(x.begin(), x.end(),
+              mine.begin() + 3 * static_cast<std::ptrdiff_t>(surface.row_node[r]));
+  }
+  if (!mine.empty())
+    Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, static_cast<int>(mine.size()), mine.data(),
+                       surface.x.data());
+  const auto& f = surface.facets;
+  const auto per = static_cast<std::size_t>(f.nodes_per_facet);
+  std::fill(surface.normal.begin(), surface.normal.end(), 0.0);
+  for (std::size_t k = 0; k < f.count(); ++k) {
+    const double* a = at3(surface.x, static_cast<std::size_t>(f.facet[k * per]));
+    const double* b = at3(surface.x, static_cast<std::size_t>(f.facet[k * per + 1]));
+    double n[3] = {b[1] - a[1], a[0] - b[0], 0.0};
+    if (per == 3) {
+      const double* c = at3(surface.x, static_cast<std::size_t>(f.facet[k * per + 2]));
+      const double ab[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+      const double ac[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+      n[0] = ab[1] * ac[2] - ab[2] * ac[1];
+      n[1] = ab[2] * ac[0] - ab[0] * ac[2];
+      n[2] = ab[0] * ac[1] - ab[1] * ac[0];
+    }
+    for (std::size_t a2 = 0; a2 < per; ++a2)
+      for (std::size_t i = 0; i < 3; ++i)
+        surface.normal[3 * static_cast<std::size_t>(f.facet[k * per + a2]) + i] += n[i];
+  }
+  for (std::size_t node = 0; 3 * node < surface.normal.size(); ++node) {
+    double* n = &surface.normal[3 * node];
+    const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    if (len > 0)
+      for (int i = 0; i < 3; ++i) n[i] /= len;
+  }
+}
+
+// Each facet's box in the current configuration, grown by its capture distance (its reference
+// size: a particle deeper than a facet is not caught by it), binned at the largest box edge.
+void SurfaceContact::build_bins(Pair& pair) const {
+  const auto& s = pair.target.facets;
+  const auto d = static_cast<std::size_t>(dim_);
+  const auto per = static_cast<std::size_t>(s.nodes_per_facet);
+  pair.lower.assign(d * s.count(), 0.0);
+  pair.upper.assign(d * s.count(), 0.0);
+  double edge = 0;
+  for (std::size_t f = 0; f < s.count(); ++f)
+    for (std::size_t k = 0; k < d; ++k) {
+      double lo = pair.target.x[3 * static_cast<std::size_t>(s.facet[f * per]) + k], hi = lo;
+      for (std::size_t a = 1; a < per; ++a) {
+        const double v = pair.target.x[3 * static_cast<std::size_t>(s.facet[f * per + a]) + k];
+        lo = std::min(lo, v);
+        hi = std::max(hi, v);
+      }
+      pair.lower[f * d + k] = lo - s.reference_size[f];
+      pair.upper[f * d + k] = hi + s.reference_size[f];
+      edge = std::max(edge, hi - lo + 2.0 * s.reference_size[f]);
+    }
+  pair.bins.build(dim_, pair.lower, pair.upper, edge);
+}
+
+// The facet a candidate presses into: its facet of the last accepted step while it still lies
+// over it, inside and not deeper than the facet's size (contact history, as node-to-segment
+// codes track their master segment); otherwise, among the facets facing its own surface
+// (kFacing) that it lies over and is inside of, the one nearest along its normal.
+std::pair<int, contact::FacetPoint> SurfaceContact::choose_facet(const Pair& pair,
+                                                                 const Candidate& c) const {
+  const auto& s = pair.target.facets;
+  const auto per = static_cast<std::size_t>(s.nodes_per_facet);
+  const auto node = static_cast<std::size_t>(pair.own.row_node[c.row]);
+  const double* x = at3(pair.own.x, node);
+  const double* n_own = at3(pair.own.normal, node);
+  auto project = [&](std::size_t facet) {
+    double corner[3][3] = {};
+    for (std::size_t a = 0; a < per; ++a)
+      std::copy_n(at3(pair.target.x, static_cast<std::size_t>(s.facet[facet * per + a])), 3,
+                  corner[a]);
+    return contact::project_on_facet(x, corner, dim_, kOverTolerance);
+  };
+  auto pressing = [&](std::size_t facet, const contact::FacetPoint& p) {
+    return p.over && p.gap < 0 && -p.gap <= s.reference_size[facet] &&
+           p.normal[0] * n_own[0] + p.normal[1] * n_own[1] + p.normal[2] * n_own[2] < kFacing;
+  };
+  if (c.facet_old >= 0) {
+    const auto p = project(static_cast<std::size_t>(c.facet_old));
+    if (pressing(static_cast<std::size_t>(c.facet_old), p)) return {c.facet_old, p};
+  }
+  int best = -1;
+  contact::FacetPoint best_point;
+  const auto [begin, end] = pair.bins.near(x);
+  for (const int* it = begin; it != end; ++it) {
+    const auto p = project(static_cast<std::size_t>(*it));
+    if (pressing(static_cast<std::size_t>(*it), p) &&
+        (best < 0 || std::abs(p.gap) < std::abs(best_point.gap))) {
+      best = *it;
+      best_point = p;
+    }
+  }
+  return {best, best_point};
+}
+
+void SurfaceContact::start(const Vector& d_overlap) {
+  for (auto& pair : pairs_) {
+    for (auto* surface : {&pair.own, &pair.target}) {
+      gather(*surface, d_overlap);
+      surface->x_old = surface->x;
+    }
+    for (auto& c : pair.candidates) {
+      c.ft_old = c.ft_new = {0.0, 0.0, 0.0};
+      c.facet = c.facet_old = -1;
+    }
+  }
+}
+
+void SurfaceContact::add_forces(const Vector& d_overlap, double dt, Vector& f_overlap) {
+  const auto udim = static_cast<std::size_t>(dim_);
+  std::vector<double> local(forces_.size(), 0.0);
+  for (auto& pair : pairs_) {
+    gather(pair.own, d_overlap);
+    gather(pair.target, d_overlap);
+    build_bins(pair);
+    const auto& target = pair.target;
+    const auto& s = target.facets;
+    const auto per = static_cast<std::size_t>(s.nodes_per_facet);
+    std::fill(pair.reaction.begin(), pair.reaction.end(), 0.0);
+    const double k_per_mass = pair.penalty / (dt * dt);
+    const bool friction = pair.friction.mu_s > 0 || pair.friction.mu_d > 0;
+    auto f = f_overlap.getLocalViewHost(Tpetra::Access::ReadWrite);
+    for (auto& c : pair.candidates) {
+      const auto [best_facet, best] = choose_facet(pair, c);
+      c.active = best_facet >= 0;
+      c.facet = best_facet;
+      if (!c.active) {
+        c.ft_new = {0.0, 0.0, 0.0};
+        continue;
+      }
+      const auto facet = static_cast<std::size_t>(best_facet);
+      const auto node = static_cast<std::size_t>(pair.own.row_node[c.row]);
+      const double k = k_per_mass * c.mass;
+      // The particle's motion relative to the facet's point over the step: its normal part is
+      // the approach (damping), its tangential part the slip (friction).
+      double s_rel[3] = {0, 0, 0}, v_n = 0;
+      for (std::size_t i = 0; i < udim; ++i) {
+        double facet_motion = 0;
+        for (std::size_t a = 0; a < per; ++a) {
+          const auto n = 3 * static_cast<std::size_t>(s.facet[facet * per + a]) + i;
+          facet_motion += best.weight[a] * (target.x[n] - target.x_old[n]);
+        }
+        s_rel[i] = (pair.own.x[3 * node + i] - pair.own.x_old[3 * node + i]) - facet_motion;
+        v_n += s_rel[i] * best.normal[i] / dt;
+      }
+      const double fn = std::max(0.0, -k * best.gap - pair.damping * std::sqrt(k * c.mass) * v_n);
+      double F[3] = {0, 0, 0};
+      for (std::size_t i = 0; i < udim; ++i) F[i] = fn * best.normal[i];
+      if (friction) {
+        contact::coulomb_return(pair.friction, c.ft_old.data(), s_rel, best.normal, k, fn, dt, dim_,
+                                c.ft_new.data());
+        for (std::size_t i = 0; i < udim; ++i) F[i] += c.ft_new[i];
+      }
+      pair.own.rows[c.row].spread(F, udim, f);
+      for (std::size_t a = 0; a < per; ++a)
+        for (std::size_t i = 0; i < udim; ++i)
+          pair.reaction[3 * static_cast<std::size_t>(s.facet[facet * per + a]) + i] -=
+              best.weight[a] * F[i];
+      // The force on the target parts: the reaction when the candidates are the parts'.
+      for (std::size_t i = 0; i < udim; ++i) local[3 * pair.contact + i] -= pair.sign * F[i];
+    }
+    // The reactions reach the surface particles' owners, which spread them through their rows.
+    std::vector<double> reaction(pair.reaction.size(), 0.0);
+    if (!reaction.empty())
+      Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, static_cast<int>(reaction.size()),
+                         pair.reaction.data(), reaction.data());
+    for (std::size_t r = 0; r < target.rows.size(); ++r)
+      target.rows[r].spread(at3(reaction, static_cast<std::size_t>(target.row_node[r])), udim, f);
+  }
+  if (!forces_.empty())
+    Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, static_cast<int>(local.size()), local.data(),
+                       forces_.data());
+}
+
+void SurfaceContact::commit() {
+  for (auto& pair : pairs_) {
+    pair.own.x_old = pair.own.x;
+    pair.target.x_old = pair.target.x;
+    for (auto& c : pair.candidates) {
+      c.ft_old = c.ft_new;
+      c.facet_old = c.facet;
+    }
+  }
+}
+
+long long SurfaceContact::active_count() const {
+  long long mine = 0, all = 0;
+  for (const auto& pair : pairs_)
+    for (const auto& c : pair.candidates) mine += c.active ? 1 : 0;
+  Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, mine, Teuchos::outArg(all));
+  return all;
+}
+
+long long SurfaceContact::candidate_count() const {
+  long long mine = 0, all = 0;
+  for (const auto& pair : pairs_) mine += static_cast<long long>(pair.candidates.size());
+  Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, mine, Teuchos::outArg(all));
+  return all;
+}
+
+}  // namespace efg
