@@ -2,12 +2,13 @@
 """Checks of the explicit contact scenes between deformable parts (tests/scenes/contact/
 bars_collide.yaml, block_on_block_*.yaml) from their history CSV; the expected values are
 1D wave theory and Coulomb's law, not efg's output.
-usage: check_surface_contact.py bars|slide|stick HISTORY.csv
+usage: check_surface_contact.py bars|bars3d|slide|stick HISTORY.csv
   bars   two equal bars (rho = 1, E = 100, A = 0.025, L = 1) meeting at +-v0 = 0.1: contact force
          rho c v0 A = 0.025 (c = 10): mean over t in [0.02, 0.19] within 1 %, every record there
          within 5 %; no force from t = 0.21 on (contact time 2 L / c = 0.2); the bars leave at
          -+v0 (mean velocities over t >= 0.25 within 1 %); momentum_x below 1e-8 of the bars'
          |momentum| 2 rho A L v0; energy balance < 1 %
+  bars3d the same in 3D, square section A = 0.05 x 0.05 (contact force 0.0025)
   slide  block on a deformable base, gravity turned by tan(theta) = 0.5 > mu = 0.3: acceleration
          (least-squares slope of the block's mean velocity over t in [1, 2]) = g (sin - mu cos)
          within 1 %; energy balance < 1 % from t = 0.1 on (before, gravity ramps in from zero
@@ -37,8 +38,9 @@ def check(name, value, limit):
     print("%s %.3g (limit %.3g)%s" % (name, value, limit, "" if good else "  FAILED"))
 
 
-if kind == "bars":
-    rho, c, v0, area, length = 1.0, 10.0, 0.1, 0.025, 1.0
+if kind in ("bars", "bars3d"):
+    rho, c, v0, length = 1.0, 10.0, 0.1, 1.0
+    area = 0.025 if kind == "bars" else 0.05 * 0.05
     force = rho * c * v0 * area
     F = col("contact_meet_Fx")
     during = (t >= 0.02) & (t <= 0.19)
