@@ -65,9 +65,11 @@ SurfaceContact::SurfaceContact(const ModelOperators& ops, const Vector& mass_own
     if (spec.target_parts.empty()) continue;
     const std::size_t contact = index++;
     if (!spec.stages.includes(stage)) continue;
-    // The candidates of `from` against the surface of `to` (and, two-way, the reverse).
-    auto add_pair = [&](const std::vector<std::string>& from, const std::vector<std::string>& to,
-                        double sign) {
+    // The candidates of the surface `from` against the surface `to` (two-way, also the reverse).
+    const std::size_t parts = surfaces_.size(), targets = parts + 1;
+    surfaces_.push_back(make_surface(ops, spec.parts));
+    surfaces_.push_back(make_surface(ops, spec.target_parts));
+    auto add_pair = [&](std::size_t from, std::size_t to, double sign) {
       Pair pair;
       pair.contact = contact;
       pair.sign = sign;
@@ -78,20 +80,20 @@ SurfaceContact::SurfaceContact(const ModelOperators& ops, const Vector& mass_own
       // factor of sqrt(k m)).
       pair.damping = spec.damping * (spec.two_way ? 1.0 : std::sqrt(2.0));
       pair.friction = {spec.static_friction, spec.dynamic_friction, spec.decay};
-      pair.own = make_surface(ops, from);
-      pair.target = make_surface(ops, to);
-      // Candidates: the owned surface particles of `from`.
-      for (std::size_t row = 0; row < pair.own.rows.size(); ++row) {
+      pair.own = from;
+      pair.target = to;
+      const auto& own = surfaces_[from];
+      for (std::size_t row = 0; row < own.rows.size(); ++row) {
         Candidate c;
         c.row = row;
-        c.mass = particle_mass(model, mass, pair.own.particle[row][0], pair.own.particle[row][1]);
+        c.mass = particle_mass(model, mass, own.particle[row][0], own.particle[row][1]);
         pair.candidates.push_back(c);
       }
-      pair.reaction = pair.target.x;
+      pair.reaction = surfaces_[to].x;
       pairs_.push_back(std::move(pair));
     };
-    add_pair(spec.parts, spec.target_parts, 1.0);
-    if (spec.two_way) add_pair(spec.target_parts, spec.parts, -1.0);
+    add_pair(parts, targets, 1.0);
+    if (spec.two_way) add_pair(targets, parts, -1.0);
   }
   forces_.assign(3 * index, 0.0);
 }
@@ -138,28 +140,55 @@ void SurfaceContact::gather(Surface& surface, const Vector& d_overlap) const {
   }
 }
 
-// Each facet's box in the current configuration, grown by its capture distance (its reference
-// size: a particle deeper than a facet is not caught by it), binned at the largest box edge.
+// Each facet's box in the current configuration, grown by the region a particle caught by it
+// can be in: over the facet (within kOverTolerance of its size) and at most its capture depth
+// (its reference size) along its normal n, i.e. by capture |n_k| per axis, plus a margin. A
+// flat facet's box then stays thin in its plane, and a bin lists a few facets (grown by the
+// capture depth in every direction, a 3D block's face listed about 100 facets per bin).
+// Refreshed as needed: while no target node has moved by more than the margin since the last
+// build, every facet is still inside its box (Verlet-list reasoning), so the bins stand.
 void SurfaceContact::build_bins(Pair& pair) const {
-  const auto& s = pair.target.facets;
+  const auto& target = surfaces_[pair.target];
+  const auto& s = target.facets;
+  if (!pair.x_binned.empty()) {
+    double moved = 0;
+    for (std::size_t i = 0; i < target.x.size(); i += 3) {
+      double d2 = 0;
+      for (std::size_t k = 0; k < 3; ++k)
+        d2 += (target.x[i + k] - pair.x_binned[i + k]) * (target.x[i + k] - pair.x_binned[i + k]);
+      moved = std::max(moved, d2);
+    }
+    if (std::sqrt(moved) <= pair.bin_margin) return;
+  }
   const auto d = static_cast<std::size_t>(dim_);
   const auto per = static_cast<std::size_t>(s.nodes_per_facet);
   pair.lower.assign(d * s.count(), 0.0);
   pair.upper.assign(d * s.count(), 0.0);
-  double edge = 0;
+  double edge = 0, smallest = 0;
   for (std::size_t f = 0; f < s.count(); ++f)
+    smallest = f == 0 ? s.reference_size[f] : std::min(smallest, s.reference_size[f]);
+  pair.bin_margin = 0.1 * smallest;
+  for (std::size_t f = 0; f < s.count(); ++f) {
+    double corner[3][3] = {};
+    for (std::size_t a = 0; a < per; ++a)
+      std::copy_n(at3(target.x, static_cast<std::size_t>(s.facet[f * per + a])), 3, corner[a]);
+    const double origin[3] = {corner[0][0], corner[0][1], corner[0][2]};
+    const auto facet = contact::project_on_facet(origin, corner, dim_, 0.0);
+    const double capture = s.reference_size[f];
     for (std::size_t k = 0; k < d; ++k) {
-      double lo = pair.target.x[3 * static_cast<std::size_t>(s.facet[f * per]) + k], hi = lo;
+      double lo = corner[0][k], hi = lo;
       for (std::size_t a = 1; a < per; ++a) {
-        const double v = pair.target.x[3 * static_cast<std::size_t>(s.facet[f * per + a]) + k];
-        lo = std::min(lo, v);
-        hi = std::max(hi, v);
+        lo = std::min(lo, corner[a][k]);
+        hi = std::max(hi, corner[a][k]);
       }
-      pair.lower[f * d + k] = lo - s.reference_size[f];
-      pair.upper[f * d + k] = hi + s.reference_size[f];
-      edge = std::max(edge, hi - lo + 2.0 * s.reference_size[f]);
+      const double grow = capture * (std::abs(facet.normal[k]) + kOverTolerance) + pair.bin_margin;
+      pair.lower[f * d + k] = lo - grow;
+      pair.upper[f * d + k] = hi + grow;
+      edge = std::max(edge, hi - lo);
     }
+  }
   pair.bins.build(dim_, pair.lower, pair.upper, edge);
+  pair.x_binned = target.x;
 }
 
 // The facet a candidate presses into: its facet of the last accepted step while it still lies
@@ -168,16 +197,17 @@ void SurfaceContact::build_bins(Pair& pair) const {
 // (kFacing) that it lies over and is inside of, the one nearest along its normal.
 std::pair<int, contact::FacetPoint> SurfaceContact::choose_facet(const Pair& pair,
                                                                  const Candidate& c) const {
-  const auto& s = pair.target.facets;
+  const auto& own = surfaces_[pair.own];
+  const auto& target = surfaces_[pair.target];
+  const auto& s = target.facets;
   const auto per = static_cast<std::size_t>(s.nodes_per_facet);
-  const auto node = static_cast<std::size_t>(pair.own.row_node[c.row]);
-  const double* x = at3(pair.own.x, node);
-  const double* n_own = at3(pair.own.normal, node);
+  const auto node = static_cast<std::size_t>(own.row_node[c.row]);
+  const double* x = at3(own.x, node);
+  const double* n_own = at3(own.normal, node);
   auto project = [&](std::size_t facet) {
     double corner[3][3] = {};
     for (std::size_t a = 0; a < per; ++a)
-      std::copy_n(at3(pair.target.x, static_cast<std::size_t>(s.facet[facet * per + a])), 3,
-                  corner[a]);
+      std::copy_n(at3(target.x, static_cast<std::size_t>(s.facet[facet * per + a])), 3, corner[a]);
     return contact::project_on_facet(x, corner, dim_, kOverTolerance);
   };
   auto pressing = [&](std::size_t facet, const contact::FacetPoint& p) {
@@ -203,11 +233,11 @@ std::pair<int, contact::FacetPoint> SurfaceContact::choose_facet(const Pair& pai
 }
 
 void SurfaceContact::start(const Vector& d_overlap) {
+  for (auto& surface : surfaces_) {
+    gather(surface, d_overlap);
+    surface.x_old = surface.x;
+  }
   for (auto& pair : pairs_) {
-    for (auto* surface : {&pair.own, &pair.target}) {
-      gather(*surface, d_overlap);
-      surface->x_old = surface->x;
-    }
     for (auto& c : pair.candidates) {
       c.ft_old = c.ft_new = {0.0, 0.0, 0.0};
       c.facet = c.facet_old = -1;
@@ -218,11 +248,11 @@ void SurfaceContact::start(const Vector& d_overlap) {
 void SurfaceContact::add_forces(const Vector& d_overlap, double dt, Vector& f_overlap) {
   const auto udim = static_cast<std::size_t>(dim_);
   std::vector<double> local(forces_.size(), 0.0);
+  for (auto& surface : surfaces_) gather(surface, d_overlap);
   for (auto& pair : pairs_) {
-    gather(pair.own, d_overlap);
-    gather(pair.target, d_overlap);
     build_bins(pair);
-    const auto& target = pair.target;
+    const auto& own = surfaces_[pair.own];
+    const auto& target = surfaces_[pair.target];
     const auto& s = target.facets;
     const auto per = static_cast<std::size_t>(s.nodes_per_facet);
     std::fill(pair.reaction.begin(), pair.reaction.end(), 0.0);
@@ -238,7 +268,7 @@ void SurfaceContact::add_forces(const Vector& d_overlap, double dt, Vector& f_ov
         continue;
       }
       const auto facet = static_cast<std::size_t>(best_facet);
-      const auto node = static_cast<std::size_t>(pair.own.row_node[c.row]);
+      const auto node = static_cast<std::size_t>(own.row_node[c.row]);
       const double k = k_per_mass * c.mass;
       // The particle's motion relative to the facet's point over the step: its normal part is
       // the approach (damping), its tangential part the slip (friction).
@@ -249,7 +279,7 @@ void SurfaceContact::add_forces(const Vector& d_overlap, double dt, Vector& f_ov
           const auto n = 3 * static_cast<std::size_t>(s.facet[facet * per + a]) + i;
           facet_motion += best.weight[a] * (target.x[n] - target.x_old[n]);
         }
-        s_rel[i] = (pair.own.x[3 * node + i] - pair.own.x_old[3 * node + i]) - facet_motion;
+        s_rel[i] = (own.x[3 * node + i] - own.x_old[3 * node + i]) - facet_motion;
         v_n += s_rel[i] * best.normal[i] / dt;
       }
       const double fn = std::max(0.0, -k * best.gap - pair.damping * std::sqrt(k * c.mass) * v_n);
@@ -260,7 +290,7 @@ void SurfaceContact::add_forces(const Vector& d_overlap, double dt, Vector& f_ov
                                 c.ft_new.data());
         for (std::size_t i = 0; i < udim; ++i) F[i] += c.ft_new[i];
       }
-      pair.own.rows[c.row].spread(F, udim, f);
+      own.rows[c.row].spread(F, udim, f);
       for (std::size_t a = 0; a < per; ++a)
         for (std::size_t i = 0; i < udim; ++i)
           pair.reaction[3 * static_cast<std::size_t>(s.facet[facet * per + a]) + i] -=
@@ -282,9 +312,8 @@ void SurfaceContact::add_forces(const Vector& d_overlap, double dt, Vector& f_ov
 }
 
 void SurfaceContact::commit() {
+  for (auto& surface : surfaces_) surface.x_old = surface.x;
   for (auto& pair : pairs_) {
-    pair.own.x_old = pair.own.x;
-    pair.target.x_old = pair.target.x;
     for (auto& c : pair.candidates) {
       c.ft_old = c.ft_new;
       c.facet_old = c.facet;

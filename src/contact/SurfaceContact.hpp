@@ -3,7 +3,8 @@
 // the contact's `parts`, at its physical position x_J = X_J + sum_I phi_I(X_J) d_I; the target
 // is the current surface of the `target_parts`: their boundary facets (contact/SurfaceFacets)
 // through their surface particles' physical positions, gathered on every rank each evaluation.
-// Search: facet bins over the current positions (contact/FacetBins), rebuilt per evaluation.
+// Search: facet bins over the current positions (contact/FacetBins), rebuilt when a target
+// node has moved by more than a tenth of the smallest facet since the last build.
 // The facet J presses into (contact/FacetProjection; chosen by SurfaceContact::choose_facet)
 // decides: inside (gap g < 0, -g below the facet's reference size),
 //   F = max(0, k (-g) - c v_n) n + F_t,   k = penalty x m_J / dt^2,  c = damping x sqrt(k m_J)
@@ -72,10 +73,12 @@ class SurfaceContact {
     double sign = 1;          ///< +1: candidates of the parts; -1: of the target parts
     double penalty = 0, damping = 0;
     contact::Friction friction;
-    Surface own, target;  ///< the candidates' surface and the surface they press into
+    std::size_t own = 0, target = 0;  ///< surfaces_: the candidates' and the one they press into
     std::vector<Candidate> candidates;
     std::vector<double> lower, upper, reaction;
     contact::FacetBins bins;
+    std::vector<double> x_binned;  ///< the target's positions at the last bin build
+    double bin_margin = 0;
   };
   Surface make_surface(const ModelOperators& ops, const std::vector<std::string>& parts) const;
   void gather(Surface& surface, const Vector& d_overlap) const;
@@ -84,6 +87,7 @@ class SurfaceContact {
 
   int dim_;
   Teuchos::RCP<const Teuchos::Comm<int>> comm_;
+  std::vector<Surface> surfaces_;  ///< each gathered once per evaluation (two-way: shared)
   std::vector<Pair> pairs_;
   std::vector<double> forces_;
 };

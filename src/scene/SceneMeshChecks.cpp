@@ -91,8 +91,9 @@ class Checker {
     for (const auto& block : m_.blocks)
       if (!block_owner.count(block.name))
         fail(d["parts"], "parts",
-             "element block '" + block.name + "' of the mesh belongs to no part (its nodes would "
-             "be particles without mass); expected it in the blocks of a part");
+             "element block '" + block.name +
+                 "' of the mesh belongs to no part (its nodes would "
+                 "be particles without mass); expected it in the blocks of a part");
     for (std::size_t i = 0; i < s_.boundary_conditions.size(); ++i) {
       const auto& bc = s_.boundary_conditions[i];
       const auto path = "boundary_conditions[" + std::to_string(i) + "]";
