@@ -14,11 +14,18 @@ struct Friction {
   double mu_s = 0, mu_d = 0, decay = 0;
 };
 
+/// The return map's outcome: the friction coefficient used, the trial force's size |F_t*| and
+/// whether the cap acted (slip), for the implicit tangent.
+struct CoulombState {
+  double mu = 0, trial = 0;
+  bool slipping = false;
+};
+
 /// ft_new from ft_old, the slip increment s over dt, the unit normal n, the stick stiffness k
 /// and the normal force fn (>= 0).
-inline void coulomb_return(const Friction& law, const double* ft_old, const double* s,
-                           const double* n, double k, double fn, double dt, int dim,
-                           double* ft_new) {
+inline CoulombState coulomb_return(const Friction& law, const double* ft_old, const double* s,
+                                   const double* n, double k, double fn, double dt, int dim,
+                                   double* ft_new) {
   double s_n = 0, ft_n = 0;
   for (int i = 0; i < dim; ++i) {
     s_n += s[i] * n[i];
@@ -31,10 +38,14 @@ inline void coulomb_return(const Friction& law, const double* ft_old, const doub
     ft_new[i] = ft_old[i] - ft_n * n[i] - k * st;
     ft2 += ft_new[i] * ft_new[i];
   }
-  const double mu = law.mu_d + (law.mu_s - law.mu_d) * std::exp(-law.decay * std::sqrt(slip2) / dt);
-  const double limit = mu * fn, size = std::sqrt(ft2);
-  if (size > limit)
-    for (int i = 0; i < dim; ++i) ft_new[i] *= limit / size;
+  CoulombState state;
+  state.mu = law.mu_d + (law.mu_s - law.mu_d) * std::exp(-law.decay * std::sqrt(slip2) / dt);
+  const double limit = state.mu * fn;
+  state.trial = std::sqrt(ft2);
+  state.slipping = state.trial > limit;
+  if (state.slipping)
+    for (int i = 0; i < dim; ++i) ft_new[i] *= limit / state.trial;
+  return state;
 }
 
 }  // namespace efg::contact

@@ -10,6 +10,37 @@
 
 namespace efg {
 
+namespace {
+// B += -dF_t/dx of the Coulomb return map (see the header): stick k_t P_t; slip
+// mu (k t n^T + k_t F_n / |F_t*| (I - t t^T) P_t), k the normal and k_t the stick stiffness.
+template <class Touch>
+void add_friction_tangent(const Touch& t, double k, double k_t, std::size_t dim,
+                          double (&B)[3][3]) {
+  double P[3][3];
+  for (std::size_t i = 0; i < 3; ++i)
+    for (std::size_t j = 0; j < 3; ++j) P[i][j] = (i == j ? 1.0 : 0.0) - t.normal[i] * t.normal[j];
+  if (!t.coulomb.slipping) {
+    for (std::size_t i = 0; i < dim; ++i)
+      for (std::size_t j = 0; j < dim; ++j) B[i][j] += k_t * P[i][j];
+    return;
+  }
+  const double mu = t.coulomb.mu, fn = -k * t.gap;
+  double size = 0, dir[3] = {0, 0, 0};
+  for (std::size_t i = 0; i < 3; ++i) size += t.ft[i] * t.ft[i];
+  size = std::sqrt(size);
+  if (size > 0)
+    for (std::size_t i = 0; i < 3; ++i) dir[i] = t.ft[i] / size;
+  const double ratio = t.coulomb.trial > 0 ? k_t * fn / t.coulomb.trial : 0.0;
+  for (std::size_t i = 0; i < dim; ++i)
+    for (std::size_t j = 0; j < dim; ++j) {
+      double turn = 0;  // ((I - t t^T) P_t)_ij
+      for (std::size_t m = 0; m < 3; ++m)
+        turn += ((i == m ? 1.0 : 0.0) - dir[i] * dir[m]) * P[m][j];
+      B[i][j] += mu * (k * dir[i] * t.normal[j] + ratio * turn);
+    }
+}
+}  // namespace
+
 ImplicitContact::ImplicitContact(const ModelOperators& ops)
     : dim_(ops.model().mesh.dimension),
       bodies_(ops.model().scene, ops.model().mesh.dimension),
@@ -20,6 +51,7 @@ ImplicitContact::ImplicitContact(const ModelOperators& ops)
     if (spec.rigid_body.empty()) continue;  // between deformable parts: refused by the scene
     Pair pair;
     pair.spec = &spec;
+    pair.friction = {spec.static_friction, spec.dynamic_friction, spec.decay};
     for (std::size_t b = 0; b < bodies_.count(); ++b)
       if (bodies_.name(b) == spec.rigid_body) pair.body = b;
     for (std::size_t p = 0; p < model.parts.size(); ++p) {
@@ -43,8 +75,10 @@ ImplicitContact::ImplicitContact(const ModelOperators& ops)
       for (std::size_t j = 0; j < part.cloud.owned_count; ++j) {
         const auto node = static_cast<std::size_t>(part.cloud.mesh_node[j]);
         if (!(area[node] > 0)) continue;  // not on the part's surface
-        pair.candidates.push_back(
-            {particle_row(ops, p, j), spec.implicit_penalty * E / size[node] * area[node]});
+        Candidate c;
+        c.row = particle_row(ops, p, j);
+        c.stiffness = spec.implicit_penalty * E / size[node] * area[node];
+        pair.candidates.push_back(std::move(c));
       }
     }
     pairs_.push_back(std::move(pair));
@@ -54,15 +88,45 @@ ImplicitContact::ImplicitContact(const ModelOperators& ops)
 void ImplicitContact::begin_stage(const std::vector<RigidBodyState>& carried, double t0,
                                   const std::string& stage) {
   for (auto& pair : pairs_) pair.active = pair.spec->stages.includes(stage);
-  t0_ = t0;
+  t0_ = t_ = t_committed_ = t0;
   start_.assign(bodies_.count(), {0.0, 0.0, 0.0});
   for (std::size_t b = 0; b < std::min(carried.size(), start_.size()); ++b)
     start_[b] = carried[b].displacement;
-  displacement_ = start_;
+  displacement_ = committed_displacement_ = start_;
+}
+
+bool ImplicitContact::has_friction() const {
+  return std::any_of(pairs_.begin(), pairs_.end(), [](const Pair& p) { return rubs(p); });
+}
+
+void ImplicitContact::start_friction(const Vector& d_overlap) {
+  const auto d = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
+  for (auto& pair : pairs_)
+    for (auto& c : pair.candidates) {
+      c.x_old = c.row.position(d, static_cast<std::size_t>(dim_));
+      c.ft_old = {0.0, 0.0, 0.0};
+    }
+  committed_displacement_ = displacement_;
+  t_committed_ = t_;
+}
+
+void ImplicitContact::commit(const Vector& d_overlap) {
+  const auto d = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
+  for (auto& pair : pairs_) {
+    if (!rubs(pair)) continue;
+    for (auto& c : pair.candidates) {
+      const auto t = touch(pair, c, d);
+      c.x_old = c.row.position(d, static_cast<std::size_t>(dim_));
+      for (std::size_t i = 0; i < 3; ++i) c.ft_old[i] = pair.active && t.gap < 0 ? t.ft[i] : 0.0;
+    }
+  }
+  committed_displacement_ = displacement_;
+  t_committed_ = t_;
 }
 
 void ImplicitContact::set_time(double t) {
   if (start_.size() != bodies_.count()) begin_stage({}, t0_);
+  t_ = t;
   for (std::size_t b = 0; b < bodies_.count(); ++b) {
     const auto travel = bodies_.prescribed_travel(b, t0_, t);
     for (std::size_t k = 0; k < 3; ++k) displacement_[b][k] = start_[b][k] + travel[k];
@@ -86,6 +150,18 @@ ImplicitContact::Touch ImplicitContact::touch(const Pair& p, const Candidate& c,
   t.gap = near.gap;
   for (int i = 0; i < 3; ++i) t.normal[i] = near.normal[i];
   contact::normal_derivative(shape, near, t.dn);
+  if (rubs(p) && t.gap < 0) {
+    // The slip since the last accepted load step: the particle's motion relative to the body.
+    double s[3] = {0, 0, 0};
+    for (std::size_t i = 0; i < 3; ++i)
+      s[i] = (x[i] - c.x_old[i]) -
+             (u_body[i] -
+              (committed_displacement_.empty() ? 0.0 : committed_displacement_[p.body][i]));
+    const double step = t_ > t_committed_ ? t_ - t_committed_ : 1.0;  // the decay law's rate
+    t.coulomb =
+        contact::coulomb_return(p.friction, c.ft_old.data(), s, t.normal, stick_stiffness(p, c),
+                                -c.stiffness * t.gap, step, dim_, t.ft);
+  }
   return t;
 }
 
@@ -98,8 +174,8 @@ void ImplicitContact::add_residual(const Vector& d_overlap, Vector& r_overlap) c
       if (!pair.active) break;  // the whole pair is out of this stage
       const auto t = touch(pair, c, d);
       if (!(t.gap < 0)) continue;
-      double minus_F[3];  // r -= phi F, F = k (-g) n
-      for (std::size_t i = 0; i < 3; ++i) minus_F[i] = c.stiffness * t.gap * t.normal[i];
+      double minus_F[3];  // r -= phi F, F = k (-g) n + F_t
+      for (std::size_t i = 0; i < 3; ++i) minus_F[i] = c.stiffness * t.gap * t.normal[i] - t.ft[i];
       c.row.spread(minus_F, udim, r);
     }
 }
@@ -117,6 +193,7 @@ void ImplicitContact::add_tangent(const Vector& d_overlap, FEMatrix& K) const {
       for (std::size_t i = 0; i < udim; ++i)
         for (std::size_t j = 0; j < udim; ++j)
           B[i][j] = c.stiffness * (t.normal[i] * t.normal[j] + t.gap * t.dn[i][j]);
+      if (rubs(pair)) add_friction_tangent(t, c.stiffness, stick_stiffness(pair, c), udim, B);
       const auto& nodes = c.row.nodes;
       const auto& phi = c.row.phi;
       const std::size_t n = nodes.size();
@@ -147,7 +224,7 @@ std::vector<BodyResultant> ImplicitContact::body_forces(const Vector& d_overlap)
       if (!(t.gap < 0)) continue;
       double F[3];
       for (std::size_t i = 0; i < 3; ++i) {
-        F[i] = c.stiffness * t.gap * t.normal[i];
+        F[i] = c.stiffness * t.gap * t.normal[i] - t.ft[i];
         local[6 * pair.body + i] += F[i];
       }
       const auto x = c.row.position(d, static_cast<std::size_t>(dim_));

@@ -12,11 +12,20 @@
 // dn/dx = (I - n n^T) / rho for a sphere or 2D cylinder of radius rho at the point (the curved
 // surface's term; 0 for planes and box faces). The active set follows the Newton iterate;
 // load stepping with cutback carries its changes.
+// Friction (Coulomb, the return map of contact/CoulombFriction.hpp with the stick stiffness
+// k_t = E A_J / h_J, stick_stiffness): the slip increment is the particle's motion relative to the body since the last
+// accepted load step, the tangential force is recomputed from the committed one at every
+// iterate (a cut-back step leaves the committed state as it was) and committed with the step.
+// Its tangent, -dF_t/dx: stick k_t P_t (P_t = I - n n^T); slip
+// mu (beta A t n^T + k_t F_n / |F_t*| (I - t t^T) P_t), t the slip direction, F_n the normal force,
+// |F_t*| the trial force (nonsymmetric; the turn of the old force into a new tangent plane and
+// the decay law's dependence on the slip are left out of it).
 #pragma once
 
 #include <array>
 #include <vector>
 
+#include "contact/CoulombFriction.hpp"
 #include "contact/ParticleRow.hpp"
 #include "contact/RigidBodies.hpp"
 #include "operators/CouplingGraph.hpp"
@@ -43,31 +52,49 @@ class ImplicitContact {
   void add_tangent(const Vector& d_overlap, FEMatrix& K) const;
   /// The contact force on every body at d (summed over ranks; collective).
   std::vector<BodyResultant> body_forces(const Vector& d_overlap) const;
+  /// Friction: the reference of the slip, the state at d (a stage start).
+  void start_friction(const Vector& d_overlap);
+  /// Friction: the load step at d is accepted (its tangential forces become the committed ones).
+  void commit(const Vector& d_overlap);
+  bool has_friction() const;
 
  private:
   struct Candidate {
     ParticleRow row;
-    double stiffness = 0;  ///< beta_J A_J
+    double stiffness = 0;                     ///< beta_J A_J
+    std::array<double, 3> x_old{}, ft_old{};  ///< friction: at the last accepted load step
   };
   struct Pair {
     std::size_t body;
     const ContactSpec* spec;
     bool active = true;  ///< the contact acts in the current stage
+    contact::Friction friction;
     std::vector<Candidate> candidates;
   };
-  /// Gap, normal and the curvature matrix (dn/dx) of candidate c of pair p at d.
+  /// Gap, normal and the curvature matrix (dn/dx) of candidate c of pair p at d; with friction
+  /// the tangential force at d and the return map's state.
   struct Touch {
     double gap = 0, normal[3] = {0, 0, 0}, dn[3][3] = {};
+    double ft[3] = {0, 0, 0};
+    contact::CoulombState coulomb;
   };
   template <class View>
   Touch touch(const Pair& p, const Candidate& c, const View& d) const;
+  static bool rubs(const Pair& p) { return p.friction.mu_s > 0 || p.friction.mu_d > 0; }
+  /// The regularized stick's stiffness k_t = E A_J / h_J: the normal penalty's beta_J A_J without
+  /// its factor implicit_penalty (the material's own stiffness over a boundary cell; the
+  /// elastic slip mu F_n / k_t is mu p h / E). As stiff as the normal penalty, a stick -> slip
+  /// switch moved particles 100x too far and Newton cycled between stick and slip.
+  static double stick_stiffness(const Pair& p, const Candidate& c) {
+    return c.stiffness / p.spec->implicit_penalty;
+  }
 
   int dim_;
   RigidBodies bodies_;
   Teuchos::RCP<const Teuchos::Comm<int>> comm_;
   std::vector<Pair> pairs_;
-  double t0_ = 0;
-  std::vector<std::array<double, 3>> start_, displacement_;
+  double t0_ = 0, t_ = 0, t_committed_ = 0;
+  std::vector<std::array<double, 3>> start_, displacement_, committed_displacement_;
 };
 
 }  // namespace efg

@@ -43,11 +43,14 @@ contact::Shape shape_of(const RigidBodySpec& b, int dim) {
 }  // namespace
 
 RigidBodies::RigidBodies(const Scene& scene, int dim) : scene_(scene), dim_(dim) {
-  for (const auto& b : scene.rigid_bodies)
+  for (const auto& b : scene.rigid_bodies) {
+    std::array<std::string, 3> axis_curve = {b.curve, b.curve, b.curve};
+    for (std::size_t k = 0; k < b.axis_curves.size(); ++k) axis_curve[k] = b.axis_curves[k];
     bodies_.push_back(
-        {b.name, b.motion, b.curve, b.velocity, b.gravity, shape_of(b, dim),
+        {b.name, b.motion, b.curve, axis_curve, b.velocity, b.gravity, shape_of(b, dim),
          rigid_body_mass(b, dim), b.force, b.angular_velocity,
          rigid_body_mass(b, dim) * b.radius * b.radius * (b.shape == "sphere" ? 0.4 : 0.5)});
+  }
   scene_count_ = bodies_.size();
   for (const auto& w : scene.rigid_walls) {
     RigidBodySpec plane;
@@ -55,7 +58,7 @@ RigidBodies::RigidBodies(const Scene& scene, int dim) : scene_(scene), dim_(dim)
     plane.point = w.point;
     plane.normal = w.normal;
     bodies_.push_back(
-        {"wall " + w.name, "fixed", "", {}, {}, shape_of(plane, dim), 0.0, {}, {}, 0.0});
+        {"wall " + w.name, "fixed", "", {}, {}, {}, shape_of(plane, dim), 0.0, {}, {}, 0.0});
   }
 }
 
@@ -64,9 +67,9 @@ std::vector<RigidBodyState> RigidBodies::initial_states(double time) const {
   const auto factor = curve_factor(scene_, time, 1.0);
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
     const auto& spec = bodies_[b];
-    const double c = spec.motion == "prescribed" ? factor(spec.curve) : 1.0;
     for (std::size_t k = 0; k < spec.velocity.size(); ++k)
-      states[b].velocity[k] = spec.velocity[k] * c;
+      states[b].velocity[k] =
+          spec.velocity[k] * (spec.motion == "prescribed" ? factor(spec.axis_curve[k]) : 1.0);
     const auto& w = spec.angular_velocity;  // 2D: about z
     for (std::size_t k = 0; k < w.size(); ++k)
       states[b].angular_velocity[w.size() == 1 ? 2 : k] = w[k];
@@ -92,8 +95,8 @@ void RigidBodies::move(std::vector<RigidBodyState>& states, double time, double 
         }
     } else if (spec.motion == "prescribed") {
       for (std::size_t k = 0; k < spec.velocity.size(); ++k) {
-        s.displacement[k] += dt * spec.velocity[k] * mid(spec.curve);
-        s.velocity[k] = spec.velocity[k] * end(spec.curve);
+        s.displacement[k] += dt * spec.velocity[k] * mid(spec.axis_curve[k]);
+        s.velocity[k] = spec.velocity[k] * end(spec.axis_curve[k]);
       }
     }
   }
@@ -120,9 +123,11 @@ std::array<double, 3> RigidBodies::prescribed_travel(std::size_t b, double t0, d
   std::array<double, 3> u{};
   const auto& body = bodies_[b];
   if (body.motion != "prescribed") return u;
-  const CurveSpec* c = body.curve.empty() ? nullptr : scene_.find_curve(body.curve);
-  const double integral = c ? curve_integral(*c, t0, t1) : t1 - t0;
-  for (std::size_t k = 0; k < body.velocity.size(); ++k) u[k] = body.velocity[k] * integral;
+  for (std::size_t k = 0; k < body.velocity.size(); ++k) {
+    const auto& name = body.axis_curve[k];
+    const CurveSpec* c = name.empty() ? nullptr : scene_.find_curve(name);
+    u[k] = body.velocity[k] * (c ? curve_integral(*c, t0, t1) : t1 - t0);
+  }
   return u;
 }
 

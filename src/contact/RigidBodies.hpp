@@ -45,6 +45,7 @@ class RigidBodies {
   /// Second half, with the forces of the new evaluation (in states[b].force).
   void finish(std::vector<RigidBodyState>& states, double time_end, double dt) const;
   /// Displacement of a prescribed body from time t0 to t1: velocity x the integral of its curve
+  /// (per component with axis_curves)
   /// (exact for the piecewise-linear curves; zero for fixed and free bodies). Implicit stages.
   std::array<double, 3> prescribed_travel(std::size_t b, double t0, double t1) const;
   /// Kinetic energy of the free bodies (prescribed motions are driven from outside: their
@@ -60,6 +61,7 @@ class RigidBodies {
  private:
   struct Body {
     std::string name, motion, curve;
+    std::array<std::string, 3> axis_curve;  ///< the curve of each velocity component
     std::vector<double> velocity, gravity;
     contact::Shape shape;
     double mass;

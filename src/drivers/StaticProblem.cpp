@@ -51,6 +51,10 @@ StaticProblem::StaticProblem(std::shared_ptr<const ModelOperators> operators)
 }
 
 void StaticProblem::commit_history(const Vector& d_owned) {
+  if (contact_ && contact_->has_friction()) {
+    to_overlap(d_owned, d_overlap_);
+    contact_->commit(d_overlap_);
+  }
   auto& history = ops_->solid().history();
   if (!history.any()) return;
   Vector r(d_owned.getMap());
@@ -60,13 +64,18 @@ void StaticProblem::commit_history(const Vector& d_owned) {
 }
 
 void StaticProblem::begin_stage(const std::vector<RigidBodyState>& bodies, double t0,
-                                const std::string& stage) {
+                                const std::string& stage, const Vector* d_owned) {
   const auto it = set_of_stage_.find(stage);
   conditions_ = condition_sets_[it == set_of_stage_.end() ? 0 : it->second].get();
   conditions_->load_history();  // an earlier stage may have advanced it
   released_ = Teuchos::null;
   release_scale_ = 0;
   if (contact_) contact_->begin_stage(bodies, t0, stage);
+  if (contact_ && d_owned) {
+    contact_->set_time(t0);
+    to_overlap(*d_owned, d_overlap_);
+    contact_->start_friction(d_overlap_);
+  }
 }
 
 void StaticProblem::begin_release(const Vector& d0_owned) {

@@ -25,9 +25,10 @@ class StaticProblem {
   void set_load_factor(const LoadFactor& factor);
   /// A stage begins: the displacement conditions active in it (stage "": the first implicit
   /// stage's), and the rigid bodies' states at the stage start, time t0 (no-op without
-  /// contacts). Ends any release of the previous stage.
+  /// contacts). Ends any release of the previous stage. `d_owned`, the state the stage starts
+  /// from, is the reference of the contacts' friction (none: no friction reference).
   void begin_stage(const std::vector<RigidBodyState>& bodies, double t0,
-                   const std::string& stage = "");
+                   const std::string& stage = "", const Vector* d_owned = nullptr);
   /// Springback: r(d0), the residual of the stage's own equations (its conditions, loads and
   /// contacts at the current load factor) at the state it starts from, is subtracted from the
   /// residual scaled by `remaining` (set_release), so d0 is in equilibrium at remaining = 1 and
@@ -48,7 +49,8 @@ class StaticProblem {
   Teuchos::RCP<FEMatrix> create_matrix() const { return Teuchos::rcp(new FEMatrix(graph_)); }
 
   /// Accepts the load step converged at d: the material history computed at d (the internal
-  /// force is evaluated there once more, whatever point the solver evaluated last) is committed.
+  /// force is evaluated there once more, whatever point the solver evaluated last) and the
+  /// contacts' friction state are committed.
   void commit_history(const Vector& d_owned);
 
   /// The contact force on every rigid body at d (collective; empty without contacts).

@@ -148,7 +148,7 @@ RunOutcome run_stages(const CommPtr& comm, const Model& model, const std::string
         state.v.putScalar(0.0);
         state.a.putScalar(0.0);
         state.reactions_from_driver = false;
-        problem->begin_stage(state.bodies, state.time, stage.name);
+        problem->begin_stage(state.bodies, state.time, stage.name, &state.d);
         ImplicitDriver driver(*problem, stage, state.time, first_end);
         const auto s = driver.run(state.d, [&](double t, const Vector&) {
           state.time = t;

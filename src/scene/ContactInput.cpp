@@ -79,6 +79,22 @@ RigidBodySpec read_body(const Scene& s, const YAML::Node& r, const YAML::Node& d
              (b.motion == "free" ? " without force" : ""));
   if (!b.curve.empty() && !s.find_curve(b.curve))
     fail(s, d["curve"], path + ".curve", "no curve named '" + b.curve + "' in curves");
+  for (std::size_t k = 0; r["axis_curves"] && k < r["axis_curves"].size(); ++k) {
+    const auto name = r["axis_curves"][k].as<std::string>();
+    const auto key = path + ".axis_curves[" + std::to_string(k) + "]";
+    if (b.motion != "prescribed")
+      fail(s, d["axis_curves"], path + ".axis_curves",
+           "axis_curves scale a prescribed velocity; motion is " + b.motion);
+    if (!b.curve.empty())
+      fail(s, d["axis_curves"], path + ".axis_curves", "give curve or axis_curves, not both");
+    if (r["axis_curves"].size() != b.velocity.size())
+      fail(s, d["axis_curves"], path + ".axis_curves",
+           "expected one curve per velocity component (" + std::to_string(b.velocity.size()) +
+               "), found " + std::to_string(r["axis_curves"].size()));
+    if (!s.find_curve(name))
+      fail(s, d["axis_curves"][k], key, "no curve named '" + name + "' in curves");
+    b.axis_curves.push_back(name);
+  }
   if (!b.angular_velocity.empty()) {
     const auto at = d["angular_velocity"];
     const auto key = path + ".angular_velocity";
@@ -216,9 +232,8 @@ void read_contact_input(Scene& s) {
   for (std::size_t i = 0; i < r["contacts"].size(); ++i)
     s.contacts.push_back(
         read_contact(s, r["contacts"][i], d["contacts"][i], "contacts[" + std::to_string(i) + "]"));
-  // Implicit stages: frictionless contact with fixed or prescribed bodies (a free body has no
-  // static equilibrium of its own here, and friction needs its path-dependent tangent: not
-  // built yet).
+  // Implicit stages: contact with fixed or prescribed bodies (a free body has no static
+  // equilibrium of its own here), with or without friction; not between deformable parts.
   std::vector<std::string> stage_names;
   for (const auto& st : s.stages) stage_names.push_back(st.name);
   for (std::size_t i = 0; i < s.contacts.size(); ++i)
@@ -240,12 +255,6 @@ void read_contact_input(Scene& s) {
                "expected driver: explicit, or its stages: naming the explicit stages it acts in "
                "(" +
                path + ".stages)");
-    if (c.static_friction > 0 || c.dynamic_friction > 0)
-      fail(s, stage_at, stage_key,
-           "contact '" + c.name +
-               "' has friction, which implicit stages do not model yet; "
-               "expected driver: explicit, no friction in " +
-               path + ", or its stages: naming the explicit stages it acts in");
     for (const auto& b : s.rigid_bodies)
       if (b.name == c.rigid_body && b.motion == "free")
         fail(s, stage_at, stage_key,

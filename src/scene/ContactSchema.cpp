@@ -24,6 +24,10 @@ SpecPtr rigid_body_spec() {
                     .items(2, 3))
       .optional("curve", string("Curve scaling the prescribed velocity (prescribed) or the applied "
                                 "force (free) over time; constant when omitted."))
+      .optional("axis_curves",
+                string_list("Prescribed bodies: one curve per velocity component instead of curve "
+                            "(a punch pressed, then dragged sideways).")
+                    .items(2, 3))
       .optional("mass", real("Mass of the body (2D: of its thickness).", "mass").above(0))
       .optional("density", real("Density: the mass is density x volume (sphere, box; 2D cylinder: "
                                 "density x pi r^2 x thickness).",
@@ -72,8 +76,7 @@ SpecPtr rigid_body_spec() {
 SpecPtr contact_spec() {
   return map("Penalty contact between the surface particles of deformable parts and a rigid "
              "body, or the surface of other deformable parts (target_parts; explicit stages), "
-             "with Coulomb friction in explicit stages; frictionless with fixed bodies in "
-             "implicit stages.")
+             "with Coulomb friction; implicit stages take fixed or prescribed rigid bodies.")
       .required("name", string("Contact name, unique."))
       .optional("rigid_body", string("Name of an entry of rigid_bodies."))
       .optional("target_parts",

@@ -9,8 +9,8 @@
 namespace efg {
 
 inline const std::vector<std::string>& exact_solution_names() {
-  static const std::vector<std::string> names = {"timoshenko_beam", "bar_1d",
-                                                 "homogeneous_stretch", "linear_patch"};
+  static const std::vector<std::string> names = {"timoshenko_beam", "bar_1d", "homogeneous_stretch",
+                                                 "linear_patch"};
   return names;
 }
 

@@ -14,9 +14,8 @@ void read_initial_state_input(Scene& scene) {
   namespace fs = std::filesystem;
   const fs::path given = r["file"].as<std::string>();
   InitialStateSpec spec;
-  spec.file = (given.is_absolute() ? given : fs::path(scene.directory) / given)
-                  .lexically_normal()
-                  .string();
+  spec.file =
+      (given.is_absolute() ? given : fs::path(scene.directory) / given).lexically_normal().string();
   if (r["time"]) spec.time = r["time"].as<double>();
   std::ifstream probe(spec.file, std::ios::binary);
   if (!probe)

@@ -168,18 +168,19 @@ struct RigidWallSpec {
 /// under its contact forces).
 struct RigidBodySpec {
   std::string name;
-  std::string shape;                  ///< plane | sphere | cylinder | box
-  std::vector<double> point, normal;  ///< plane
-  std::vector<double> center, axis;   ///< sphere, cylinder (axis: 3D cylinders)
-  double radius = 0;                  ///< sphere, cylinder
-  std::vector<double> lower, upper;   ///< box (axis-aligned)
-  std::string motion;                 ///< fixed | prescribed | free
-  std::vector<double> velocity;       ///< initial (free) or prescribed (x curve) velocity
-  std::string curve;                  ///< prescribed: scales velocity; empty: constant
-  double mass = 0;                    ///< given (0: none)
-  double density = 0;                 ///< given (0: none): mass = density x volume
-  double thickness = 1;               ///< 2D: out-of-plane length of the body (its mass)
-  std::vector<double> gravity;        ///< free bodies: a body load per unit mass (empty: none)
+  std::string shape;                     ///< plane | sphere | cylinder | box
+  std::vector<double> point, normal;     ///< plane
+  std::vector<double> center, axis;      ///< sphere, cylinder (axis: 3D cylinders)
+  double radius = 0;                     ///< sphere, cylinder
+  std::vector<double> lower, upper;      ///< box (axis-aligned)
+  std::string motion;                    ///< fixed | prescribed | free
+  std::vector<double> velocity;          ///< initial (free) or prescribed (x curve) velocity
+  std::string curve;                     ///< prescribed: scales velocity; empty: constant
+  std::vector<std::string> axis_curves;  ///< prescribed: a curve per velocity component
+  double mass = 0;                       ///< given (0: none)
+  double density = 0;                    ///< given (0: none): mass = density x volume
+  double thickness = 1;                  ///< 2D: out-of-plane length of the body (its mass)
+  std::vector<double> gravity;           ///< free bodies: a body load per unit mass (empty: none)
   std::vector<double> force;  ///< free bodies: an applied force (blank holder), x curve if any
   /// Free round bodies (2D disc, 3D sphere): the initial angular velocity; given, the body
   /// rotates under the moment of its contact forces (empty: translation only).

@@ -35,8 +35,8 @@ void add_scene_node_sets(const Scene& scene, BackgroundMesh& mesh) {
     std::vector<std::string> names;
     for (const auto& ns : mesh.node_sets) names.push_back(ns.name);
     if (mesh.find_node_set(spec.name))
-      fail("name", "the mesh already has a node set named '" + spec.name +
-                       "'; expected a new name");
+      fail("name",
+           "the mesh already has a node set named '" + spec.name + "'; expected a new name");
     for (const char* key : {"lower", "upper"}) {
       const auto& v = std::string(key) == "lower" ? spec.lower : spec.upper;
       if (v.size() != dim)

@@ -18,6 +18,10 @@ usage: check_contact.py impact|punch|slide|stick HISTORY.csv
           mean rolling speed and -omega R over t >= 0.5 = -omega0 R / 3 within 2 %
   pressed the same with an applied force 5 instead of the weight and the box's centre 0.2 off
           the block's axis: contact moment about it -1 within 0.5 %
+  drag_implicit  punch pressed (t <= 0.5) then dragged over a clamped block, implicit, Coulomb
+          mu = 0.3: F_x = 0 while pressing; partial slip while the drag builds up
+          (|F_x| < mu F_y at t = 0.6, 0.7); F_x = -mu F_y for t >= 1 (all slipping); the base's
+          reaction equals the contact force in both directions; all to 1e-8 of F_y
   punch_implicit  prescribed punch on a block on rollers, implicit: force E* delta within 0.5 %
           at every record (delta = 0.01 t), base reaction = contact force to 1e-8, the punch's
           travel 0.01 t to 1e-12
@@ -115,6 +119,19 @@ elif kind == "punch_implicit":
         x_f = 0.5 * (1 + 0.3 / 0.7 * 0.01 * t)
         check("contact moment vs (x_F - 1) F (relative to max F)",
               np.abs(col("rb_punch_Mz") - (x_f - 1.0) * F).max() / np.abs(F).max(), 1e-4)
+elif kind == "drag_implicit":
+    mu = 0.3
+    Fx, Fy = col("rb_punch_Fx"), col("rb_punch_Fy")
+    scale = np.abs(Fy).max()
+    press, slip = (t > 0) & (t <= 0.5 + 1e-9), t >= 1.0 - 1e-9
+    partial = (np.abs(t - 0.6) < 1e-9) | (np.abs(t - 0.7) < 1e-9)
+    check("F_x while pressing / max F_y", np.abs(Fx[press]).max() / scale, 1e-8)
+    check("partial slip: largest |F_x| / (mu F_y) - 1 at t = 0.6, 0.7 (below 0)",
+          max(0.0, (np.abs(Fx[partial]) / (mu * Fy[partial])).max() - 1 + 1e-3), 0.0)
+    check("full slip: |F_x + mu F_y| / max F_y", np.abs(Fx[slip] + mu * Fy[slip]).max() / scale,
+          1e-8)
+    check("|R_base_x - F_x| / max F_y", np.abs(col("R_base_x") - Fx).max() / scale, 1e-8)
+    check("|R_base_y - F_y| / max F_y", np.abs(col("R_base_y") - Fy).max() / scale, 1e-8)
 elif kind in ("slide", "stick"):
     tan, mu, g, M = (0.5 if kind == "slide" else 0.2), 0.3, 1.0, 0.5
     th = math.atan(tan)
