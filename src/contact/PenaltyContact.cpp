@@ -6,6 +6,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "contact/CandidateCounts.hpp"
 #include "contact/CoulombFriction.hpp"
 #include "core/Errors.hpp"
 #include "scene/ContactInput.hpp"
@@ -185,22 +186,11 @@ void PenaltyContact::commit(const std::vector<RigidBodyState>& bodies) {
 }
 
 long long PenaltyContact::active_count() const {
-  long long mine = 0, all = 0;
-  for (const auto& pair : pairs_)
-    for (const auto& c : pair.candidates) mine += c.active ? 1 : 0;
-  Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, mine, Teuchos::outArg(all));
-  return all;
+  return contact::active_over_ranks(*comm_, pairs_);
 }
 
-}  // namespace efg
-
-namespace efg {
-
 long long PenaltyContact::candidate_count() const {
-  long long mine = 0, all = 0;
-  for (const auto& pair : pairs_) mine += static_cast<long long>(pair.candidates.size());
-  Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, mine, Teuchos::outArg(all));
-  return all;
+  return contact::candidates_over_ranks(*comm_, pairs_);
 }
 
 }  // namespace efg

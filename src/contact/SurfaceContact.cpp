@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "contact/CandidateCounts.hpp"
+
 namespace efg {
 
 namespace {
@@ -322,18 +324,11 @@ void SurfaceContact::commit() {
 }
 
 long long SurfaceContact::active_count() const {
-  long long mine = 0, all = 0;
-  for (const auto& pair : pairs_)
-    for (const auto& c : pair.candidates) mine += c.active ? 1 : 0;
-  Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, mine, Teuchos::outArg(all));
-  return all;
+  return contact::active_over_ranks(*comm_, pairs_);
 }
 
 long long SurfaceContact::candidate_count() const {
-  long long mine = 0, all = 0;
-  for (const auto& pair : pairs_) mine += static_cast<long long>(pair.candidates.size());
-  Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, mine, Teuchos::outArg(all));
-  return all;
+  return contact::candidates_over_ranks(*comm_, pairs_);
 }
 
 }  // namespace efg

@@ -26,24 +26,17 @@ usage: check_contact.py impact|punch|slide|stick HISTORY.csv
           at every record (delta = 0.01 t), base reaction = contact force to 1e-8, the punch's
           travel 0.01 t to 1e-12
 """
-import csv
 import math
 import sys
 
 import numpy as np
 
+from history_checks import HistoryChecks
+
 kind, path = sys.argv[1], sys.argv[2]
-rows = list(csv.DictReader(open(path)))
-col = lambda n: np.array([float(r[n]) for r in rows])  # noqa: E731
+history = HistoryChecks(path)
+rows, col, check = history.rows, history.col, history.check
 t = col("time")
-ok = True
-
-
-def check(name, value, limit):
-    global ok
-    good = abs(value) <= limit
-    ok = ok and good
-    print("%s %.3g (limit %.3g)%s" % (name, value, limit, "" if good else "  FAILED"))
 
 
 if kind == "impact":
@@ -136,19 +129,13 @@ elif kind in ("slide", "stick"):
     tan, mu, g, M = (0.5 if kind == "slide" else 0.2), 0.3, 1.0, 0.5
     th = math.atan(tan)
     if kind == "slide":
-        w = (t >= 1.0) & (t <= 2.0)
-        a = np.polyfit(t[w], col("momentum_x")[w] / M, 1)[0]
-        exact = g * (math.sin(th) - mu * math.cos(th))
-        print("acceleration %.6f, exact %.6f" % (a, exact))
-        check("acceleration error (relative)", a / exact - 1, 1e-2)
+        history.check_incline_slide(col("momentum_x") / M, tan, mu, g)
     else:
-        u = col("u_ymin_x")
-        w1, w2 = (t >= 3.0) & (t < 3.5), (t >= 3.5)
-        check("drift / block size", u[w2].mean() - u[w1].mean(), 1e-6)
+        history.check_at_rest(col("u_ymin_x"))
         late = t >= 3.0
         fx, fy = col("rb_incline_Fx")[late], col("rb_incline_Fy")[late]
         check("tangential support vs M g sin (relative)",
               np.abs(fx - M * g * math.sin(th)).max() / (M * g * math.sin(th)), 5e-3)
         check("normal support vs M g cos (relative)",
               np.abs(-fy - M * g * math.cos(th)).max() / (M * g * math.cos(th)), 5e-3)
-sys.exit(0 if ok else 1)
+sys.exit(0 if history.ok else 1)

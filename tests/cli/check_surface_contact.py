@@ -18,24 +18,17 @@ usage: check_surface_contact.py bars|bars3d|slide|stick HISTORY.csv
          force on the base = M g (sin, -cos) within 0.5 % and the clamp's reaction = the weight of
          block and base within 0.5 %; energy balance as slide
 """
-import csv
 import math
 import sys
 
 import numpy as np
 
+from history_checks import HistoryChecks
+
 kind, path = sys.argv[1], sys.argv[2]
-rows = list(csv.DictReader(open(path)))
-col = lambda n: np.array([float(r[n]) for r in rows])  # noqa: E731
+history = HistoryChecks(path)
+rows, col, check = history.rows, history.col, history.check
 t = col("time")
-ok = True
-
-
-def check(name, value, limit):
-    global ok
-    good = abs(value) <= limit
-    ok = ok and good
-    print("%s %.3g (limit %.3g)%s" % (name, value, limit, "" if good else "  FAILED"))
 
 
 if kind in ("bars", "bars3d"):
@@ -60,15 +53,9 @@ elif kind in ("slide", "stick"):
     tan, mu, g, M, M_base = (0.5 if kind == "slide" else 0.2), 0.3, 1.0, 0.5, 1.5
     th = math.atan(tan)
     if kind == "slide":
-        w = (t >= 1.0) & (t <= 2.0)
-        a = np.polyfit(t[w], col("v_block_all_x")[w], 1)[0]
-        exact = g * (math.sin(th) - mu * math.cos(th))
-        print("acceleration %.6f, exact %.6f" % (a, exact))
-        check("acceleration error (relative)", a / exact - 1, 1e-2)
+        history.check_incline_slide(col("v_block_all_x"), tan, mu, g)
     else:
-        u = col("u_block_all_x")
-        w1, w2 = (t >= 3.0) & (t < 3.5), (t >= 3.5)
-        check("drift / block size", u[w2].mean() - u[w1].mean(), 1e-6)
+        history.check_at_rest(col("u_block_all_x"))
         late = t >= 3.0
         check("mean tangential contact force vs M g sin (relative)",
               col("contact_rest_Fx")[late].mean() / (M * g * math.sin(th)) - 1, 5e-3)
@@ -84,4 +71,4 @@ elif kind in ("slide", "stick"):
     check("energy balance over t >= 0.1", col("energy_balance_error")[t >= 0.1].max(), 1e-2)
 else:
     sys.exit("unknown check '%s'" % kind)
-sys.exit(0 if ok else 1)
+sys.exit(0 if history.ok else 1)
