@@ -40,16 +40,26 @@ contact::Shape shape_of(const RigidBodySpec& b, int dim) {
   return s;
 }
 
+// The moment of inertia about the centre for the rotation of free bodies: a disc m R^2 / 2, a
+// sphere 2 m R^2 / 5, a 2D box m (w^2 + h^2) / 12 (about z; a rectangle of sides w, h).
+double rigid_body_inertia(const RigidBodySpec& b, int dim) {
+  const double m = rigid_body_mass(b, dim);
+  if (b.shape == "box" && dim == 2) {
+    const double w = b.upper[0] - b.lower[0], h = b.upper[1] - b.lower[1];
+    return m * (w * w + h * h) / 12.0;
+  }
+  return m * b.radius * b.radius * (b.shape == "sphere" ? 0.4 : 0.5);
+}
+
 }  // namespace
 
 RigidBodies::RigidBodies(const Scene& scene, int dim) : scene_(scene), dim_(dim) {
   for (const auto& b : scene.rigid_bodies) {
     std::array<std::string, 3> axis_curve = {b.curve, b.curve, b.curve};
     for (std::size_t k = 0; k < b.axis_curves.size(); ++k) axis_curve[k] = b.axis_curves[k];
-    bodies_.push_back(
-        {b.name, b.motion, b.curve, axis_curve, b.velocity, b.gravity, shape_of(b, dim),
-         rigid_body_mass(b, dim), b.force, b.angular_velocity,
-         rigid_body_mass(b, dim) * b.radius * b.radius * (b.shape == "sphere" ? 0.4 : 0.5)});
+    bodies_.push_back({b.name, b.motion, b.curve, axis_curve, b.velocity, b.gravity,
+                       shape_of(b, dim), rigid_body_mass(b, dim), b.force, b.angular_velocity,
+                       rigid_body_inertia(b, dim)});
   }
   scene_count_ = bodies_.size();
   for (const auto& w : scene.rigid_walls) {

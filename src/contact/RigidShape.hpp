@@ -98,6 +98,27 @@ inline Proximity box(const Shape& s, const double* x) {
 }  // namespace detail
 
 /// Gap and normal of point x to the shape translated by u.
+inline Proximity proximity(const Shape& s, const double* x, const double* u);
+
+/// Gap and normal of point x to the shape translated by u and turned by `angle` about its
+/// reference point (2D, counterclockwise): the point is taken into the body's frame,
+/// y = c + R(-angle) (x - u - c), and the normal back out, n = R(angle) n_body. A turn leaves
+/// planes, discs and spheres as they are; rotating 2D boxes need it.
+inline Proximity proximity_turned(const Shape& s, const double* x, const double* u, double angle) {
+  if (angle == 0.0 || s.dim != 2 || s.kind != Shape::Kind::box) return proximity(s, x, u);
+  double c[3];
+  reference_point(s, c);
+  const double co = std::cos(angle), si = std::sin(angle);
+  const double r[2] = {x[0] - u[0] - c[0], x[1] - u[1] - c[1]};
+  const double body[3] = {c[0] + co * r[0] + si * r[1], c[1] - si * r[0] + co * r[1], 0.0};
+  const double none[3] = {0, 0, 0};
+  auto p = proximity(s, body, none);
+  const double n[2] = {p.normal[0], p.normal[1]};
+  p.normal[0] = co * n[0] - si * n[1];
+  p.normal[1] = si * n[0] + co * n[1];
+  return p;
+}
+
 inline Proximity proximity(const Shape& s, const double* x, const double* u) {
   double y[3] = {0, 0, 0};
   for (int k = 0; k < s.dim; ++k) y[k] = x[k] - u[k];

@@ -101,11 +101,13 @@ RigidBodySpec read_body(const Scene& s, const YAML::Node& r, const YAML::Node& d
     if (b.motion != "free")
       fail(s, at, key, "rotation moves free bodies only; motion is " + b.motion);
     const bool round = b.shape == "sphere" || (b.shape == "cylinder" && b.center.size() == 2);
-    if (!round)
+    const bool box_2d = b.shape == "box" && b.lower.size() == 2;
+    if (!round && !box_2d)
       fail(s, at, key,
-           "rotation is integrated for round bodies only (a 2D cylinder, a sphere); shape is " +
-               b.shape + (b.shape == "cylinder" ? " in 3D" : ""));
-    const std::size_t entries = b.center.size() == 2 ? 1 : 3;
+           "rotation is integrated for round bodies (a 2D cylinder, a sphere) and 2D boxes only; "
+           "shape is " +
+               b.shape + " in 3D");
+    const std::size_t entries = b.center.size() == 2 || box_2d ? 1 : 3;
     if (b.angular_velocity.size() != entries)
       fail(s, at, key,
            "expected " + std::to_string(entries) + " entries (" +

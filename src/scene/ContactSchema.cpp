@@ -7,8 +7,9 @@ using namespace schema;
 SpecPtr rigid_body_spec() {
   auto point = [](const std::string& doc) { return real_list(doc, "length").items(2, 3); };
   return map("A rigid body of analytic shape: fixed, moved by a prescribed velocity, or free "
-             "(translation under its contact forces; a round body given an angular_velocity also "
-             "turns); implicit stages take fixed and prescribed bodies. Particles of the parts "
+             "(translation under its contact forces; a round body or a 2D box given an "
+             "angular_velocity also turns); implicit stages take fixed and prescribed bodies. "
+             "Particles of the parts "
              "named by a contact may not enter it.")
       .required("name", string("Body name, unique."))
       .required("shape", choice("Analytic shape.", {"plane", "sphere", "cylinder", "box"}))
@@ -35,10 +36,11 @@ SpecPtr rigid_body_spec() {
                                .above(0))
       .optional(
           "angular_velocity",
-          real_list("Free round bodies (2D cylinder, i.e. a disc; 3D sphere): initial angular "
-                    "velocity (2D: one entry, about z; 3D: three). Given, the body rotates "
-                    "under the moment of its contact forces (I = m R^2 / 2 for a disc, "
-                    "2 m R^2 / 5 for a sphere); omitted, it only translates.",
+          real_list("Free round bodies (2D cylinder, i.e. a disc; 3D sphere) and 2D boxes: "
+                    "initial angular velocity (2D: one entry, about z; 3D: three). Given, the "
+                    "body rotates under the moment of its contact forces about its centre "
+                    "(I = m R^2 / 2 for a disc, 2 m R^2 / 5 for a sphere, m (w^2 + h^2) / 12 "
+                    "for a box); omitted, it only translates.",
                     "1/time")
               .items(1, 3))
       .optional("force",

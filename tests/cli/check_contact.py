@@ -18,6 +18,9 @@ usage: check_contact.py impact|punch|slide|stick HISTORY.csv
           mean rolling speed and -omega R over t >= 0.5 = -omega0 R / 3 within 2 %
   pressed the same with an applied force 5 instead of the weight and the box's centre 0.2 off
           the block's axis: contact moment about it -1 within 0.5 %
+  tumble  free rigid box (mass 0.5, v = -1, omega0 = 3) on a free block (mass 1): momentum of
+          particles + box constant to 1e-8 relative; energy balance < 1 %; the spin changed by
+          the contact by more than 0.1; the box left the block (no contact force at the end)
   drag_implicit  punch pressed (t <= 0.5) then dragged over a clamped block, implicit, Coulomb
           mu = 0.3: F_x = 0 while pressing; partial slip while the drag builds up
           (|F_x| < mu F_y at t = 0.6, 0.7); F_x = -mu F_y for t >= 1 (all slipping); the base's
@@ -112,6 +115,16 @@ elif kind == "punch_implicit":
         x_f = 0.5 * (1 + 0.3 / 0.7 * 0.01 * t)
         check("contact moment vs (x_F - 1) F (relative to max F)",
               np.abs(col("rb_punch_Mz") - (x_f - 1.0) * F).max() / np.abs(F).max(), 1e-4)
+elif kind == "tumble":
+    m_box, v0, w0 = 0.5, -1.0, 3.0
+    p = col("momentum_y")
+    check("momentum drift (relative)", np.abs(p - m_box * v0).max() / abs(m_box * v0), 1e-8)
+    check("momentum_x / |momentum|", np.abs(col("momentum_x")).max() / abs(m_box * v0), 1e-8)
+    check("energy balance", col("energy_balance_error").max(), 1e-2)
+    w = col("rb_box_wz")
+    check("spin unchanged by the contact (0.1 - |omega_end - omega0|, below 0)",
+          max(0.0, 0.1 - abs(w[-1] - w0)), 0.0)
+    check("contact force at the end", np.abs(col("rb_box_Fy")[-1]), 0.0)
 elif kind == "drag_implicit":
     mu = 0.3
     Fx, Fy = col("rb_punch_Fx"), col("rb_punch_Fy")

@@ -13,6 +13,30 @@ namespace {
 using efg::contact::proximity;
 using efg::contact::Shape;
 
+TEST(RigidShape, TurnedBoxIsEvaluatedInItsOwnFrame) {
+  // The box [-1, 1] x [-0.5, 0.5] turned by 90 degrees about its centre stands as
+  // [-0.5, 0.5] x [-1, 1]: (0, 0.9) is 0.1 inside its top face, (0.7, 0) 0.2 right of it.
+  Shape s;
+  s.kind = Shape::Kind::box;
+  s.dim = 2;
+  s.lower[0] = -1.0;
+  s.lower[1] = -0.5;
+  s.upper[0] = 1.0;
+  s.upper[1] = 0.5;
+  const double u[3] = {0, 0, 0}, quarter = 2.0 * std::atan(1.0);
+  const double inside[3] = {0, 0.9, 0}, right[3] = {0.7, 0, 0};
+  const auto a = efg::contact::proximity_turned(s, inside, u, quarter);
+  EXPECT_NEAR(a.gap, -0.1, 1e-14);
+  EXPECT_NEAR(a.normal[0], 0.0, 1e-14);
+  EXPECT_NEAR(a.normal[1], 1.0, 1e-14);
+  const auto b = efg::contact::proximity_turned(s, right, u, quarter);
+  EXPECT_NEAR(b.gap, 0.2, 1e-14);
+  EXPECT_NEAR(b.normal[0], 1.0, 1e-14);
+  EXPECT_NEAR(b.normal[1], 0.0, 1e-14);
+  // unturned, (0, 0.9) is outside the box by 0.4
+  EXPECT_NEAR(efg::contact::proximity_turned(s, inside, u, 0.0).gap, 0.4, 1e-14);
+}
+
 TEST(RigidShape, PlaneGapAlongItsNormal) {
   Shape s;
   s.kind = Shape::Kind::plane;
