@@ -80,9 +80,10 @@ std::vector<RigidBodyState> RigidBodies::initial_states(double time) const {
     for (std::size_t k = 0; k < spec.velocity.size(); ++k)
       states[b].velocity[k] =
           spec.velocity[k] * (spec.motion == "prescribed" ? factor(spec.axis_curve[k]) : 1.0);
-    const auto& w = spec.angular_velocity;  // 2D: about z
+    const auto& w = spec.angular_velocity;  // 2D: about z; prescribed: x curve
+    const double spin = spec.motion == "prescribed" ? factor(spec.curve) : 1.0;
     for (std::size_t k = 0; k < w.size(); ++k)
-      states[b].angular_velocity[w.size() == 1 ? 2 : k] = w[k];
+      states[b].angular_velocity[w.size() == 1 ? 2 : k] = w[k] * spin;
   }
   return states;
 }
@@ -107,6 +108,13 @@ void RigidBodies::move(std::vector<RigidBodyState>& states, double time, double 
       for (std::size_t k = 0; k < spec.velocity.size(); ++k) {
         s.displacement[k] += dt * spec.velocity[k] * mid(spec.axis_curve[k]);
         s.velocity[k] = spec.velocity[k] * end(spec.axis_curve[k]);
+      }
+      // A prescribed spin (angular_velocity x curve), turned at mid-step like the translation.
+      const auto& w = spec.angular_velocity;
+      for (std::size_t k = 0; k < w.size(); ++k) {
+        const std::size_t axis = w.size() == 1 ? 2 : k;
+        s.rotation[axis] += dt * w[k] * mid(spec.curve);
+        s.angular_velocity[axis] = w[k] * end(spec.curve);
       }
     }
   }

@@ -98,8 +98,8 @@ RigidBodySpec read_body(const Scene& s, const YAML::Node& r, const YAML::Node& d
   if (!b.angular_velocity.empty()) {
     const auto at = d["angular_velocity"];
     const auto key = path + ".angular_velocity";
-    if (b.motion != "free")
-      fail(s, at, key, "rotation moves free bodies only; motion is " + b.motion);
+    if (b.motion == "fixed")
+      fail(s, at, key, "a fixed body does not turn; expected motion: free or prescribed");
     const bool round = b.shape == "sphere" || (b.shape == "cylinder" && b.center.size() == 2);
     const bool box_2d = b.shape == "box" && b.lower.size() == 2;
     if (!round && !box_2d)
@@ -257,6 +257,12 @@ void read_contact_input(Scene& s) {
                "expected driver: explicit, or its stages: naming the explicit stages it acts in "
                "(" +
                path + ".stages)");
+    for (const auto& b : s.rigid_bodies)
+      if (b.name == c.rigid_body && b.motion == "prescribed" && !b.angular_velocity.empty())
+        fail(s, stage_at, stage_key,
+             "rigid body '" + b.name + "' of contact '" + c.name +
+                 "' turns, which implicit stages do not model yet; expected driver: explicit, or "
+                 "no angular_velocity");
     for (const auto& b : s.rigid_bodies)
       if (b.name == c.rigid_body && b.motion == "free")
         fail(s, stage_at, stage_key,

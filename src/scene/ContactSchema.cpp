@@ -36,11 +36,12 @@ SpecPtr rigid_body_spec() {
                                .above(0))
       .optional(
           "angular_velocity",
-          real_list("Free round bodies (2D cylinder, i.e. a disc; 3D sphere) and 2D boxes: "
-                    "initial angular velocity (2D: one entry, about z; 3D: three). Given, the "
-                    "body rotates under the moment of its contact forces about its centre "
-                    "(I = m R^2 / 2 for a disc, 2 m R^2 / 5 for a sphere, m (w^2 + h^2) / 12 "
-                    "for a box); omitted, it only translates.",
+          real_list("Round bodies (2D cylinder, i.e. a disc; 3D sphere) and 2D boxes: the "
+                    "angular velocity (2D: one entry, about z; 3D: three). A free body starts "
+                    "with it and rotates under the moment of its contact forces about its "
+                    "centre (I = m R^2 / 2 for a disc, 2 m R^2 / 5 for a sphere, "
+                    "m (w^2 + h^2) / 12 for a box); a prescribed body spins at it x curve "
+                    "(explicit stages; a driven roll). Omitted, the body only translates.",
                     "1/time")
               .items(1, 3))
       .optional("force",

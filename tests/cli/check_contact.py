@@ -18,6 +18,9 @@ usage: check_contact.py impact|punch|slide|stick HISTORY.csv
           mean rolling speed and -omega R over t >= 0.5 = -omega0 R / 3 within 2 %
   pressed the same with an applied force 5 instead of the weight and the box's centre 0.2 off
           the block's axis: contact moment about it -1 within 0.5 %
+  driven  a roll spinning at a prescribed omega = -4 (R = 0.25) pulls a strip on a frictionless
+          floor: the strip's mean velocity over t in [1.6, 2] = omega R within 3 %, energy
+          balance < 1 %, the roll's spin as prescribed
   tumble  free rigid box (mass 0.5, v = -1, omega0 = 3) on a free block (mass 1): momentum of
           particles + box constant to 1e-8 relative; energy balance < 1 %; the spin changed by
           the contact by more than 0.1; the box left the block (no contact force at the end)
@@ -115,6 +118,13 @@ elif kind == "punch_implicit":
         x_f = 0.5 * (1 + 0.3 / 0.7 * 0.01 * t)
         check("contact moment vs (x_F - 1) F (relative to max F)",
               np.abs(col("rb_punch_Mz") - (x_f - 1.0) * F).max() / np.abs(F).max(), 1e-4)
+elif kind == "driven":
+    omega, R = -4.0, 0.25
+    late = t >= 1.6 - 1e-9
+    check("strip speed vs omega R (relative)", col("v_all_x")[late].mean() / (omega * R) - 1,
+          3e-2)
+    check("energy balance", col("energy_balance_error").max(), 1e-2)
+    check("roll spin vs omega", np.abs(col("rb_roll_wz") - omega).max(), 0.0)
 elif kind == "tumble":
     m_box, v0, w0 = 0.5, -1.0, 3.0
     p = col("momentum_y")
