@@ -9,6 +9,7 @@
 #include "scene/ContactInput.hpp"
 #include "scene/FieldInput.hpp"
 #include "scene/InitialStateInput.hpp"
+#include "scene/MeshInput.hpp"
 #include "scene/PartFormulationCheck.hpp"
 #include "scene/PlasticityInput.hpp"
 #include "scene/SceneAngles.hpp"
@@ -56,7 +57,7 @@ class SceneBuilder {
     for (const auto& kv : r["parameters"])
       s_.parameters[kv.first.as<std::string>()] = kv.second.as<double>();
     s_.title = r["title"].as<std::string>();
-    build_mesh(r["mesh"], d["mesh"]);
+    read_mesh_input(s_);
     for (std::size_t i = 0; i < r["materials"].size(); ++i)
       build_material(r["materials"][i], d["materials"][i], i);
     for (std::size_t i = 0; i < r["parts"].size(); ++i) build_part(r["parts"][i], d["parts"][i], i);
@@ -122,86 +123,6 @@ class SceneBuilder {
   }
 
  private:
-  void build_mesh(const YAML::Node& m, const YAML::Node& doc) {
-    if (m["file"]) {
-      const fs::path given = m["file"].as<std::string>();
-      const fs::path path = given.is_absolute() ? given : fs::path(s_.directory) / given;
-      s_.mesh_file = path.lexically_normal().string();
-      std::ifstream probe(s_.mesh_file, std::ios::binary);
-      if (!probe)
-        fail(doc["file"], "mesh.file",
-             "cannot read mesh file '" + s_.mesh_file +
-                 "' (expected an existing, readable Exodus II file)");
-      if (m["more_blocks"].size() > 0)
-        fail(doc["more_blocks"], "mesh.more_blocks",
-             "further generated blocks join a generated mesh only (expected mesh.generate, or "
-             "the blocks in the Exodus file)");
-      return;
-    }
-    s_.generator = generator_spec(m["generate"], doc["generate"], "mesh.generate");
-    for (std::size_t i = 0; i < m["more_blocks"].size(); ++i) {
-      const auto path = "mesh.more_blocks[" + std::to_string(i) + "]";
-      const auto& at = doc["more_blocks"][i];
-      auto spec = generator_spec(m["more_blocks"][i], at, path);
-      if (spec.dimension != s_.generator->dimension)
-        fail(at["element"], path + ".element",
-             "a " + std::to_string(spec.dimension) + "D cell cannot join the " +
-                 std::to_string(s_.generator->dimension) + "D mesh of mesh.generate (expected " +
-                 std::to_string(s_.generator->dimension) + "D cells)");
-      bool taken = spec.block_name == s_.generator->block_name;
-      for (const auto& other : s_.more_blocks) taken = taken || other.block_name == spec.block_name;
-      if (taken)
-        fail(at["block_name"] ? at["block_name"] : at, path + ".block_name",
-             "block name '" + spec.block_name +
-                 "' is taken by an earlier generated block (expected a name of its own)");
-      s_.more_blocks.push_back(std::move(spec));
-    }
-  }
-
-  GeneratorSpec generator_spec(const YAML::Node& g, const YAML::Node& at, const std::string& path) {
-    GeneratorSpec spec;
-    spec.element =
-        enum_of<CellType>(g["element"].as<std::string>(), {{"quad4", CellType::quad4},
-                                                           {"tri3", CellType::tri3},
-                                                           {"hex8", CellType::hex8},
-                                                           {"tet4", CellType::tet4},
-                                                           {"wedge6", CellType::wedge6}});
-    spec.dimension = cell_dimension(spec.element);
-    const auto dim = static_cast<std::size_t>(spec.dimension);
-    for (const char* key : {"lower", "upper", "cells"})
-      if (g[key].size() != dim)
-        fail(at[key], path + "." + key,
-             "expected " + std::to_string(dim) + " entries for a " + std::to_string(dim) + "D " +
-                 g["element"].as<std::string>() + " mesh, found " + std::to_string(g[key].size()));
-    for (std::size_t i = 0; i < dim; ++i) {
-      spec.lower[i] = g["lower"][i].as<double>();
-      spec.upper[i] = g["upper"][i].as<double>();
-      spec.cells[i] = g["cells"][i].as<int>();
-      if (!(spec.upper[i] > spec.lower[i]))
-        fail(at["upper"][i], path + ".upper[" + std::to_string(i) + "]",
-             "expected a value greater than lower[" + std::to_string(i) +
-                 "] = " + g["lower"][i].Scalar());
-    }
-    spec.perturbation = g["perturbation"].as<double>();
-    spec.seed = g["seed"].as<std::uint64_t>();
-    spec.block_name = g["block_name"].as<std::string>();
-    if (g["map"]) {
-      if (g["map"].size() != dim)
-        fail(at["map"], path + ".map",
-             "expected " + std::to_string(dim) + " expressions, one per coordinate, found " +
-                 std::to_string(g["map"].size()));
-      const auto map = fields(g["map"], at["map"], path + ".map", ExpressionVariables::position);
-      spec.coordinate_map = [map](const double* box, double* mapped) {
-        for (std::size_t k = 0; k < map.size(); ++k) mapped[k] = map[k].at(box, 0.0);
-      };
-      for (std::size_t k = 0; k < map.size(); ++k)
-        spec.map_text += (k ? ", " : "(") + (map[k].varies() ? map[k].expression->text()
-                                                             : std::to_string(map[k].constant));
-      spec.map_text += ")";
-    }
-    return spec;
-  }
-
   void build_material(const YAML::Node& m, const YAML::Node& doc, std::size_t i) {
     MaterialSpec mat;
     mat.name = m["name"].as<std::string>();

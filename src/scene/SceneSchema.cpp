@@ -2,65 +2,14 @@
 
 #include "scene/ContactSchema.hpp"
 #include "scene/ExactSolutionNames.hpp"
+#include "scene/MeshSchema.hpp"
 #include "scene/ShellSchema.hpp"
+#include "scene/StageSchema.hpp"
 
 namespace efg {
 namespace {
 
 using namespace schema;
-
-// The generator's keys; `block_name_default` empty makes block_name required (further blocks).
-SpecPtr generate_spec(const std::string& text, const std::string& block_name_default) {
-  auto spec =
-      map(text)
-          .required("element", choice("Cell type; quad4 and tri3 make a 2D rectangle, hex8, tet4 "
-                                      "(6 per cube, Kuhn split) and wedge6 (2 per cube) a 3D box.",
-                                      {"quad4", "tri3", "hex8", "tet4", "wedge6"}))
-          .required("lower",
-                    real_list("Lower corner of the domain, one entry per dimension.", "length")
-                        .items(2, 3))
-          .required("upper",
-                    real_list("Upper corner of the domain, one entry per dimension.", "length")
-                        .items(2, 3))
-          .required("cells", integer_list("Number of cells per direction, one entry per dimension.")
-                                 .items(2, 3)
-                                 .at_least(1))
-          .optional("perturbation",
-                    real("Largest random node shift as a fraction of the cell size per direction; "
-                         "boundary nodes move only within their boundary plane.",
-                         "-")
-                        .at_least(0)
-                        .at_most(0.3),
-                    "0")
-          .optional("seed", integer("Seed of the perturbation's random numbers.").at_least(0), "1")
-          .optional("map",
-                    real_list("Coordinate map applied to every generated node: the new "
-                              "coordinates as expressions of the box coordinates x, y, z (e.g. "
-                              "[x*cos(y), x*sin(y)] bends [a, b] x [0, pi/2] into a quarter "
-                              "ring). Node and side sets keep their names.",
-                              "length")
-                        .items(2, 3)
-                        .varying(ExpressionVariables::position));
-  const auto block_name = string("Name of the generated element block.");
-  return block_name_default.empty() ? spec.required("block_name", block_name)
-                                    : spec.optional("block_name", block_name, block_name_default);
-}
-
-SpecPtr mesh_spec() {
-  return map("The background mesh: its nodes become the particles, its cells give nodal volumes, "
-             "integration cells and node/side sets. Generated meshes have node and side sets xmin, "
-             "xmax, ymin, ymax (zmin, zmax in 3D) and node set all.")
-      .optional("file", string("Exodus II mesh file, relative to the scene file's folder."))
-      .optional("generate", generate_spec("Built-in structured mesh generator.", "block_1"))
-      .optional("more_blocks",
-                list("Further generated blocks beside mesh.generate's, each with its own nodes "
-                     "(not joined to the others): separate bodies that meet by contact. Their "
-                     "node and side sets are named <block_name>_xmin .. and <block_name>_all; "
-                     "node set all holds every node.",
-                     generate_spec("A further generated block.", "")),
-                "[]")
-      .exactly_one_of({"file", "generate"});
-}
 
 SpecPtr section_spec() {
   return map("Meshfree discretization of the part (LS-DYNA *SECTION_SOLID_EFG).")
@@ -326,113 +275,6 @@ SpecPtr curve_spec() {
       .required("name", string("Curve name, unique."))
       .required("time", real_list("Abscissae, strictly increasing.", "time").items(2, 100000))
       .required("value", real_list("Ordinates, as many as times.", "-").items(2, 100000));
-}
-
-SpecPtr stage_spec() {
-  return map("One analysis stage. Stages run in order, each starting from the state the previous "
-             "one left. Keys after driver depend on the driver.")
-      .required("name", string("Stage name, unique."))
-      .required("driver", choice("Time integration.", {"implicit", "explicit"}))
-      .required("end_time",
-                real("Stage end time (pseudo-time for static implicit stages).", "time").above(0))
-      .optional("output_interval",
-                real("Time between output records; when omitted, implicit stages write the stage "
-                     "end and explicit stages 20 records.",
-                     "time")
-                    .above(0))
-      .discriminated_by("driver")
-      .variant(
-          "implicit",
-          {optional_key("load_steps", integer("Initial number of load steps.").at_least(1), "1"),
-           optional_key("springback",
-                        boolean("Springback: the forces out of balance when the stage starts "
-                                "(of conditions, loads and contacts not active in it, and the "
-                                "inertia of an explicit state) are released gradually, to zero "
-                                "at end_time, over the load steps (docs/implicit.md)."),
-                        "false"),
-           optional_key("min_step_fraction",
-                        real("Smallest load step after cutbacks, as a fraction of end_time.", "-")
-                            .above(0)
-                            .at_most(1),
-                        "1e-4"),
-           optional_key("solver",
-                        choice("Linear solver: a direct LU factorization (on rank 0), GMRES "
-                               "with multigrid, or auto (direct up to direct_limit dofs, "
-                               "iterative above); docs/implicit.md.",
-                               {"auto", "direct", "iterative"}),
-                        "auto"),
-           optional_key("direct_limit",
-                        integer("Largest dof count that solver: auto factors directly; 0: the "
-                                "default (150000 in 2D, 12000 in 3D).")
-                            .at_least(0),
-                        "0"),
-           optional_key("residual_tolerance",
-                        real("Newton converges when ||r|| <= this x max(||f_ext||, ||f_int||, "
-                             "||r_0||), or when the energy of the update is negligible.",
-                             "-")
-                            .above(0)
-                            .below(1),
-                        "1e-9"),
-           optional_key("nonlinear_solver",
-                        passthrough("NOX parameter list (e.g. Nonlinear Solver, Line Search)."),
-                        "{}"),
-           optional_key("linear_solver",
-                        passthrough("Belos parameter list; 'Solver Type' picks the method."), "{}"),
-           optional_key(
-               "preconditioner",
-               passthrough("'Type': direct, MueLu, Ifpack2 or None; the other keys go "
-                           "to that package's list ('solver': MUMPS, UMFPACK or KLU2 for direct)."),
-               "{}")})
-      .variant(
-          "explicit",
-          {optional_key("dt_scale",
-                        real("Factor on the stable time step.", "-").above(0).at_most(1), "0.9"),
-           optional_key("mass_scale",
-                        real("Uniform mass scaling of a quasi-static stage (forming): the lumped "
-                             "mass of every particle times this factor, so the stable time step "
-                             "grows by its square root; inertia, kinetic energy and contact "
-                             "stiffness follow the scaled mass. Check the kinetic / internal "
-                             "energy ratio the stage logs (docs/explicit.md).",
-                             "-")
-                            .at_least(1),
-                        "1"),
-           optional_key("bulk_viscosity_linear",
-                        real("Linear bulk viscosity coefficient (LS-DYNA's Q2) of the cells of "
-                             "mixed_up parts: q = rho l (Q1 l theta'^2 - Q2 c theta') on "
-                             "compressing cells; 0 turns it off. Parts without mixed_up have "
-                             "none (docs/mixed.md).",
-                             "-")
-                            .at_least(0),
-                        "0.06"),
-           optional_key("bulk_viscosity_quadratic",
-                        real("Quadratic bulk viscosity coefficient (LS-DYNA's Q1) of the cells "
-                             "of mixed_up parts.",
-                             "-")
-                            .at_least(0),
-                        "1.5"),
-           optional_key(
-               "transformation_traction",
-               boolean("Displacement conditions with method transformation also apply their "
-                       "boundary traction term (the Wagner-Liu consistency term the implicit "
-                       "stages carry) as a force: an implicit equilibrium handed to this stage "
-                       "then stays put to round-off, as with nitsche. Off by default: the term "
-                       "evaluates the stress at the boundary points, which invert in severe "
-                       "impacts (docs/boundary_conditions.md, \"Explicit stages\")."),
-               "false"),
-           optional_key("dt",
-                        real("Fixed time step instead of the stable estimate.", "time").above(0)),
-           optional_key(
-               "allow_unstable_dt",
-               boolean(
-                   "Run a fixed dt above the stable limit (detected and stopped if it blows up)."),
-               "false"),
-           optional_key(
-               "dt_update_interval",
-               integer("Longest interval, in steps, between re-estimates of the stable time step "
-                       "(the interval doubles from 1 while the estimate holds and "
-                       "halves when it falls by more than 5 %).")
-                   .at_least(1),
-               "100")});
 }
 
 SpecPtr rigid_wall_spec() {
