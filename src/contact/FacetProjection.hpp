@@ -13,6 +13,22 @@
 
 namespace efg::contact {
 
+/// The facet's normal scaled by its size: (dy, -dx) of a segment (its length), (b - a) x (c - a)
+/// of a triangle (twice its area). node: 2 or 3 positions, 3 components each.
+inline void facet_normal(const double (*node)[3], int dim, double* m) {
+  const double ab[3] = {node[1][0] - node[0][0], node[1][1] - node[0][1], node[1][2] - node[0][2]};
+  if (dim == 2) {
+    m[0] = ab[1];
+    m[1] = -ab[0];
+    m[2] = 0.0;
+    return;
+  }
+  const double ac[3] = {node[2][0] - node[0][0], node[2][1] - node[0][1], node[2][2] - node[0][2]};
+  m[0] = ab[1] * ac[2] - ab[2] * ac[1];
+  m[1] = ab[2] * ac[0] - ab[0] * ac[2];
+  m[2] = ab[0] * ac[1] - ab[1] * ac[0];
+}
+
 struct FacetPoint {
   bool over = false;  ///< the projection falls on the facet (within the tolerance)
   double gap = 0;     ///< signed distance along the outward normal
@@ -27,34 +43,27 @@ inline FacetPoint project_on_facet(const double* x, const double (*node)[3], int
   const double* a = node[0];
   const double ab[3] = {node[1][0] - a[0], node[1][1] - a[1], node[1][2] - a[2]};
   const double ax[3] = {x[0] - a[0], x[1] - a[1], x[2] - a[2]};
-  double w[3] = {0, 0, 0};
-  int count = 2;
+  double m[3], w[3] = {0, 0, 0};
+  facet_normal(node, dim, m);
+  const double size2 = m[0] * m[0] + m[1] * m[1] + m[2] * m[2];
+  if (!(size2 > 0)) return f;
+  const double size = std::sqrt(size2);
+  for (int k = 0; k < 3; ++k) f.normal[k] = m[k] / size;
+  const int count = dim == 2 ? 2 : 3;
   if (dim == 2) {
-    const double len2 = ab[0] * ab[0] + ab[1] * ab[1];
-    if (!(len2 > 0)) return f;
-    const double len = std::sqrt(len2);
-    f.normal[0] = ab[1] / len;
-    f.normal[1] = -ab[0] / len;
-    const double t = (ax[0] * ab[0] + ax[1] * ab[1]) / len2;
+    const double t = (ax[0] * ab[0] + ax[1] * ab[1]) / size2;  // |ab|^2 = |m|^2 for a segment
     w[0] = 1.0 - t;
     w[1] = t;
   } else {
-    count = 3;
-    const double ac[3] = {node[2][0] - a[0], node[2][1] - a[1], node[2][2] - a[2]};
-    const double m[3] = {ab[1] * ac[2] - ab[2] * ac[1], ab[2] * ac[0] - ab[0] * ac[2],
-                         ab[0] * ac[1] - ab[1] * ac[0]};
-    const double area2 = m[0] * m[0] + m[1] * m[1] + m[2] * m[2];
-    if (!(area2 > 0)) return f;
-    const double len = std::sqrt(area2);
-    for (int k = 0; k < 3; ++k) f.normal[k] = m[k] / len;
     // Barycentric coordinates of the projection: the sub-areas (x-a) x ac and ab x (x-a)
     // against m (the projection's normal part drops out of the dot products with m).
+    const double ac[3] = {node[2][0] - a[0], node[2][1] - a[1], node[2][2] - a[2]};
     const double u[3] = {ax[1] * ac[2] - ax[2] * ac[1], ax[2] * ac[0] - ax[0] * ac[2],
                          ax[0] * ac[1] - ax[1] * ac[0]};
     const double v[3] = {ab[1] * ax[2] - ab[2] * ax[1], ab[2] * ax[0] - ab[0] * ax[2],
                          ab[0] * ax[1] - ab[1] * ax[0]};
-    w[1] = (u[0] * m[0] + u[1] * m[1] + u[2] * m[2]) / area2;
-    w[2] = (v[0] * m[0] + v[1] * m[1] + v[2] * m[2]) / area2;
+    w[1] = (u[0] * m[0] + u[1] * m[1] + u[2] * m[2]) / size2;
+    w[2] = (v[0] * m[0] + v[1] * m[1] + v[2] * m[2]) / size2;
     w[0] = 1.0 - w[1] - w[2];
   }
   f.gap = ax[0] * f.normal[0] + ax[1] * f.normal[1] + ax[2] * f.normal[2];

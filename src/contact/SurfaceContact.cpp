@@ -106,7 +106,8 @@ SurfaceContact::SurfaceContact(const ModelOperators& ops, const Vector& mass_own
 void SurfaceContact::gather(Surface& surface, const Vector& d_overlap) const {
   const auto d = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
   const auto udim = static_cast<std::size_t>(dim_);
-  std::vector<double> mine(surface.x.size(), 0.0);
+  auto& mine = surface.mine;
+  mine.assign(surface.x.size(), 0.0);
   for (std::size_t r = 0; r < surface.rows.size(); ++r) {
     const auto x = surface.rows[r].position(d, udim);
     std::copy(x.begin(), x.end(),
@@ -119,20 +120,12 @@ void SurfaceContact::gather(Surface& surface, const Vector& d_overlap) const {
   const auto per = static_cast<std::size_t>(f.nodes_per_facet);
   std::fill(surface.normal.begin(), surface.normal.end(), 0.0);
   for (std::size_t k = 0; k < f.count(); ++k) {
-    const double* a = at3(surface.x, static_cast<std::size_t>(f.facet[k * per]));
-    const double* b = at3(surface.x, static_cast<std::size_t>(f.facet[k * per + 1]));
-    double n[3] = {b[1] - a[1], a[0] - b[0], 0.0};
-    if (per == 3) {
-      const double* c = at3(surface.x, static_cast<std::size_t>(f.facet[k * per + 2]));
-      const double ab[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
-      const double ac[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-      n[0] = ab[1] * ac[2] - ab[2] * ac[1];
-      n[1] = ab[2] * ac[0] - ab[0] * ac[2];
-      n[2] = ab[0] * ac[1] - ab[1] * ac[0];
-    }
-    for (std::size_t a2 = 0; a2 < per; ++a2)
+    double corner[3][3] = {}, n[3];
+    surface.corners(k, corner);
+    contact::facet_normal(corner, dim_, n);
+    for (std::size_t a = 0; a < per; ++a)
       for (std::size_t i = 0; i < 3; ++i)
-        surface.normal[3 * static_cast<std::size_t>(f.facet[k * per + a2]) + i] += n[i];
+        surface.normal[3 * static_cast<std::size_t>(f.facet[k * per + a]) + i] += n[i];
   }
   for (std::size_t node = 0; 3 * node < surface.normal.size(); ++node) {
     double* n = &surface.normal[3 * node];
@@ -172,10 +165,11 @@ void SurfaceContact::build_bins(Pair& pair) const {
   pair.bin_margin = 0.1 * smallest;
   for (std::size_t f = 0; f < s.count(); ++f) {
     double corner[3][3] = {};
-    for (std::size_t a = 0; a < per; ++a)
-      std::copy_n(at3(target.x, static_cast<std::size_t>(s.facet[f * per + a])), 3, corner[a]);
-    const double origin[3] = {corner[0][0], corner[0][1], corner[0][2]};
-    const auto facet = contact::project_on_facet(origin, corner, dim_, 0.0);
+    target.corners(f, corner);
+    double normal[3];
+    contact::facet_normal(corner, dim_, normal);
+    const double length =
+        std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
     const double capture = s.reference_size[f];
     for (std::size_t k = 0; k < d; ++k) {
       double lo = corner[0][k], hi = lo;
@@ -183,7 +177,9 @@ void SurfaceContact::build_bins(Pair& pair) const {
         lo = std::min(lo, corner[a][k]);
         hi = std::max(hi, corner[a][k]);
       }
-      const double grow = capture * (std::abs(facet.normal[k]) + kOverTolerance) + pair.bin_margin;
+      // (a degenerate facet, of no normal, grows by its capture depth every way)
+      const double along = length > 0 ? std::abs(normal[k]) / length : 1.0;
+      const double grow = capture * (along + kOverTolerance) + pair.bin_margin;
       pair.lower[f * d + k] = lo - grow;
       pair.upper[f * d + k] = hi + grow;
       edge = std::max(edge, hi - lo);
@@ -202,14 +198,12 @@ std::pair<int, contact::FacetPoint> SurfaceContact::choose_facet(const Pair& pai
   const auto& own = surfaces_[pair.own];
   const auto& target = surfaces_[pair.target];
   const auto& s = target.facets;
-  const auto per = static_cast<std::size_t>(s.nodes_per_facet);
   const auto node = static_cast<std::size_t>(own.row_node[c.row]);
   const double* x = at3(own.x, node);
   const double* n_own = at3(own.normal, node);
   auto project = [&](std::size_t facet) {
     double corner[3][3] = {};
-    for (std::size_t a = 0; a < per; ++a)
-      std::copy_n(at3(target.x, static_cast<std::size_t>(s.facet[facet * per + a])), 3, corner[a]);
+    target.corners(facet, corner);
     return contact::project_on_facet(x, corner, dim_, kOverTolerance);
   };
   auto pressing = [&](std::size_t facet, const contact::FacetPoint& p) {
@@ -301,7 +295,8 @@ void SurfaceContact::add_forces(const Vector& d_overlap, double dt, Vector& f_ov
       for (std::size_t i = 0; i < udim; ++i) local[3 * pair.contact + i] -= pair.sign * F[i];
     }
     // The reactions reach the surface particles' owners, which spread them through their rows.
-    std::vector<double> reaction(pair.reaction.size(), 0.0);
+    auto& reaction = pair.reaction_sum;
+    reaction.resize(pair.reaction.size());
     if (!reaction.empty())
       Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, static_cast<int>(reaction.size()),
                          pair.reaction.data(), reaction.data());

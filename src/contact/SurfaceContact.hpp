@@ -60,6 +60,15 @@ class SurfaceContact {
     std::vector<int> row_node;                         ///< their surface node indices
     std::vector<std::array<std::size_t, 2>> particle;  ///< their (part, owned particle)
     std::vector<double> x, x_old, normal;              ///< 3 per surface node
+    std::vector<double> mine;                          ///< this rank's positions before the gather
+
+    /// The current positions of facet f's nodes.
+    void corners(std::size_t f, double (&corner)[3][3]) const {
+      const auto per = static_cast<std::size_t>(facets.nodes_per_facet);
+      for (std::size_t a = 0; a < per; ++a)
+        for (std::size_t k = 0; k < 3; ++k)
+          corner[a][k] = x[3 * static_cast<std::size_t>(facets.facet[f * per + a]) + k];
+    }
   };
   struct Candidate {
     std::size_t row = 0;  ///< into own.rows
@@ -75,7 +84,7 @@ class SurfaceContact {
     contact::Friction friction;
     std::size_t own = 0, target = 0;  ///< surfaces_: the candidates' and the one they press into
     std::vector<Candidate> candidates;
-    std::vector<double> lower, upper, reaction;
+    std::vector<double> lower, upper, reaction, reaction_sum;
     contact::FacetBins bins;
     std::vector<double> x_binned;  ///< the target's positions at the last bin build
     double bin_margin = 0;

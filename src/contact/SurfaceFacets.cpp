@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 
+#include "contact/FacetProjection.hpp"
 #include "discretization/SmoothingFacets.hpp"
 
 namespace efg {
@@ -17,18 +18,6 @@ std::array<double, 3> node_x(const BackgroundMesh& mesh, LocalIndex n) {
         mesh.coordinates[static_cast<std::size_t>(n) * static_cast<std::size_t>(mesh.dimension) +
                          static_cast<std::size_t>(k)];
   return x;
-}
-
-// The facet normal's direction (unnormalized) as FacetProjection computes it.
-std::array<double, 3> facet_normal(const std::array<std::array<double, 3>, 3>& x, int dim) {
-  std::array<double, 3> ab{}, ac{};
-  for (std::size_t k = 0; k < 3; ++k) {
-    ab[k] = x[1][k] - x[0][k];
-    ac[k] = x[2][k] - x[0][k];
-  }
-  if (dim == 2) return {ab[1], -ab[0], 0.0};
-  return {ab[1] * ac[2] - ab[2] * ac[1], ab[2] * ac[0] - ab[0] * ac[2],
-          ab[0] * ac[1] - ab[1] * ac[0]};
 }
 
 }  // namespace
@@ -61,9 +50,13 @@ SurfaceFacets surface_facets(const Model& model, const std::vector<std::string>&
     else  // quadrilateral side: two triangles along the 0-2 diagonal
       pieces = {{nodes[0], nodes[1], nodes[2]}, {nodes[0], nodes[2], nodes[3]}};
     for (auto& piece : pieces) {
-      std::array<std::array<double, 3>, 3> x{};
-      for (std::size_t a = 0; a < piece.size(); ++a) x[a] = node_x(mesh, piece[a]);
-      const auto n = facet_normal(x, dim);
+      double x[3][3] = {};
+      for (std::size_t a = 0; a < piece.size(); ++a) {
+        const auto at = node_x(mesh, piece[a]);
+        std::copy(at.begin(), at.end(), x[a]);
+      }
+      double n[3];
+      contact::facet_normal(x, dim, n);
       double out = 0;
       for (std::size_t k = 0; k < 3; ++k) out += (x[0][k] - centroid[k]) * n[k];
       if (out < 0) std::swap(piece[0], piece[1]);

@@ -71,8 +71,7 @@ void StaticProblem::begin_stage(const std::vector<RigidBodyState>& bodies, doubl
   released_ = Teuchos::null;
   release_scale_ = 0;
   if (contact_) contact_->begin_stage(bodies, t0, stage);
-  if (contact_ && d_owned) {
-    contact_->set_time(t0);
+  if (contact_ && d_owned) {  // begin_stage left the bodies at their stage-start places
     to_overlap(*d_owned, d_overlap_);
     contact_->start_friction(d_overlap_);
   }

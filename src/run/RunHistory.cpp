@@ -111,12 +111,13 @@ std::vector<double> RunHistory::values(const ModelOperators& ops, const RunState
     out.push_back(w < state.wall_forces.size() ? state.wall_forces[w] : 0.0);
   // After the walls' normal forces: 3 components per contact between deformable parts.
   const auto walls = model_.scene.rigid_walls.size();
-  for (std::size_t c = 0; c < part_contacts(model_.scene).size(); ++c)
+  const auto between_parts = part_contacts(model_.scene).size();
+  for (std::size_t c = 0; c < between_parts; ++c)
     for (std::size_t d = 0; d < dim; ++d) {
       const auto at = walls + 3 * c + d;
       out.push_back(at < state.wall_forces.size() ? state.wall_forces[at] : 0.0);
     }
-  if (!model_.scene.rigid_bodies.empty() || !part_contacts(model_.scene).empty())
+  if (!model_.scene.rigid_bodies.empty() || between_parts > 0)
     for (std::size_t d = 0; d < dim; ++d) out.push_back(state.momentum[d]);
   for (std::size_t b = 0; b < model_.scene.rigid_bodies.size(); ++b) {
     const RigidBodyState none;

@@ -257,18 +257,19 @@ void read_contact_input(Scene& s) {
                "expected driver: explicit, or its stages: naming the explicit stages it acts in "
                "(" +
                path + ".stages)");
-    for (const auto& b : s.rigid_bodies)
-      if (b.name == c.rigid_body && b.motion == "prescribed" && !b.angular_velocity.empty())
+    for (const auto& b : s.rigid_bodies) {
+      if (b.name != c.rigid_body) continue;
+      if (b.motion == "prescribed" && !b.angular_velocity.empty())
         fail(s, stage_at, stage_key,
              "rigid body '" + b.name + "' of contact '" + c.name +
                  "' turns, which implicit stages do not model yet; expected driver: explicit, or "
                  "no angular_velocity");
-    for (const auto& b : s.rigid_bodies)
-      if (b.name == c.rigid_body && b.motion == "free")
+      if (b.motion == "free")
         fail(s, stage_at, stage_key,
              "rigid body '" + b.name + "' of contact '" + c.name +
                  "' is free, but implicit stages take fixed or prescribed bodies only; expected "
                  "driver: explicit, or motion: fixed or prescribed");
+    }
   }
 }
 

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include "contact/FacetBins.hpp"
@@ -26,6 +27,21 @@ TEST(FacetProjection, SegmentGapNormalAndWeights) {
   EXPECT_DOUBLE_EQ(p.normal[1], 1.0);
   EXPECT_DOUBLE_EQ(p.weight[0], 0.25);  // 0.5 from the second node: 1 - 1.5 / 2
   EXPECT_DOUBLE_EQ(p.weight[1], 0.75);
+}
+
+TEST(FacetProjection, ObliqueSegment) {
+  // Segment from (0, 0) to (1, 1): outward normal (dy, -dx) / L = (1, -1) / sqrt 2; the point
+  // (1, 0) lies 1 / sqrt 2 outside, over the segment's middle.
+  const double node[3][3] = {{0, 0, 0}, {1, 1, 0}, {0, 0, 0}};
+  const double x[3] = {1, 0, 0};
+  const auto p = project_on_facet(x, node, 2, 1e-6);
+  const double r = 1.0 / std::sqrt(2.0);
+  EXPECT_TRUE(p.over);
+  EXPECT_NEAR(p.gap, r, 1e-15);
+  EXPECT_NEAR(p.normal[0], r, 1e-15);
+  EXPECT_NEAR(p.normal[1], -r, 1e-15);
+  EXPECT_NEAR(p.weight[0], 0.5, 1e-15);
+  EXPECT_NEAR(p.weight[1], 0.5, 1e-15);
 }
 
 TEST(FacetProjection, BeyondTheEndIsNotOverAndWeightsStayOnTheFacet) {
