@@ -142,18 +142,7 @@ void ExplicitDriver::report_non_finite(const RunState& state, long long step) co
 }
 
 void ExplicitDriver::refuse_endless(double span, double dt, double dt_crit) const {
-  // A stage that needs more steps than any machine can take (end_time: 1e300, dt: 1e-300) is
-  // refused before it starts instead of running forever; a long one is announced.
-  const double steps = span / dt;
-  std::ostringstream o;
-  o << "stage '" << stage_.name << "' needs about " << steps
-    << " time steps (end_time - start = " << span << ", dt = " << dt << ", stable time step "
-    << dt_crit << ")";
-  if (!(steps <= kMaxSteps))
-    throw InputError(ops_.model().scene.file + ": stages: " + o.str() + "; at most " +
-                     std::to_string(static_cast<long long>(kMaxSteps)) +
-                     " are allowed: shorten the stage or raise dt");
-  if (steps > 1e7) Log::warning(o.str() + "; this will take long");
+  refuse_endless_stage(ops_.model().scene.file, stage_.name, span, dt, dt_crit);
 }
 
 void ExplicitDriver::account_energy(RunState& state, const Vector& delta_d) const {

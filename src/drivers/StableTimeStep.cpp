@@ -7,9 +7,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
+#include <string>
 #include <utility>
 
 #include "core/Errors.hpp"
+#include "core/Log.hpp"
 #include "parallel/ReproducibleSum.hpp"
 
 namespace efg {
@@ -20,9 +23,10 @@ using MultiVector = Tpetra::MultiVector<>;
 // A = M^-1/2 K(d) M^-1/2 as a Tpetra operator, K applied by differences of the internal force.
 class ScaledTangent : public Tpetra::Operator<> {
  public:
-  ScaledTangent(const ModelOperators& ops, const StableTimeStep::ExtraStiffness& extra,
-                const Vector& inv_sqrt_mass, const Vector& d)
-      : ops_(ops),
+  ScaledTangent(const StableTimeStep::InternalForce& internal_force,
+                const StableTimeStep::ExtraStiffness& extra, const Vector& inv_sqrt_mass,
+                const Vector& d)
+      : internal_force_(internal_force),
         extra_(extra),
         s_(inv_sqrt_mass),
         d_(d),
@@ -30,7 +34,7 @@ class ScaledTangent : public Tpetra::Operator<> {
         x_(d.getMap()),
         probe_(d.getMap()),
         f_(d.getMap()) {
-    ops_.internal_force(d_, f0_);
+    internal_force_(d_, f0_);
     d_size_ = std::max(1.0, d_.normInf());
   }
   Teuchos::RCP<const Map> getDomainMap() const override { return d_.getMap(); }
@@ -54,7 +58,7 @@ class ScaledTangent : public Tpetra::Operator<> {
       const double e = 1e-7 * d_size_ / x_size;
       Tpetra::deep_copy(probe, d_);
       probe.update(e, x, 1.0);
-      ops_.internal_force(probe, f);
+      internal_force_(probe, f);
       f.update(-1.0 / e, f0_, 1.0 / e);
       if (extra_) extra_(d_, x, f);
       y->elementWiseMultiply(alpha, s_, f, beta);
@@ -62,7 +66,7 @@ class ScaledTangent : public Tpetra::Operator<> {
   }
 
  private:
-  const ModelOperators& ops_;
+  const StableTimeStep::InternalForce& internal_force_;
   const StableTimeStep::ExtraStiffness& extra_;
   const Vector& s_;
   const Vector& d_;
@@ -75,11 +79,19 @@ class ScaledTangent : public Tpetra::Operator<> {
 
 StableTimeStep::StableTimeStep(const ModelOperators& ops, const Vector& mass_owned,
                                double wall_penalty, ExtraStiffness extra)
-    : ops_(ops),
+    : StableTimeStep([&ops](const Vector& d, Vector& f) { ops.internal_force(d, f); },
+                     mass_owned) {
+  // Plastic points probed elastically (MaterialStates::elastic_probe), for the estimates only.
+  elastic_probe_ = [&ops](bool on) { ops.solid().history().set_elastic_probe(on); };
+  wall_penalty_ = wall_penalty;
+  extra_ = std::move(extra);
+}
+
+StableTimeStep::StableTimeStep(InternalForce internal_force, const Vector& mass_owned)
+    : internal_force_(std::move(internal_force)),
       inv_sqrt_mass_(mass_owned.getMap()),
       start_(mass_owned.getMap()),
-      wall_penalty_(wall_penalty),
-      extra_(std::move(extra)) {
+      wall_penalty_(0.0) {
   auto s = inv_sqrt_mass_.getLocalViewHost(Tpetra::Access::OverwriteAll);
   const auto m = mass_owned.getLocalViewHost(Tpetra::Access::ReadOnly);
   for (std::size_t k = 0; k < s.extent(0); ++k) s(k, 0) = 1.0 / std::sqrt(m(k, 0));
@@ -93,13 +105,16 @@ StableTimeStep::StableTimeStep(const ModelOperators& ops, const Vector& mass_own
 
 double StableTimeStep::estimate(const Vector& d_owned) {
   Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewCounter("efg: stable time step"));
-  // Plastic points probed elastically (MaterialStates::elastic_probe), for this estimate only.
   struct ElasticProbe {
-    MaterialStates& states;
-    explicit ElasticProbe(MaterialStates& s) : states(s) { states.set_elastic_probe(true); }
-    ~ElasticProbe() { states.set_elastic_probe(false); }
-  } probe(ops_.solid().history());
-  auto A = Teuchos::rcp(new ScaledTangent(ops_, extra_, inv_sqrt_mass_, d_owned));
+    const std::function<void(bool)>& set;
+    explicit ElasticProbe(const std::function<void(bool)>& s) : set(s) {
+      if (set) set(true);
+    }
+    ~ElasticProbe() {
+      if (set) set(false);
+    }
+  } probe(elastic_probe_);
+  auto A = Teuchos::rcp(new ScaledTangent(internal_force_, extra_, inv_sqrt_mass_, d_owned));
   auto x0 = Teuchos::rcp(new MultiVector(start_, Teuchos::Copy));
   auto problem =
       Teuchos::rcp(new Anasazi::BasicEigenproblem<double, MultiVector, Tpetra::Operator<>>(
@@ -153,6 +168,22 @@ double StableTimeStep::estimate(const Vector& d_owned) {
   const double dt = 2.0 / omega_ * std::sqrt(std::max(0.0, 1.0 - wall_penalty_ / 4.0));
   const double unit = std::pow(10.0, std::floor(std::log10(dt)) - 7);
   return std::floor(dt / unit) * unit;
+}
+
+void refuse_endless_stage(const std::string& file, const std::string& stage, double span,
+                          double dt, double dt_crit) {
+  // A stage that needs more steps than any machine can take (end_time: 1e300, dt: 1e-300) is
+  // refused before it starts instead of running forever; a long one is announced.
+  constexpr double most_steps = 1e10;
+  const double steps = span / dt;
+  std::ostringstream o;
+  o << "stage '" << stage << "' needs about " << steps << " time steps (end_time - start = " << span
+    << ", dt = " << dt << ", stable time step " << dt_crit << ")";
+  if (!(steps <= most_steps))
+    throw InputError(file + ": stages: " + o.str() + "; at most " +
+                     std::to_string(static_cast<long long>(most_steps)) +
+                     " are allowed: shorten the stage or raise dt");
+  if (steps > 1e7) Log::warning(o.str() + "; this will take long");
 }
 
 }  // namespace efg

@@ -20,6 +20,7 @@
 #pragma once
 
 #include <functional>
+#include <string>
 
 #include "operators/ModelOperators.hpp"
 
@@ -33,6 +34,9 @@ class StableTimeStep {
   using ExtraStiffness = std::function<void(const Vector& d, const Vector& x, Vector& y)>;
   StableTimeStep(const ModelOperators& ops, const Vector& mass_owned, double wall_penalty = 0.0,
                  ExtraStiffness extra = {});
+  /// Any internal force f(d) (owned dofs; e.g. the shells'), its stiffness probed the same way.
+  using InternalForce = std::function<void(const Vector& d, Vector& f)>;
+  StableTimeStep(InternalForce internal_force, const Vector& mass_owned);
 
   /// dt_crit at displacement d.
   double estimate(const Vector& d_owned);
@@ -42,11 +46,17 @@ class StableTimeStep {
   double residual_norm() const { return residual_; }
 
  private:
-  const ModelOperators& ops_;
+  InternalForce internal_force_;
+  std::function<void(bool)> elastic_probe_;  ///< plastic points probed elastically while on
   Vector inv_sqrt_mass_, start_;
   double wall_penalty_;
   ExtraStiffness extra_;
   double omega_ = 0, ritz_ = 0, residual_ = 0;
 };
+
+/// Throws InputError (naming the scene file) when a stage of length `span` needs more than 1e10
+/// steps of dt; warns above 1e7.
+void refuse_endless_stage(const std::string& file, const std::string& stage, double span,
+                          double dt, double dt_crit);
 
 }  // namespace efg

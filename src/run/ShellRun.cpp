@@ -18,6 +18,8 @@
 #include "mesh/NodalVolume.hpp"
 #include "model/Curves.hpp"
 #include "model/PointOwner.hpp"
+#include "run/ShellExplicitStage.hpp"
+#include "run/ShellStageInputs.hpp"
 #include "shells/ShellConstraints.hpp"
 #include "solvers/MatrixPreconditioner.hpp"
 
@@ -28,47 +30,6 @@ constexpr int nd = shell_dofs_per_node;
 // Probe columns: the five physical values and the bending moments at the point.
 constexpr int probe_columns = nd + 3;
 const char* const probe_names[probe_columns] = {"ux", "uy", "uz", "rx", "ry", "mxx", "myy", "mxy"};
-
-// The conditions active in `stage`, their values at the stage's end.
-std::vector<ShellSupport> supports_at(const Scene& scene, const std::string& stage, double time) {
-  const auto factor = curve_factor(scene, time, 1.0, stage);
-  std::vector<ShellSupport> out;
-  for (const auto& bc : scene.boundary_conditions) {
-    if (!bc.stages.includes(stage)) continue;
-    ShellSupport s;
-    s.node_set = bc.node_set;
-    const double scale = factor(bc.curve);
-    for (std::size_t c = 0; c < nd; ++c) {
-      const auto& field = c < 3 ? bc.components[c] : bc.rotations[c - 3];
-      if (field)
-        s.value[c] = [f = *field, scale, time](const double* x) {
-          const double p[3] = {x[0], x[1], 0.0};
-          return scale * f.at(p, time);
-        };
-    }
-    out.push_back(s);
-  }
-  return out;
-}
-
-// The shell_pressure loads active in `stage`, summed, at the stage's end.
-FlatShellOperator::Pressure pressure_at(const Model& model, const std::string& stage, double time) {
-  const auto& scene = model.scene;
-  const auto factor = curve_factor(scene, time, 1.0, stage);
-  std::vector<std::pair<const LoadSpec*, double>> loads;
-  for (const auto& l : scene.loads)
-    if (l.type == "shell_pressure" && l.stages.includes(stage))
-      loads.emplace_back(&l, factor(l.curve));
-  return [&model, loads, time](std::size_t part, const double* x) {
-    double q = 0;
-    for (const auto& [l, scale] : loads) {
-      bool applies = l->parts.empty();
-      for (const auto& name : l->parts) applies = applies || name == model.parts[part].part->name;
-      if (applies) q += scale * l->value.front().at(x, time);
-    }
-    return q;
-  };
-}
 
 // Probe columns at each probe point (collective): u^h of the five fields and M = D kappa with
 // the curvature from the direct gradients of the rotations there.
@@ -115,6 +76,8 @@ struct StageResult {
   std::string name;
   double time = 0, seconds = 0, strain_energy = 0, largest_deflection = 0;
   long long dofs = 0;
+  long long steps = 0;  ///< explicit stages: time steps, their dt and energy balance error
+  double dt = 0, energy_error = 0;
 };
 
 }  // namespace
@@ -122,7 +85,7 @@ struct StageResult {
 void check_shell_setup(const Model& model) {
   const FlatShellOperator op(model);
   for (const auto& stage : model.scene.stages)
-    ShellConstraints(model, op, supports_at(model.scene, stage.name, stage.end_time));
+    ShellConstraints(model, op, shell_supports_at(model.scene, stage.name, stage.end_time));
 }
 
 RunOutcome run_shell_stages(const CommPtr& comm, const Model& model, const std::string& path,
@@ -152,7 +115,8 @@ RunOutcome run_shell_stages(const CommPtr& comm, const Model& model, const std::
     for (const char* n : resultant_names) layout.nodal.push_back(n);
   if (with_volume) layout.nodal.push_back("nodal_volume");
   if (with_rank) layout.nodal.push_back("owner_rank");
-  layout.global.push_back("strain_energy");
+  for (const char* g : {"strain_energy", "kinetic_energy", "external_work"})
+    layout.global.push_back(g);
   for (const auto& probe : scene.probes)
     for (const char* n : probe_names) layout.global.push_back("probe_" + probe.name + "_" + n);
   ResultsOutput output(comm, path, model.mesh, model.maps.owned_nodes, layout,
@@ -166,35 +130,36 @@ RunOutcome run_shell_stages(const CommPtr& comm, const Model& model, const std::
     return node_thickness[static_cast<std::size_t>(n)];
   };
   std::vector<std::vector<double>> history;
-  FlatShellOperator::Vector d(op.maps().owned_dofs);
+  FlatShellOperator::Vector d(op.maps().owned_dofs), v(op.maps().owned_dofs);
   RunOutcome outcome;
-  auto record = [&](double time) {
+  // kinetic energy and the external work of the explicit stage so far (0 in static stages)
+  auto record = [&](double time, double kinetic, double external_work) {
     const auto values = op.physical_values(d);
     const auto resultants =
         with_stress || with_resultants ? op.resultants(d) : std::vector<double>{};
     const auto& owned = model.partition.owned;
     Tpetra::MultiVector<> nodal(model.maps.owned_nodes, layout.nodal.size());
     {
-      auto v = nodal.getLocalViewHost(Tpetra::Access::OverwriteAll);
+      auto out = nodal.getLocalViewHost(Tpetra::Access::OverwriteAll);
       for (std::size_t i = 0; i < owned.size(); ++i) {
-        for (std::size_t c = 0; c < nd; ++c) v(i, c) = values[i * nd + c];
+        for (std::size_t c = 0; c < nd; ++c) out(i, c) = values[i * nd + c];
         std::size_t column = nd;
         const double* r = resultants.empty() ? nullptr : &resultants[i * shell_strains];
         if (with_stress) {  // sigma = N / t +- 6 M / t^2 at z = +- t / 2
           const double t = thickness_of_node(owned[i]);
           for (double side : {1.0, -1.0})
             for (std::size_t c = 0; c < 3; ++c)
-              v(i, column++) = r[c] / t + side * 6 * r[3 + c] / (t * t);
+              out(i, column++) = r[c] / t + side * 6 * r[3 + c] / (t * t);
         }
         if (with_resultants)
-          for (std::size_t c = 0; c < shell_strains; ++c) v(i, column++) = r[c];
-        if (with_volume) v(i, column++) = volume[static_cast<std::size_t>(owned[i])];
-        if (with_rank) v(i, column++) = model.partition.rank;
+          for (std::size_t c = 0; c < shell_strains; ++c) out(i, column++) = r[c];
+        if (with_volume) out(i, column++) = volume[static_cast<std::size_t>(owned[i])];
+        if (with_rank) out(i, column++) = model.partition.rank;
       }
     }
     double energy = 0, local = op.strain_energy(d);
     Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, 1, &local, &energy);
-    std::vector<double> global = {energy};
+    std::vector<double> global = {energy, kinetic, external_work};
     for (double p : probe_values(model, d, op)) global.push_back(p);
     output.write(time, nodal, global);
     history.push_back(global);
@@ -203,17 +168,29 @@ RunOutcome run_shell_stages(const CommPtr& comm, const Model& model, const std::
   };
   std::vector<StageResult> results;
   try {
-    record(0.0);
+    record(0.0, 0.0, 0.0);
+    double start = 0.0;
     for (const auto& stage : scene.stages) {
       const auto begun = std::chrono::steady_clock::now();
       StageResult r;
       r.name = stage.name;
       r.time = stage.end_time;
       r.dofs = static_cast<long long>(op.maps().owned_dofs->getGlobalNumElements());
-      const ShellConstraints constraints(model, op, supports_at(scene, stage.name, r.time));
+      if (stage.driver == "explicit") {
+        const auto summary = run_shell_explicit_stage(model, op, stage, start, d, v, record);
+        r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begun).count();
+        r.strain_energy = history.back()[1];
+        r.steps = summary.steps;
+        r.dt = summary.dt;
+        r.energy_error = summary.energy_error;
+        results.push_back(r);
+        start = stage.end_time;
+        continue;
+      }
+      const ShellConstraints constraints(model, op, shell_supports_at(scene, stage.name, r.time));
       const auto K = op.stiffness(constraints);
       FlatShellOperator::Vector f(op.maps().owned_dofs);
-      op.add_pressure(pressure_at(model, stage.name, r.time), f);
+      op.add_pressure(shell_pressure_at(model, stage.name, r.time), f);
       constraints.set_values(f);
       const auto lu = make_direct_preconditioner(Teuchos::ParameterList());
       lu->set_map(op.maps().owned_dofs);
@@ -228,8 +205,10 @@ RunOutcome run_shell_stages(const CommPtr& comm, const Model& model, const std::
       }
       Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, 1, &w, &r.largest_deflection);
       r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begun).count();
-      record(r.time);
+      v.putScalar(0.0);  // a static solution, at rest
+      record(r.time, 0.0, 0.0);
       r.strain_energy = history.back()[1];
+      start = stage.end_time;
       std::ostringstream o;
       o << "stage '" << stage.name << "' (shells, linear static): " << r.dofs
         << " dofs, direct (MUMPS LU), strain energy " << r.strain_energy << ", largest |w| "
@@ -269,12 +248,17 @@ RunOutcome run_shell_stages(const CommPtr& comm, const Model& model, const std::
            << setup_seconds +
                   std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count()
            << ",\n  \"shell_stages\": [";
-    for (std::size_t s = 0; s < results.size(); ++s)
+    for (std::size_t s = 0; s < results.size(); ++s) {
       report << (s ? "," : "") << "\n    {\"name\": \"" << results[s].name
              << "\", \"time\": " << results[s].time << ", \"dofs\": " << results[s].dofs
              << ", \"seconds\": " << results[s].seconds
              << ", \"strain_energy\": " << results[s].strain_energy
-             << ", \"largest_deflection\": " << results[s].largest_deflection << "}";
+             << ", \"largest_deflection\": " << results[s].largest_deflection;
+      if (results[s].steps > 0)
+        report << ", \"steps\": " << results[s].steps << ", \"dt\": " << results[s].dt
+               << ", \"energy_balance_error\": " << results[s].energy_error;
+      report << "}";
+    }
     report << "\n  ],\n  \"probes\": {";
     for (std::size_t k = 1; k < names.size(); ++k)
       report << (k > 1 ? "," : "") << "\n    \"" << names[k] << "\": " << history.back()[k + 1];

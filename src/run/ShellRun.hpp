@@ -1,6 +1,7 @@
 // The run of a scene whose parts are shells (src/shells): each implicit stage is one linear
 // static solve at its end time (loads and prescribed values at that time, a load without a
-// curve at full value), the results written to Exodus (displacement x, y, z and rotation x, y
+// curve at full value), each explicit stage a run of central differences from the state the
+// previous stage left (run/ShellExplicitStage), the results written to Exodus (displacement x, y, z and rotation x, y
 // of every particle: the physical values u^h(X_J), not the generalized dofs) and the probes'
 // values to the log, the history CSV and the run report.
 #pragma once

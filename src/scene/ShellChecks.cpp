@@ -69,11 +69,19 @@ void check_shell_scene(const Scene& s, const BackgroundMesh& mesh) {
       fail(s, pd["formulation"], path + ".formulation",
            "a shell has no mixed_up formulation: expected displacement");
   }
-  for (std::size_t i = 0; i < s.stages.size(); ++i)
-    if (s.stages[i].driver != "implicit")
-      fail(s, d["stages"][i]["driver"], "stages[" + std::to_string(i) + "].driver",
-           "shell parts run implicit (static, linear) stages in this version; explicit shells "
-           "are not built yet");
+  for (std::size_t i = 0; i < s.stages.size(); ++i) {
+    const auto& stage = s.stages[i];
+    if (stage.driver != "explicit") continue;
+    for (std::size_t p = 0; p < s.parts.size(); ++p)
+      if (!s.find_material(s.parts[p].material)->density)
+        fail(s, d["parts"][p]["material"], "parts[" + std::to_string(p) + "].material",
+             "stage '" + stage.name + "' is explicit: the shell's material needs a density");
+    if (stage.settings["transformation_traction"].as<bool>())
+      fail(s, d["stages"][i]["transformation_traction"],
+           "stages[" + std::to_string(i) + "].transformation_traction",
+           "explicit shell stages hold their supports by Lagrange multipliers, which carry the "
+           "reaction themselves (docs/shells.md): expected false");
+  }
   for (std::size_t i = 0; i < s.boundary_conditions.size(); ++i) {
     const auto& bc = s.boundary_conditions[i];
     const auto path = "boundary_conditions[" + std::to_string(i) + "]";

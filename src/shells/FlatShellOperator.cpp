@@ -11,6 +11,7 @@
 #include "discretization/ShapeFunctions.hpp"
 #include "operators/CouplingGraph.hpp"
 #include "shells/ShellConstraints.hpp"
+#include "shells/ShellMass.hpp"
 #include "shells/ShellSpacing.hpp"
 
 namespace efg {
@@ -242,6 +243,75 @@ double FlatShellOperator::strain_energy(const Vector& d_owned) const {
       energy += 0.5 * p.weight * work;
     }
   return energy;
+}
+
+void FlatShellOperator::internal_force(const Vector& d_owned, Vector& f_owned) const {
+  const auto d_overlap = to_overlap(d_owned);
+  Vector f_overlap(maps_.overlap_dofs);
+  {
+    const auto d = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
+    auto f = f_overlap.getLocalViewHost(Tpetra::Access::ReadWrite);
+    for (std::size_t part = 0; part < points_.size(); ++part)
+      for (const auto& p : points_[part]) {
+        double e[shell_strains], R[shell_strains];
+        point_resultants(part, p, d, e, R);
+        for (std::size_t a = 0; a < p.node.size(); ++a) {
+          double B[shell_strains][nd];
+          plate_strain_rows({p.b[2 * a], p.b[2 * a + 1]}, {p.g[2 * a], p.g[2 * a + 1]}, p.phi[a],
+                            B);
+          for (std::size_t c = 0; c < nd; ++c) {
+            double v = 0;
+            for (std::size_t i = 0; i < shell_strains; ++i) v += B[i][c] * R[i];
+            f(static_cast<std::size_t>(p.node[a]) * nd + c, 0) += p.weight * v;
+          }
+        }
+      }
+  }
+  f_owned.putScalar(0.0);
+  Tpetra::Export<> exporter(maps_.overlap_dofs, maps_.owned_dofs);
+  f_owned.doExport(f_overlap, exporter, Tpetra::ADD);
+}
+
+FlatShellOperator::Vector FlatShellOperator::lumped_mass() const {
+  // Row sums m_I = sum_L rho t a_L phi_I(X_L) (the shape functions sum to one, so the total mass
+  // is exact), gathered on the overlap nodes and summed into their owners; the spacing h_I of
+  // the particle's own point (SCNI and nodal points are the owned particles) scales the rotary
+  // inertia.
+  Vector m_overlap(maps_.overlap_dofs);
+  std::vector<double> spacing(maps_.owned_nodes->getNodeNumElements(), 0.0),
+      thickness(spacing.size(), 0.0);
+  {
+    auto m = m_overlap.getLocalViewHost(Tpetra::Access::ReadWrite);
+    for (std::size_t part = 0; part < points_.size(); ++part) {
+      const auto& d = model_.parts[part];
+      const auto& material = *model_.scene.find_material(d.part->material);
+      if (!material.density)
+        throw InputError(model_.scene.file + ": material '" + material.name +
+                         "' needs a density for an explicit stage (part '" + d.part->name + "')");
+      const double areal = *material.density * thickness_[part];
+      for (const auto& p : points_[part]) {
+        spacing[static_cast<std::size_t>(p.owned_row)] = p.spacing;
+        thickness[static_cast<std::size_t>(p.owned_row)] = thickness_[part];
+        for (std::size_t a = 0; a < p.node.size(); ++a)
+          m(static_cast<std::size_t>(p.node[a]) * nd, 0) += areal * p.weight * p.phi[a];
+      }
+    }
+  }
+  Vector m_owned(maps_.owned_dofs);
+  Tpetra::Export<> exporter(maps_.overlap_dofs, maps_.owned_dofs);
+  m_owned.doExport(m_overlap, exporter, Tpetra::ADD);
+  auto m = m_owned.getLocalViewHost(Tpetra::Access::ReadWrite);
+  for (std::size_t i = 0; i < spacing.size(); ++i) {
+    const double mass = m(i * nd, 0);
+    if (!(mass > 0))
+      throw NumericalError(
+          "shell lumped mass: particle " +
+          std::to_string(maps_.owned_nodes->getGlobalElement(static_cast<int>(i)) + 1) +
+          " has mass " + std::to_string(mass) + " (<= 0)");
+    const double rotary = mass * shell_rotary_inertia_factor(thickness[i], spacing[i]);
+    for (std::size_t c = 0; c < nd; ++c) m(i * nd + c, 0) = c < shell_rx ? mass : rotary;
+  }
+  return m_owned;
 }
 
 }  // namespace efg

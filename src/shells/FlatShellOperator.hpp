@@ -64,6 +64,15 @@ class FlatShellOperator {
   /// Strain energy 1/2 d^T K d of this rank's points (without constraints).
   double strain_energy(const Vector& d_owned) const;
 
+  /// f = K d without the constraints, assembled point by point (sum_L a_L B(L)^T S B(L) d), no
+  /// matrix: the internal force of explicit stages (owned dofs, overwritten).
+  void internal_force(const Vector& d_owned, Vector& f_owned) const;
+  /// The lumped mass of every owned dof (shells/ShellMass.hpp): translations the row sums
+  /// rho t sum_L a_L phi_I(X_L) of the consistent mass, rotations that mass times
+  /// max(t^2, h^2) / 12 (rotary inertia scaled up to the particle spacing h). Throws InputError
+  /// when a part's material has no density, NumericalError for a mass <= 0.
+  Vector lumped_mass() const;
+
  private:
   /// One integration point: its weight and, per particle reaching it, the particle's overlap
   /// node index, smoothed gradient b, direct gradient g and value phi.

@@ -147,4 +147,27 @@ void ShellConstraints::set_values(FlatShellOperator::Vector& rhs_owned) const {
     rhs(static_cast<std::size_t>(r.node * nd + r.component), 0) = r.scale * r.value;
 }
 
+Teuchos::RCP<Tpetra::CrsMatrix<>> ShellConstraints::collocation_matrix(
+    std::vector<double>& values) const {
+  const auto& dofs = op_.maps().owned_dofs;
+  const auto rows = Teuchos::rcp(new Tpetra::Map<>(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(),
+                                                   rows_.size(), 0, dofs->getComm()));
+  std::size_t widest = 1;
+  for (const auto& r : rows_) widest = std::max(widest, r.columns.size());
+  auto C = Teuchos::rcp(new Tpetra::CrsMatrix<>(rows, widest));
+  const auto& overlap_dofs = *op_.maps().overlap_dofs;
+  values.clear();
+  std::vector<GlobalOrdinal> cols;
+  for (std::size_t k = 0; k < rows_.size(); ++k) {
+    const auto& r = rows_[k];
+    cols.clear();
+    for (auto c : r.columns) cols.push_back(overlap_dofs.getGlobalElement(c * nd + r.component));
+    C->insertGlobalValues(rows->getGlobalElement(static_cast<int>(k)),
+                          static_cast<int>(cols.size()), r.phi.data(), cols.data());
+    values.push_back(r.value);
+  }
+  C->fillComplete(dofs, rows);
+  return C;
+}
+
 }  // namespace efg

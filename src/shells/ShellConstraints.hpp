@@ -55,6 +55,11 @@ class ShellConstraints {
   /// rhs(J, c) = s_c g_c(X_J) on this rank's constrained dofs (other entries untouched).
   void set_values(FlatShellOperator::Vector& rhs_owned) const;
 
+  /// The collocation rows unscaled, C d = g with C_(J,c),(I,c) = phi_I(X_J): a row map of this
+  /// rank's constrained dofs (in order), the owned dofs as domain, fill complete; `values` gets
+  /// g_c(X_J) in the rows' order (explicit stages: shells/ShellMultipliers).
+  Teuchos::RCP<Tpetra::CrsMatrix<>> collocation_matrix(std::vector<double>& values) const;
+
  private:
   struct Row {
     int node = 0, component = 0;  ///< owned (= overlap) node index of J, component c

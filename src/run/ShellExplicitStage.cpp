@@ -1,0 +1,174 @@
+#include "run/ShellExplicitStage.hpp"
+
+#include <Teuchos_CommHelpers.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "core/Errors.hpp"
+#include "core/Log.hpp"
+#include "drivers/StableTimeStep.hpp"
+#include "parallel/ReproducibleSum.hpp"
+#include "run/ShellStageInputs.hpp"
+#include "shells/ShellConstraints.hpp"
+#include "shells/ShellMultipliers.hpp"
+
+namespace efg {
+namespace {
+
+using Vector = FlatShellOperator::Vector;
+constexpr int nd = shell_dofs_per_node;
+
+// The first owned dof whose value is not finite, as "particle N (dof c)", or "" (collective).
+std::string first_non_finite(const Vector& d) {
+  const auto v = d.getLocalViewHost(Tpetra::Access::ReadOnly);
+  long long mine = -1, worst = -1;
+  for (std::size_t k = 0; k < v.extent(0) && mine < 0; ++k)
+    if (!std::isfinite(v(k, 0)))
+      mine = static_cast<long long>(d.getMap()->getGlobalElement(static_cast<int>(k)));
+  Teuchos::reduceAll(*d.getMap()->getComm(), Teuchos::REDUCE_MAX, 1, &mine, &worst);
+  if (worst < 0) return "";
+  const char* const dof[nd] = {"u", "v", "w", "theta_x", "theta_y"};
+  return "particle " + std::to_string(worst / nd + 1) + " (" + dof[worst % nd] + ")";
+}
+
+}  // namespace
+
+ShellExplicitSummary run_shell_explicit_stage(const Model& model, const FlatShellOperator& op,
+                                              const StageSpec& stage, double start, Vector& d,
+                                              Vector& v, const ShellRecord& record) {
+  const auto& scene = model.scene;
+  const auto& settings = stage.settings;
+  Vector mass = op.lumped_mass();
+  mass.scale(settings["mass_scale"].as<double>());
+  Vector inv_mass(mass.getMap());
+  inv_mass.reciprocal(mass);
+
+  const ShellConstraints constraints(model, op, shell_supports_at(scene, stage.name, stage.end_time));
+  const ShellMultipliers multipliers(constraints, mass);
+  {
+    std::vector<double> values;
+    constraints.collocation_matrix(values);
+    double largest = 0, all = 0;
+    for (double g : values) largest = std::max(largest, std::abs(g));
+    Teuchos::reduceAll(*mass.getMap()->getComm(), Teuchos::REDUCE_MAX, 1, &largest, &all);
+    if (all > 0)
+      throw InputError(scene.file + ": stage '" + stage.name +
+                       "': explicit shell stages hold their supports at zero in this version "
+                       "(a prescribed value or motion of a shell is not built yet)");
+  }
+
+  const auto internal_force = [&op](const Vector& x, Vector& f) { op.internal_force(x, f); };
+  StableTimeStep stable(internal_force, mass);
+  ShellExplicitSummary summary;
+  summary.dt_crit = stable.estimate(d);
+  summary.largest_frequency = stable.largest_frequency();
+  const bool fixed = static_cast<bool>(settings["dt"]);
+  const double dt = fixed ? settings["dt"].as<double>()
+                          : settings["dt_scale"].as<double>() * summary.dt_crit;
+  if (fixed && dt > summary.dt_crit && !settings["allow_unstable_dt"].as<bool>())
+    throw NumericalError("stage '" + stage.name + "': dt = " + std::to_string(dt) +
+                         " exceeds the stable time step " + std::to_string(summary.dt_crit) +
+                         " at step 0, t = " + std::to_string(start) +
+                         "; lower dt, or set allow_unstable_dt: true to run it anyway");
+  refuse_endless_stage(scene.file, stage.name, stage.end_time - start, dt, summary.dt_crit);
+  summary.dt = dt;
+  {
+    std::ostringstream o;
+    o << "stage '" << stage.name << "' (shells, explicit): stable time step " << summary.dt_crit
+      << " (largest frequency " << summary.largest_frequency << " rad/time, rotary inertia "
+      << "scaled to the particle spacing), dt = " << dt << ", " << multipliers.count()
+      << " held dofs (Lagrange multipliers)";
+    Log::info(o.str());
+  }
+
+  const auto map = mass.getMap();
+  Vector f_ext(map), f_ext_old(map), f_int(map), a(map), v_next(map), d_old(map), step(map);
+  const auto external_force = [&](double t, Vector& f) {
+    f.putScalar(0.0);
+    op.add_pressure(shell_pressure_at(model, stage.name, t), f);
+  };
+  const auto accelerate = [&](const Vector& f, Vector& acc) {
+    op.internal_force(d, f_int);
+    acc.update(1.0, f, -1.0, f_int, 0.0);
+    acc.elementWiseMultiply(1.0, inv_mass, acc, 0.0);
+  };
+  // E = 1/2 v . M v of the velocity at an integer step.
+  const auto kinetic = [&](const Vector& vel) {
+    Vector mv(map);
+    mv.elementWiseMultiply(1.0, mass, vel, 0.0);
+    return 0.5 * reproducible_dot(mv, vel);
+  };
+  // v_(n+1/2) from v_(n-1/2) and a_n over the mean of the two steps, then the constraints: the
+  // predicted d + dt v projected by the multipliers gives the velocity that keeps them.
+  const auto next_velocity = [&](double dt_mean, double dt_next) {
+    v_next.update(1.0, v, dt_mean, a, 0.0);
+    Tpetra::deep_copy(step, d);
+    step.update(dt_next, v_next, 1.0);
+    multipliers.correct(step, dt_next);
+    v_next.update(1.0 / dt_next, step, -1.0 / dt_next, d, 0.0);
+  };
+
+  double t = start, dt_prev = 0.0, external_work = 0.0;
+  const double interval =
+      stage.output_interval ? *stage.output_interval : stage.end_time - start;
+  double next_output = start + interval;
+  external_force(t, f_ext);
+  accelerate(f_ext, a);
+  const double energy0 = kinetic(v) + [&] {
+    double e = op.strain_energy(d), all = 0;
+    Teuchos::reduceAll(*map->getComm(), Teuchos::REDUCE_SUM, 1, &e, &all);
+    return all;
+  }();
+  const auto account = [&](double kin) {
+    double e = op.strain_energy(d), strain = 0;
+    Teuchos::reduceAll(*map->getComm(), Teuchos::REDUCE_SUM, 1, &e, &strain);
+    const double scale = std::max({kin, strain, energy0, std::abs(external_work)});
+    if (scale > 0)
+      summary.energy_error = std::max(
+          summary.energy_error, std::abs(kin + strain - energy0 - external_work) / scale);
+  };
+  for (;;) {
+    const bool last = t >= stage.end_time - 1e-12 * std::max(1.0, std::abs(stage.end_time));
+    const double dt_next = last ? dt : std::min(dt, stage.end_time - t);
+    next_velocity(0.5 * (dt_prev + dt_next), dt_next);
+    if (last || t >= next_output - 1e-9 * dt) {
+      // The velocity at the integer step: the mean of the half steps around it.
+      Vector v_n(map);
+      v_n.update(0.5, v, 0.5, v_next, 0.0);
+      if (last) Tpetra::deep_copy(v, v_n);
+      const double kin = kinetic(v_n);
+      account(kin);
+      record(t, kin, external_work);
+      next_output += interval;
+    }
+    if (last) break;
+    Tpetra::deep_copy(d_old, d);
+    d.update(dt_next, v_next, 1.0);
+    Tpetra::deep_copy(v, v_next);
+    t += dt_next;
+    dt_prev = dt_next;
+    ++summary.steps;
+    const auto bad = first_non_finite(d);
+    if (!bad.empty()) {
+      std::ostringstream o;
+      o << "stage '" << stage.name << "' (shells, explicit): the displacement of " << bad
+        << " is not finite at step " << summary.steps << ", t = " << t << " (dt = " << dt
+        << ", stable time step " << summary.dt_crit << ")";
+      throw NumericalError(o.str());
+    }
+    Tpetra::deep_copy(f_ext_old, f_ext);
+    external_force(t, f_ext);
+    step.update(1.0, d, -1.0, d_old, 0.0);
+    external_work += 0.5 * (reproducible_dot(f_ext_old, step) + reproducible_dot(f_ext, step));
+    accelerate(f_ext, a);
+  }
+  std::ostringstream o;
+  o << "stage '" << stage.name << "' (shells, explicit) done: " << summary.steps
+    << " steps, energy balance error " << summary.energy_error;
+  Log::info(o.str());
+  return summary;
+}
+
+}  // namespace efg

@@ -1,0 +1,49 @@
+#include "run/ShellStageInputs.hpp"
+
+#include "model/Curves.hpp"
+
+namespace efg {
+namespace {
+constexpr int nd = shell_dofs_per_node;
+}
+
+std::vector<ShellSupport> shell_supports_at(const Scene& scene, const std::string& stage, double time) {
+  const auto factor = curve_factor(scene, time, 1.0, stage);
+  std::vector<ShellSupport> out;
+  for (const auto& bc : scene.boundary_conditions) {
+    if (!bc.stages.includes(stage)) continue;
+    ShellSupport s;
+    s.node_set = bc.node_set;
+    const double scale = factor(bc.curve);
+    for (std::size_t c = 0; c < nd; ++c) {
+      const auto& field = c < 3 ? bc.components[c] : bc.rotations[c - 3];
+      if (field)
+        s.value[c] = [f = *field, scale, time](const double* x) {
+          const double p[3] = {x[0], x[1], 0.0};
+          return scale * f.at(p, time);
+        };
+    }
+    out.push_back(s);
+  }
+  return out;
+}
+
+FlatShellOperator::Pressure shell_pressure_at(const Model& model, const std::string& stage, double time) {
+  const auto& scene = model.scene;
+  const auto factor = curve_factor(scene, time, 1.0, stage);
+  std::vector<std::pair<const LoadSpec*, double>> loads;
+  for (const auto& l : scene.loads)
+    if (l.type == "shell_pressure" && l.stages.includes(stage))
+      loads.emplace_back(&l, factor(l.curve));
+  return [&model, loads, time](std::size_t part, const double* x) {
+    double q = 0;
+    for (const auto& [l, scale] : loads) {
+      bool applies = l->parts.empty();
+      for (const auto& name : l->parts) applies = applies || name == model.parts[part].part->name;
+      if (applies) q += scale * l->value.front().at(x, time);
+    }
+    return q;
+  };
+}
+
+}  // namespace efg

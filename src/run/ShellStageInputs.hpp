@@ -1,0 +1,23 @@
+// What a shell stage reads of the scene at a time: its supports (the boundary conditions active
+// in the stage, their curves' factors at that time) and its shell_pressure loads.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "model/Model.hpp"
+#include "shells/FlatShellOperator.hpp"
+#include "shells/ShellConstraints.hpp"
+
+namespace efg {
+
+/// The displacement and rotation conditions active in `stage`, valued at `time`.
+std::vector<ShellSupport> shell_supports_at(const Scene& scene, const std::string& stage,
+                                            double time);
+
+/// The shell_pressure loads active in `stage`, summed, at `time` (a load without a curve at full
+/// value).
+FlatShellOperator::Pressure shell_pressure_at(const Model& model, const std::string& stage,
+                                              double time);
+
+}  // namespace efg
