@@ -81,7 +81,7 @@ class ExplicitDriver {
   StableTimeStep stable_;
   Vector f_ext_, f_ext_old_, f_wall_, f_wall_old_, f_int_, wall_overlap_, d_overlap_;
   void refuse_endless(double span, double dt, double dt_crit) const;
-  Vector f_viscous_, f_viscous_old_;         ///< bulk viscosity of mixed u-p cells (at v_n+1/2)
+  Vector f_viscous_, f_viscous_old_;  ///< bulk viscosity of mixed u-p cells (at v_n+1/2)
   double viscosity_linear_ = 0, viscosity_quadratic_ = 0;  ///< the stage's Q2, Q1
   Vector f_support_, f_support_old_;  ///< forces of the prescribed motions (their work is external)
   Vector delta_, v_half_, previous_d_, previous_v_, previous_a_;  ///< one step's scratch

@@ -79,8 +79,7 @@ class ScaledTangent : public Tpetra::Operator<> {
 
 StableTimeStep::StableTimeStep(const ModelOperators& ops, const Vector& mass_owned,
                                double wall_penalty, ExtraStiffness extra)
-    : StableTimeStep([&ops](const Vector& d, Vector& f) { ops.internal_force(d, f); },
-                     mass_owned) {
+    : StableTimeStep([&ops](const Vector& d, Vector& f) { ops.internal_force(d, f); }, mass_owned) {
   // Plastic points probed elastically (MaterialStates::elastic_probe), for the estimates only.
   elastic_probe_ = [&ops](bool on) { ops.solid().history().set_elastic_probe(on); };
   wall_penalty_ = wall_penalty;
@@ -170,8 +169,8 @@ double StableTimeStep::estimate(const Vector& d_owned) {
   return std::floor(dt / unit) * unit;
 }
 
-void refuse_endless_stage(const std::string& file, const std::string& stage, double span,
-                          double dt, double dt_crit) {
+void refuse_endless_stage(const std::string& file, const std::string& stage, double span, double dt,
+                          double dt_crit) {
   // A stage that needs more steps than any machine can take (end_time: 1e300, dt: 1e-300) is
   // refused before it starts instead of running forever; a long one is announced.
   constexpr double most_steps = 1e10;

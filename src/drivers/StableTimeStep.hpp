@@ -56,7 +56,7 @@ class StableTimeStep {
 
 /// Throws InputError (naming the scene file) when a stage of length `span` needs more than 1e10
 /// steps of dt; warns above 1e7.
-void refuse_endless_stage(const std::string& file, const std::string& stage, double span,
-                          double dt, double dt_crit);
+void refuse_endless_stage(const std::string& file, const std::string& stage, double span, double dt,
+                          double dt_crit);
 
 }  // namespace efg

@@ -35,6 +35,24 @@ std::string first_non_finite(const Vector& d) {
 
 }  // namespace
 
+void check_shell_explicit_stage(const Model& model, const FlatShellOperator& op,
+                                const StageSpec& stage) {
+  const auto& scene = model.scene;
+  std::vector<double> values;
+  for (double time : {0.0, stage.end_time}) {
+    const ShellConstraints constraints(model, op, shell_supports_at(scene, stage.name, time));
+    constraints.collocation_matrix(values);
+    double largest = 0, all = 0;
+    for (double g : values) largest = std::max(largest, std::abs(g));
+    Teuchos::reduceAll(*op.maps().owned_dofs->getComm(), Teuchos::REDUCE_MAX, 1, &largest, &all);
+    if (all > 0)
+      throw InputError(scene.file + ": stage '" + stage.name +
+                       "': explicit shell stages hold their supports at zero in this version; a "
+                       "condition active in it prescribes a value of " +
+                       std::to_string(all) + " (prescribed motions of shells are not built yet)");
+  }
+}
+
 ShellExplicitSummary run_shell_explicit_stage(const Model& model, const FlatShellOperator& op,
                                               const StageSpec& stage, double start, Vector& d,
                                               Vector& v, const ShellRecord& record) {
@@ -45,19 +63,10 @@ ShellExplicitSummary run_shell_explicit_stage(const Model& model, const FlatShel
   Vector inv_mass(mass.getMap());
   inv_mass.reciprocal(mass);
 
-  const ShellConstraints constraints(model, op, shell_supports_at(scene, stage.name, stage.end_time));
+  check_shell_explicit_stage(model, op, stage);
+  const ShellConstraints constraints(model, op,
+                                     shell_supports_at(scene, stage.name, stage.end_time));
   const ShellMultipliers multipliers(constraints, mass);
-  {
-    std::vector<double> values;
-    constraints.collocation_matrix(values);
-    double largest = 0, all = 0;
-    for (double g : values) largest = std::max(largest, std::abs(g));
-    Teuchos::reduceAll(*mass.getMap()->getComm(), Teuchos::REDUCE_MAX, 1, &largest, &all);
-    if (all > 0)
-      throw InputError(scene.file + ": stage '" + stage.name +
-                       "': explicit shell stages hold their supports at zero in this version "
-                       "(a prescribed value or motion of a shell is not built yet)");
-  }
 
   const auto internal_force = [&op](const Vector& x, Vector& f) { op.internal_force(x, f); };
   StableTimeStep stable(internal_force, mass);
@@ -65,8 +74,8 @@ ShellExplicitSummary run_shell_explicit_stage(const Model& model, const FlatShel
   summary.dt_crit = stable.estimate(d);
   summary.largest_frequency = stable.largest_frequency();
   const bool fixed = static_cast<bool>(settings["dt"]);
-  const double dt = fixed ? settings["dt"].as<double>()
-                          : settings["dt_scale"].as<double>() * summary.dt_crit;
+  const double dt =
+      fixed ? settings["dt"].as<double>() : settings["dt_scale"].as<double>() * summary.dt_crit;
   if (fixed && dt > summary.dt_crit && !settings["allow_unstable_dt"].as<bool>())
     throw NumericalError("stage '" + stage.name + "': dt = " + std::to_string(dt) +
                          " exceeds the stable time step " + std::to_string(summary.dt_crit) +
@@ -111,8 +120,7 @@ ShellExplicitSummary run_shell_explicit_stage(const Model& model, const FlatShel
   };
 
   double t = start, dt_prev = 0.0, external_work = 0.0;
-  const double interval =
-      stage.output_interval ? *stage.output_interval : stage.end_time - start;
+  const double interval = stage.output_interval ? *stage.output_interval : stage.end_time - start;
   double next_output = start + interval;
   external_force(t, f_ext);
   accelerate(f_ext, a);
@@ -126,8 +134,8 @@ ShellExplicitSummary run_shell_explicit_stage(const Model& model, const FlatShel
     Teuchos::reduceAll(*map->getComm(), Teuchos::REDUCE_SUM, 1, &e, &strain);
     const double scale = std::max({kin, strain, energy0, std::abs(external_work)});
     if (scale > 0)
-      summary.energy_error = std::max(
-          summary.energy_error, std::abs(kin + strain - energy0 - external_work) / scale);
+      summary.energy_error =
+          std::max(summary.energy_error, std::abs(kin + strain - energy0 - external_work) / scale);
   };
   for (;;) {
     const bool last = t >= stage.end_time - 1e-12 * std::max(1.0, std::abs(stage.end_time));

@@ -22,8 +22,12 @@ struct ShellExplicitSummary {
 };
 
 /// Energies at a record: kinetic, and the external work done since the stage began.
-using ShellRecord =
-    std::function<void(double time, double kinetic_energy, double external_work)>;
+using ShellRecord = std::function<void(double time, double kinetic_energy, double external_work)>;
+
+/// Throws InputError when a condition active in the explicit `stage` prescribes a value other
+/// than zero at its start or end (held supports only in this version). Run by `efg check` too.
+void check_shell_explicit_stage(const Model& model, const FlatShellOperator& op,
+                                const StageSpec& stage);
 
 /// Runs `stage` from `start` to its end_time, d and v (owned dofs) in place; calls `record` at
 /// every output_interval (and at the end). Throws NumericalError naming the step, the time and

@@ -7,7 +7,8 @@ namespace {
 constexpr int nd = shell_dofs_per_node;
 }
 
-std::vector<ShellSupport> shell_supports_at(const Scene& scene, const std::string& stage, double time) {
+std::vector<ShellSupport> shell_supports_at(const Scene& scene, const std::string& stage,
+                                            double time) {
   const auto factor = curve_factor(scene, time, 1.0, stage);
   std::vector<ShellSupport> out;
   for (const auto& bc : scene.boundary_conditions) {
@@ -28,7 +29,8 @@ std::vector<ShellSupport> shell_supports_at(const Scene& scene, const std::strin
   return out;
 }
 
-FlatShellOperator::Pressure shell_pressure_at(const Model& model, const std::string& stage, double time) {
+FlatShellOperator::Pressure shell_pressure_at(const Model& model, const std::string& stage,
+                                              double time) {
   const auto& scene = model.scene;
   const auto factor = curve_factor(scene, time, 1.0, stage);
   std::vector<std::pair<const LoadSpec*, double>> loads;

@@ -72,10 +72,6 @@ void check_shell_scene(const Scene& s, const BackgroundMesh& mesh) {
   for (std::size_t i = 0; i < s.stages.size(); ++i) {
     const auto& stage = s.stages[i];
     if (stage.driver != "explicit") continue;
-    for (std::size_t p = 0; p < s.parts.size(); ++p)
-      if (!s.find_material(s.parts[p].material)->density)
-        fail(s, d["parts"][p]["material"], "parts[" + std::to_string(p) + "].material",
-             "stage '" + stage.name + "' is explicit: the shell's material needs a density");
     if (stage.settings["transformation_traction"].as<bool>())
       fail(s, d["stages"][i]["transformation_traction"],
            "stages[" + std::to_string(i) + "].transformation_traction",

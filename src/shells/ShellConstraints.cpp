@@ -150,8 +150,8 @@ void ShellConstraints::set_values(FlatShellOperator::Vector& rhs_owned) const {
 Teuchos::RCP<Tpetra::CrsMatrix<>> ShellConstraints::collocation_matrix(
     std::vector<double>& values) const {
   const auto& dofs = op_.maps().owned_dofs;
-  const auto rows = Teuchos::rcp(new Tpetra::Map<>(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(),
-                                                   rows_.size(), 0, dofs->getComm()));
+  const auto rows = Teuchos::rcp(new Tpetra::Map<>(
+      Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(), rows_.size(), 0, dofs->getComm()));
   std::size_t widest = 1;
   for (const auto& r : rows_) widest = std::max(widest, r.columns.size());
   auto C = Teuchos::rcp(new Tpetra::CrsMatrix<>(rows, widest));

@@ -38,7 +38,8 @@ void fill(Vector& x, double phase) {
   auto v = x.getLocalViewHost(Tpetra::Access::OverwriteAll);
   const auto& map = *x.getMap();
   for (std::size_t k = 0; k < v.extent(0); ++k)
-    v(k, 0) = std::sin(phase + 0.37 * static_cast<double>(map.getGlobalElement(static_cast<int>(k))));
+    v(k, 0) =
+        std::sin(phase + 0.37 * static_cast<double>(map.getGlobalElement(static_cast<int>(k))));
 }
 
 // Row sums of the consistent mass over the nodal quadrature: the total is rho t area exactly
@@ -96,7 +97,8 @@ TEST(ShellDynamics, MultipliersProjectOntoTheSupportsInTheMassNorm) {
     ShellSupport s;
     s.node_set = set;
     for (int c = 0; c < nd; ++c)
-      if (set[0] == 'x' || c == shell_w || c == shell_ry) s.value[static_cast<std::size_t>(c)] = zero;
+      if (set[0] == 'x' || c == shell_w || c == shell_ry)
+        s.value[static_cast<std::size_t>(c)] = zero;
     supports.push_back(s);
   }
   const ShellConstraints constraints(model, op, supports);
@@ -115,8 +117,9 @@ TEST(ShellDynamics, MultipliersProjectOntoTheSupportsInTheMassNorm) {
   const auto& nodes = *op.maps().owned_nodes;
   double held = 0;
   for (std::size_t i = 0; i < values.size() / nd; ++i) {
-    const double* x = model.mesh.coordinates.data() + 2 * nodes.getGlobalElement(static_cast<int>(i));
-    const bool on_x0 = x[0] < 1e-12, on_y1 = x[1] > 1 - 1e-12;
+    const double* x =
+        model.mesh.coordinates.data() + 2 * nodes.getGlobalElement(static_cast<int>(i));
+    const bool on_x0 = x[0]<1e-12, on_y1 = x[1]> 1 - 1e-12;
     for (int c = 0; c < nd; ++c)
       if (on_x0 || (on_y1 && (c == shell_w || c == shell_ry)))
         held = std::max(held, std::abs(values[i * nd + static_cast<std::size_t>(c)]));
@@ -126,7 +129,8 @@ TEST(ShellDynamics, MultipliersProjectOntoTheSupportsInTheMassNorm) {
   Vector change(mass.getMap()), m_allowed(mass.getMap());
   change.update(1.0, d, -1.0, predicted, 0.0);
   m_allowed.elementWiseMultiply(1.0, mass, allowed, 0.0);
-  const double scale = std::sqrt(reproducible_dot(change, change) * reproducible_dot(m_allowed, m_allowed));
+  const double scale =
+      std::sqrt(reproducible_dot(change, change) * reproducible_dot(m_allowed, m_allowed));
   EXPECT_LT(std::abs(reproducible_dot(change, m_allowed)), 1e-12 * scale);
   // the constraint force is M (d - predicted) / dt^2
   Vector expected(mass.getMap());
