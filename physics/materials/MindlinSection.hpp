@@ -32,23 +32,34 @@ EFG_PHYSICS_FUNCTION void plane_stress_moduli(double E, double nu, double (&C)[3
     for (int j = 0; j < 3; ++j) C[i][j] = c[i][j];
 }
 
-/// Gauss-Legendre points and weights on [-1, 1] for 1 to 5 points (Abramowitz & Stegun 25.4.29);
-/// returns the number of points used (the request clamped to 1..5).
-EFG_PHYSICS_FUNCTION int thickness_rule(int points, double (&xi)[5], double (&w)[5]) {
-  const double r3 = 0.5773502691896257645, r35 = 0.7745966692414833770;
-  const double a4 = 0.3399810435848562648, b4 = 0.8611363115940525752;
-  const double wa4 = 0.6521451548625461427, wb4 = 0.3478548451374538573;
-  const double a5 = 0.5384693101056830910, b5 = 0.9061798459386639928;
-  const double w05 = 0.5688888888888888889, wa5 = 0.4786286704993664680,
-               wb5 = 0.2369268850561890875;
-  const int n = points < 1 ? 1 : (points > 5 ? 5 : points);
-  const double x[5][5] = {
-      {0}, {-r3, r3}, {-r35, 0, r35}, {-b4, -a4, a4, b4}, {-b5, -a5, 0, a5, b5}};
-  const double v[5][5] = {
-      {2}, {1, 1}, {5.0 / 9, 8.0 / 9, 5.0 / 9}, {wb4, wa4, wa4, wb4}, {wb5, wa5, w05, wa5, wb5}};
-  for (int k = 0; k < n; ++k) {
-    xi[k] = x[n - 1][k];
-    w[k] = v[n - 1][k];
+/// Most integration points through a shell's thickness.
+inline constexpr int max_thickness_points = 12;
+
+/// Gauss-Legendre points (ascending) and weights on [-1, 1] for 1 to max_thickness_points points
+/// (the request clamped to that range; returns the number used): the roots of P_n by Newton's
+/// method from Tricomi's estimate cos(pi (i + 3/4) / (n + 1/2)), w = 2 / ((1 - x^2) P_n'(x)^2)
+/// (Abramowitz & Stegun 25.4.29).
+EFG_PHYSICS_FUNCTION int thickness_rule(int points, double (&xi)[max_thickness_points],
+                                        double (&w)[max_thickness_points]) {
+  const int n = points < 1 ? 1 : (points > max_thickness_points ? max_thickness_points : points);
+  const double pi = 3.14159265358979323846;
+  for (int i = 0; i < n; ++i) {
+    double x = cos(pi * (i + 0.75) / (n + 0.5)), dp = 1.0;
+    for (int it = 0; it < 100; ++it) {
+      double p0 = 1.0, p1 = x;  // P_0, P_1, then up to P_n by Bonnet's recursion
+      for (int k = 2; k <= n; ++k) {
+        const double p2 = ((2.0 * k - 1.0) * x * p1 - (k - 1.0) * p0) / k;
+        p0 = p1;
+        p1 = p2;
+      }
+      const double pn = n == 1 ? x : p1, pm = n == 1 ? 1.0 : p0;
+      dp = n * (x * pn - pm) / (x * x - 1.0);
+      const double dx = pn / dp;
+      x -= dx;
+      if (fabs(dx) < 1e-16) break;
+    }
+    xi[n - 1 - i] = x;
+    w[n - 1 - i] = 2.0 / ((1.0 - x * x) * dp * dp);
   }
   return n;
 }
@@ -59,7 +70,7 @@ EFG_PHYSICS_FUNCTION MindlinSection elastic_mindlin_section(double E, double nu,
                                                             int points = 2,
                                                             double shear_factor = 5.0 / 6.0) {
   MindlinSection s;
-  double C[3][3], xi[5], w[5];
+  double C[3][3], xi[max_thickness_points], w[max_thickness_points];
   plane_stress_moduli(E, nu, C);
   const int n = thickness_rule(points, xi, w);
   for (int k = 0; k < n; ++k) {

@@ -79,15 +79,17 @@ class ScaledTangent : public Tpetra::Operator<> {
 
 StableTimeStep::StableTimeStep(const ModelOperators& ops, const Vector& mass_owned,
                                double wall_penalty, ExtraStiffness extra)
-    : StableTimeStep([&ops](const Vector& d, Vector& f) { ops.internal_force(d, f); }, mass_owned) {
-  // Plastic points probed elastically (MaterialStates::elastic_probe), for the estimates only.
-  elastic_probe_ = [&ops](bool on) { ops.solid().history().set_elastic_probe(on); };
+    // Plastic points probed elastically (MaterialStates::elastic_probe), for the estimates only.
+    : StableTimeStep([&ops](const Vector& d, Vector& f) { ops.internal_force(d, f); }, mass_owned,
+                     [&ops](bool on) { ops.solid().history().set_elastic_probe(on); }) {
   wall_penalty_ = wall_penalty;
   extra_ = std::move(extra);
 }
 
-StableTimeStep::StableTimeStep(InternalForce internal_force, const Vector& mass_owned)
+StableTimeStep::StableTimeStep(InternalForce internal_force, const Vector& mass_owned,
+                               std::function<void(bool)> elastic_probe)
     : internal_force_(std::move(internal_force)),
+      elastic_probe_(std::move(elastic_probe)),
       inv_sqrt_mass_(mass_owned.getMap()),
       start_(mass_owned.getMap()),
       wall_penalty_(0.0) {

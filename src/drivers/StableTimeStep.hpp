@@ -35,8 +35,11 @@ class StableTimeStep {
   StableTimeStep(const ModelOperators& ops, const Vector& mass_owned, double wall_penalty = 0.0,
                  ExtraStiffness extra = {});
   /// Any internal force f(d) (owned dofs; e.g. the shells'), its stiffness probed the same way.
+  /// `elastic_probe(on)` switches path-dependent points to their elastic response around each
+  /// estimate (the stable step of elastic unloading), if given.
   using InternalForce = std::function<void(const Vector& d, Vector& f)>;
-  StableTimeStep(InternalForce internal_force, const Vector& mass_owned);
+  StableTimeStep(InternalForce internal_force, const Vector& mass_owned,
+                 std::function<void(bool)> elastic_probe = {});
 
   /// dt_crit at displacement d.
   double estimate(const Vector& d_owned);

@@ -35,24 +35,6 @@ std::string first_non_finite(const Vector& d) {
 
 }  // namespace
 
-void check_shell_explicit_stage(const Model& model, const FlatShellOperator& op,
-                                const StageSpec& stage) {
-  const auto& scene = model.scene;
-  std::vector<double> values;
-  for (double time : {0.0, stage.end_time}) {
-    const ShellConstraints constraints(model, op, shell_supports_at(scene, stage.name, time));
-    constraints.collocation_matrix(values);
-    double largest = 0, all = 0;
-    for (double g : values) largest = std::max(largest, std::abs(g));
-    Teuchos::reduceAll(*op.maps().owned_dofs->getComm(), Teuchos::REDUCE_MAX, 1, &largest, &all);
-    if (all > 0)
-      throw InputError(scene.file + ": stage '" + stage.name +
-                       "': explicit shell stages hold their supports at zero in this version; a "
-                       "condition active in it prescribes a value of " +
-                       std::to_string(all) + " (prescribed motions of shells are not built yet)");
-  }
-}
-
 ShellExplicitSummary run_shell_explicit_stage(const Model& model, const FlatShellOperator& op,
                                               const StageSpec& stage, double start, Vector& d,
                                               Vector& v, const ShellRecord& record) {
@@ -63,13 +45,13 @@ ShellExplicitSummary run_shell_explicit_stage(const Model& model, const FlatShel
   Vector inv_mass(mass.getMap());
   inv_mass.reciprocal(mass);
 
-  check_shell_explicit_stage(model, op, stage);
-  const ShellConstraints constraints(model, op,
-                                     shell_supports_at(scene, stage.name, stage.end_time));
-  const ShellMultipliers multipliers(constraints, mass);
+  const auto supports_at = [&](double time) { return shell_supports_at(scene, stage.name, time); };
+  const ShellConstraints constraints(model, op, supports_at(start));
+  ShellMultipliers multipliers(constraints, mass);
+  const std::size_t supports = supports_at(start).size();
 
   const auto internal_force = [&op](const Vector& x, Vector& f) { op.internal_force(x, f); };
-  StableTimeStep stable(internal_force, mass);
+  StableTimeStep stable(internal_force, mass, [&op](bool on) { op.set_elastic_probe(on); });
   ShellExplicitSummary summary;
   summary.dt_crit = stable.estimate(d);
   summary.largest_frequency = stable.largest_frequency();
@@ -93,13 +75,15 @@ ShellExplicitSummary run_shell_explicit_stage(const Model& model, const FlatShel
   }
 
   const auto map = mass.getMap();
-  Vector f_ext(map), f_ext_old(map), f_int(map), a(map), v_next(map), d_old(map), step(map);
+  Vector f_ext(map), f_ext_old(map), f_int(map), a(map), v_next(map), d_old(map), step(map),
+      f_support(map), step_before(map);
   const auto external_force = [&](double t, Vector& f) {
     f.putScalar(0.0);
     op.add_pressure(shell_pressure_at(model, stage.name, t), f);
   };
   const auto accelerate = [&](const Vector& f, Vector& acc) {
     op.internal_force(d, f_int);
+    op.commit_state();  // every explicit step is accepted (J2 layers; nothing for elastic parts)
     acc.update(1.0, f, -1.0, f_int, 0.0);
     acc.elementWiseMultiply(1.0, inv_mass, acc, 0.0);
   };
@@ -109,13 +93,16 @@ ShellExplicitSummary run_shell_explicit_stage(const Model& model, const FlatShel
     mv.elementWiseMultiply(1.0, mass, vel, 0.0);
     return 0.5 * reproducible_dot(mv, vel);
   };
-  // v_(n+1/2) from v_(n-1/2) and a_n over the mean of the two steps, then the constraints: the
-  // predicted d + dt v projected by the multipliers gives the velocity that keeps them.
-  const auto next_velocity = [&](double dt_mean, double dt_next) {
+  // v_(n+1/2) from v_(n-1/2) and a_n over the mean of the two steps, then the constraints at
+  // t_(n+1): the predicted d + dt v projected by the multipliers gives the velocity that keeps
+  // them; f_support is their force -C^T lambda in the step.
+  const auto next_velocity = [&](double dt_mean, double dt_next, double t_next) {
+    multipliers.set_values(constraints.collocation_values(supports_at(t_next)));
     v_next.update(1.0, v, dt_mean, a, 0.0);
     Tpetra::deep_copy(step, d);
     step.update(dt_next, v_next, 1.0);
-    multipliers.correct(step, dt_next);
+    f_support.putScalar(0.0);
+    multipliers.correct(step, dt_next, &f_support);
     v_next.update(1.0 / dt_next, step, -1.0 / dt_next, d, 0.0);
   };
 
@@ -129,18 +116,26 @@ ShellExplicitSummary run_shell_explicit_stage(const Model& model, const FlatShel
     Teuchos::reduceAll(*map->getComm(), Teuchos::REDUCE_SUM, 1, &e, &all);
     return all;
   }();
+  // The balance error: the worst imbalance of a record over the largest energy of the stage
+  // (relative to each record's own energies, the first records of a stage starting at rest
+  // would divide the round-off of the first step's work by nearly nothing).
+  double largest_energy = energy0, worst_imbalance = 0;
   const auto account = [&](double kin) {
     double e = op.strain_energy(d), strain = 0;
     Teuchos::reduceAll(*map->getComm(), Teuchos::REDUCE_SUM, 1, &e, &strain);
-    const double scale = std::max({kin, strain, energy0, std::abs(external_work)});
-    if (scale > 0)
-      summary.energy_error =
-          std::max(summary.energy_error, std::abs(kin + strain - energy0 - external_work) / scale);
+    largest_energy = std::max({largest_energy, kin, strain, std::abs(external_work)});
+    worst_imbalance = std::max(worst_imbalance, std::abs(kin + strain - energy0 - external_work));
+    summary.energy_error = largest_energy > 0 ? worst_imbalance / largest_energy : 0.0;
   };
+  // The supports' forces written at a record are their impulse since the previous record over
+  // the time between: the mean force, free of the step-to-step ringing of the multipliers
+  // (a moving support drives the particles next to it at the highest frequencies).
+  std::vector<double> impulse(supports * nd, 0.0);
+  double since = start;
   for (;;) {
     const bool last = t >= stage.end_time - 1e-12 * std::max(1.0, std::abs(stage.end_time));
     const double dt_next = last ? dt : std::min(dt, stage.end_time - t);
-    next_velocity(0.5 * (dt_prev + dt_next), dt_next);
+    next_velocity(0.5 * (dt_prev + dt_next), dt_next, t + dt_next);
     if (last || t >= next_output - 1e-9 * dt) {
       // The velocity at the integer step: the mean of the half steps around it.
       Vector v_n(map);
@@ -148,12 +143,25 @@ ShellExplicitSummary run_shell_explicit_stage(const Model& model, const FlatShel
       if (last) Tpetra::deep_copy(v, v_n);
       const double kin = kinetic(v_n);
       account(kin);
-      record(t, kin, external_work);
+      auto forces = multipliers.support_forces(supports);
+      if (t > since)
+        for (std::size_t k = 0; k < forces.size(); ++k) forces[k] = impulse[k] / (t - since);
+      record(t, kin, external_work, forces);
+      std::fill(impulse.begin(), impulse.end(), 0.0);
+      since = t;
       next_output += interval;
     }
     if (last) break;
+    const auto forces = multipliers.support_forces(supports);
+    for (std::size_t k = 0; k < forces.size(); ++k) impulse[k] += forces[k] * dt_next;
     Tpetra::deep_copy(d_old, d);
     d.update(dt_next, v_next, 1.0);
+    // The supports' work: their force at t_n over the mean of the steps around it (zero for
+    // supports held still, whose force is normal to every motion they allow).
+    step.update(1.0, d, -1.0, d_old, 0.0);
+    step_before.update(1.0, step, 1.0);
+    external_work += 0.5 * reproducible_dot(f_support, step_before);
+    Tpetra::deep_copy(step_before, step);
     Tpetra::deep_copy(v, v_next);
     t += dt_next;
     dt_prev = dt_next;
@@ -168,7 +176,6 @@ ShellExplicitSummary run_shell_explicit_stage(const Model& model, const FlatShel
     }
     Tpetra::deep_copy(f_ext_old, f_ext);
     external_force(t, f_ext);
-    step.update(1.0, d, -1.0, d_old, 0.0);
     external_work += 0.5 * (reproducible_dot(f_ext_old, step) + reproducible_dot(f_ext, step));
     accelerate(f_ext, a);
   }

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <functional>
+#include <vector>
 
 #include "model/Model.hpp"
 #include "scene/Scene.hpp"
@@ -21,18 +22,16 @@ struct ShellExplicitSummary {
   double energy_error = 0;
 };
 
-/// Energies at a record: kinetic, and the external work done since the stage began.
-using ShellRecord = std::function<void(double time, double kinetic_energy, double external_work)>;
-
-/// Throws InputError when a condition active in the explicit `stage` prescribes a value other
-/// than zero at its start or end (held supports only in this version). Run by `efg check` too.
-void check_shell_explicit_stage(const Model& model, const FlatShellOperator& op,
-                                const StageSpec& stage);
+/// At a record: the kinetic energy, the work of the loads and moving supports since the stage
+/// began, and the force of every support on the shell (5 components per condition active in the
+/// stage, in the scene's order; ShellMultipliers::support_forces).
+using ShellRecord = std::function<void(double time, double kinetic_energy, double external_work,
+                                       const std::vector<double>& support_forces)>;
 
 /// Runs `stage` from `start` to its end_time, d and v (owned dofs) in place; calls `record` at
-/// every output_interval (and at the end). Throws NumericalError naming the step, the time and
-/// the particle when the displacement stops being finite, InputError when a support is not held
-/// at zero (prescribed motions of explicit shells are not built yet).
+/// every output_interval (and at the end). Supports follow their values and curves at every
+/// step. Throws NumericalError naming the step, the time and the particle when the
+/// displacement stops being finite.
 ShellExplicitSummary run_shell_explicit_stage(const Model& model, const FlatShellOperator& op,
                                               const StageSpec& stage, double start,
                                               FlatShellOperator::Vector& d,

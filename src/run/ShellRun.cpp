@@ -86,10 +86,7 @@ void check_shell_setup(const Model& model) {
   const FlatShellOperator op(model);
   for (const auto& stage : model.scene.stages) {
     ShellConstraints(model, op, shell_supports_at(model.scene, stage.name, stage.end_time));
-    if (stage.driver == "explicit") {
-      check_shell_explicit_stage(model, op, stage);
-      op.lumped_mass();  // a mass <= 0 stops the check as it would the run
-    }
+    if (stage.driver == "explicit") op.lumped_mass();  // a mass <= 0 stops the check as the run
   }
 }
 
@@ -98,15 +95,13 @@ RunOutcome run_shell_stages(const CommPtr& comm, const Model& model, const std::
   const auto started = std::chrono::steady_clock::now();
   const auto& scene = model.scene;
   const FlatShellOperator op(model);
-  // Input an explicit stage refuses stops the run before any output is written.
-  for (const auto& stage : scene.stages)
-    if (stage.driver == "explicit") check_shell_explicit_stage(model, op, stage);
   const auto& fields = scene.output.fields;
   const auto wants = [&](const char* f) {
     return std::find(fields.begin(), fields.end(), f) != fields.end();
   };
   const bool with_stress = wants("stress"), with_resultants = wants("resultants"),
-             with_volume = wants("nodal_volume"), with_rank = wants("owner_rank");
+             with_volume = wants("nodal_volume"), with_rank = wants("owner_rank"),
+             with_plastic = wants("plastic_strain");
   OutputLayout layout;
   for (const char* base : {"displacement_", "rotation_"})
     for (const char* axis : {"x", "y", "z"})
@@ -121,12 +116,29 @@ RunOutcome run_shell_stages(const CommPtr& comm, const Model& model, const std::
         layout.nodal.push_back(std::string("stress_") + side + "_" + c);
   if (with_resultants)
     for (const char* n : resultant_names) layout.nodal.push_back(n);
+  if (with_plastic) layout.nodal.push_back("plastic_strain");
   if (with_volume) layout.nodal.push_back("nodal_volume");
   if (with_rank) layout.nodal.push_back("owner_rank");
   for (const char* g : {"strain_energy", "kinetic_energy", "external_work"})
     layout.global.push_back(g);
   for (const auto& probe : scene.probes)
     for (const char* n : probe_names) layout.global.push_back("probe_" + probe.name + "_" + n);
+  // The supports' forces on the shell, from the Lagrange multipliers of explicit stages (0 in
+  // implicit ones, whose collocation rows carry no multipliers): per condition, the components
+  // it holds. Only a scene with an explicit stage has these columns.
+  const char* const force_names[nd] = {"force_x", "force_y", "force_z", "moment_x", "moment_y"};
+  std::vector<std::pair<std::size_t, std::size_t>> support_columns;  // (condition, component)
+  const bool any_explicit = std::any_of(scene.stages.begin(), scene.stages.end(),
+                                        [](const StageSpec& s) { return s.driver == "explicit"; });
+  for (std::size_t i = 0; any_explicit && i < scene.boundary_conditions.size(); ++i) {
+    const auto& bc = scene.boundary_conditions[i];
+    for (std::size_t c = 0; c < nd; ++c)
+      if (c < 3 ? static_cast<bool>(bc.components[c]) : static_cast<bool>(bc.rotations[c - 3])) {
+        support_columns.emplace_back(i, c);
+        layout.global.push_back("support_" + bc.name + "_" + force_names[c]);
+      }
+  }
+  std::string stage_now;  // the stage a record belongs to
   ResultsOutput output(comm, path, model.mesh, model.maps.owned_nodes, layout,
                        scene.title.empty() ? scene.name : scene.title);
   const auto volume = lumped_nodal_volumes(model.mesh);
@@ -141,10 +153,13 @@ RunOutcome run_shell_stages(const CommPtr& comm, const Model& model, const std::
   FlatShellOperator::Vector d(op.maps().owned_dofs), v(op.maps().owned_dofs);
   RunOutcome outcome;
   // kinetic energy and the external work of the explicit stage so far (0 in static stages)
-  auto record = [&](double time, double kinetic, double external_work) {
+  auto record = [&](double time, double kinetic, double external_work,
+                    const std::vector<double>& forces) {
     const auto values = op.physical_values(d);
     const auto resultants =
         with_stress || with_resultants ? op.resultants(d) : std::vector<double>{};
+    // the largest effective plastic strain through the thickness (0 for elastic parts)
+    const auto plastic = with_plastic ? op.plastic_strain() : std::vector<double>{};
     const auto& owned = model.partition.owned;
     Tpetra::MultiVector<> nodal(model.maps.owned_nodes, layout.nodal.size());
     {
@@ -161,6 +176,7 @@ RunOutcome run_shell_stages(const CommPtr& comm, const Model& model, const std::
         }
         if (with_resultants)
           for (std::size_t c = 0; c < shell_strains; ++c) out(i, column++) = r[c];
+        if (with_plastic) out(i, column++) = plastic[i];
         if (with_volume) out(i, column++) = volume[static_cast<std::size_t>(owned[i])];
         if (with_rank) out(i, column++) = model.partition.rank;
       }
@@ -169,6 +185,17 @@ RunOutcome run_shell_stages(const CommPtr& comm, const Model& model, const std::
     Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, 1, &local, &energy);
     std::vector<double> global = {energy, kinetic, external_work};
     for (double p : probe_values(model, d, op)) global.push_back(p);
+    // forces holds 5 entries per condition active in the stage, in the scene's order
+    for (const auto& [i, c] : support_columns) {
+      std::size_t k = 0;
+      bool active = false;
+      for (std::size_t j = 0; j <= i; ++j)
+        if (scene.boundary_conditions[j].stages.includes(stage_now)) {
+          active = j == i;
+          if (j < i) ++k;
+        }
+      global.push_back(active && !forces.empty() ? forces[k * nd + c] : 0.0);
+    }
     output.write(time, nodal, global);
     history.push_back(global);
     history.back().insert(history.back().begin(), time);
@@ -188,7 +215,7 @@ RunOutcome run_shell_stages(const CommPtr& comm, const Model& model, const std::
     return all;
   };
   try {
-    record(0.0, 0.0, 0.0);
+    record(0.0, 0.0, 0.0, {});
     double start = 0.0;
     for (const auto& stage : scene.stages) {
       const auto begun = std::chrono::steady_clock::now();
@@ -196,6 +223,7 @@ RunOutcome run_shell_stages(const CommPtr& comm, const Model& model, const std::
       r.name = stage.name;
       r.time = stage.end_time;
       r.dofs = static_cast<long long>(op.maps().owned_dofs->getGlobalNumElements());
+      stage_now = stage.name;
       if (stage.driver == "explicit") {
         const auto summary = run_shell_explicit_stage(model, op, stage, start, d, v, record);
         r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begun).count();
@@ -220,7 +248,7 @@ RunOutcome run_shell_stages(const CommPtr& comm, const Model& model, const std::
       r.largest_deflection = largest_deflection(stage.name);
       r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begun).count();
       v.putScalar(0.0);  // a static solution, at rest
-      record(r.time, 0.0, 0.0);
+      record(r.time, 0.0, 0.0, {});
       r.strain_energy = history.back()[1];
       start = stage.end_time;
       std::ostringstream o;

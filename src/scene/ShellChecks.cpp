@@ -55,10 +55,31 @@ void check_shell_scene(const Scene& s, const BackgroundMesh& mesh) {
            "shells need a 2D mesh of their mid-surface in this version (flat shells in the x-y "
            "plane); this mesh is " +
                std::to_string(mesh.dimension) + "D (shell blocks of 3D meshes are not read yet)");
-    if (s.find_material(part.material)->model != "linear_elastic")
+    const auto& material = *s.find_material(part.material);
+    if (material.model != "linear_elastic" && material.model != "j2_plasticity")
       fail(s, pd["material"], path + ".material",
-           "shells take a linear_elastic material in this version, not " +
-               s.find_material(part.material)->model);
+           "shells take a linear_elastic or j2_plasticity material in this version, not " +
+               material.model);
+    if (material.model == "j2_plasticity") {
+      for (std::size_t k = 0; k < s.stages.size(); ++k)
+        if (s.stages[k].driver == "implicit")
+          fail(s, d["stages"][k]["driver"], "stages[" + std::to_string(k) + "].driver",
+               "part '" + part.name +
+                   "' is a J2 shell, and implicit shell stages are linear "
+                   "elastic in this version (no Newton iteration for shells yet): expected "
+                   "explicit");
+      for (std::size_t k = 0; k < s.output.fields.size(); ++k)
+        if (s.output.fields[k] == "stress")
+          fail(s, d["output"]["fields"][k], "output.fields[" + std::to_string(k) + "]",
+               "part '" + part.name +
+                   "' is a J2 shell, whose layers' stresses are not written "
+                   "yet (N / t +- 6 M / t^2 would not be them once it yields): expected resultants "
+                   "and plastic_strain");
+      if (material.constants.count("failure_strain"))
+        fail(s, d["materials"], "materials",
+             "material '" + material.name + "' of shell part '" + part.name +
+                 "' has a failure_strain: erosion of shells is not built yet");
+    }
     if (part.section.integration == Integration::gauss)
       fail(s, pd["section"]["integration"], path + ".section.integration",
            "shells are integrated at the particles: expected scni or nodal");
@@ -111,13 +132,13 @@ void check_shell_scene(const Scene& s, const BackgroundMesh& mesh) {
       const auto node = dot == std::string::npos ? d[k] : d[k.substr(0, dot)][k.substr(dot + 1)];
       fail(s, node, k, "not available with shell parts in this version");
     }
-  const std::set<std::string> written = {"displacement", "nodal_volume", "owner_rank", "stress",
-                                         "resultants"};
+  const std::set<std::string> written = {"displacement", "nodal_volume", "owner_rank",
+                                         "stress",       "resultants",   "plastic_strain"};
   for (std::size_t i = 0; i < s.output.fields.size(); ++i)
     if (!written.count(s.output.fields[i]))
       fail(s, d["output"]["fields"][i], "output.fields[" + std::to_string(i) + "]",
-           "shell runs write displacement (x, y, z), rotation (x, y), nodal_volume and "
-           "owner_rank; '" +
+           "shell runs write displacement (x, y, z), rotation (x, y), stress, resultants, "
+           "plastic_strain, nodal_volume and owner_rank; '" +
                s.output.fields[i] + "' is a solid field");
 }
 

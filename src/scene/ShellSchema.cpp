@@ -12,9 +12,10 @@ SpecPtr shell_spec() {
       .required("thickness", real("Shell thickness.", "length").above(0))
       .optional("thickness_points",
                 integer("Gauss points through the thickness (2 integrate an elastic section "
-                        "exactly).")
+                        "exactly; a J2 section needs more: its fully plastic moment comes out "
+                        "0.945 of the exact one with 5 points, 0.982 with 9, 1.005 with 12).")
                     .at_least(1)
-                    .at_most(5),
+                    .at_most(12),
                 "2")
       .optional("shear_stabilization",
                 real("alpha of the transverse shear stiffness k_s G t t^2 / (t^2 + alpha h^2) "

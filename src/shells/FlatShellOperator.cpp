@@ -9,6 +9,8 @@
 
 #include "core/Errors.hpp"
 #include "discretization/ShapeFunctions.hpp"
+#include "materials/ShellSectionJ2.hpp"
+#include "model/MaterialLaws.hpp"
 #include "operators/CouplingGraph.hpp"
 #include "shells/ShellConstraints.hpp"
 #include "shells/ShellMass.hpp"
@@ -29,9 +31,10 @@ FlatShellOperator::FlatShellOperator(const Model& model, int thickness_points,
   for (const auto& d : model.parts) {
     const auto& part = *d.part;
     const auto& material = *model.scene.find_material(part.material);
-    if (material.model != "linear_elastic")
+    if (material.model != "linear_elastic" && material.model != "j2_plasticity")
       throw InputError(model.scene.file + ": part '" + part.name +
-                       "': shells take a linear_elastic material in this version, not " +
+                       "': shells take a linear_elastic or j2_plasticity material in this "
+                       "version, not " +
                        material.model);
     if (d.points.scheme == Integration::gauss)
       throw InputError(model.scene.file + ": part '" + part.name +
@@ -42,6 +45,18 @@ FlatShellOperator::FlatShellOperator(const Model& model, int thickness_points,
         part.shell ? part.shell->thickness_points : thickness_points));
     thickness_.push_back(t);
     alpha_.push_back(part.shell ? part.shell->shear_stabilization : shear_stabilization);
+    layers_.push_back(part.shell ? part.shell->thickness_points : thickness_points);
+    if (material.model == "j2_plasticity") {
+      j2_.push_back(material_law(model.scene, part, 2).j2);
+      // small strain, every layer starts unstrained (eps_p = 0, alpha = 0)
+      committed_.emplace_back(
+          d.points.size() * static_cast<std::size_t>(layers_.back()) * physics::j2_state::count,
+          0.0);
+    } else {
+      j2_.emplace_back();
+      committed_.emplace_back();
+    }
+    trial_.push_back(committed_.back());
     // Direct gradients and values of the shape functions at the points (the shear rows).
     const auto& ip = d.points;
     const auto direct = evaluate_shape_functions(
@@ -201,9 +216,33 @@ void FlatShellOperator::point_strains(const Point& p, const View& d,
 }
 
 template <class View>
+void FlatShellOperator::plastic_resultants(std::size_t part, std::size_t q, const Point& p,
+                                           const View& d, double (&e)[shell_strains],
+                                           double (&R)[shell_strains]) const {
+  point_strains(p, d, e);
+  const auto law = elastic_probe_ ? physics::without_yield(*j2_[part]) : *j2_[part];
+  const std::size_t block = static_cast<std::size_t>(layers_[part]) * physics::j2_state::count;
+  double N[3], M[3];
+  physics::j2_section_resultants(law, thickness_[part], layers_[part], {e[0], e[1], e[2]},
+                                 {e[3], e[4], e[5]}, committed_[part].data() + q * block,
+                                 trial_[part].data() + q * block, 0.0, N, M);
+  const double shear = section_at(part, p.spacing).shear;
+  for (int i = 0; i < 3; ++i) {
+    R[i] = N[i];
+    R[3 + i] = M[i];
+  }
+  R[6] = shear * e[6];
+  R[7] = shear * e[7];
+}
+
+template <class View>
 void FlatShellOperator::point_resultants(std::size_t part, const Point& p, const View& d,
                                          double (&e)[shell_strains],
                                          double (&R)[shell_strains]) const {
+  if (j2_[part]) {
+    const auto q = static_cast<std::size_t>(&p - points_[part].data());
+    return plastic_resultants(part, q, p, d, e, R);
+  }
   point_strains(p, d, e);
   double N[3], M[3], Q[2];
   physics::mindlin_resultants(section_at(part, p.spacing), {e[0], e[1], e[2]}, {e[3], e[4], e[5]},
@@ -239,8 +278,23 @@ double FlatShellOperator::strain_energy(const Vector& d_owned) const {
     for (const auto& p : points_[part]) {
       double e[shell_strains], R[shell_strains], work = 0;
       point_resultants(part, p, d, e, R);
-      for (int i = 0; i < shell_strains; ++i) work += R[i] * e[i];
-      energy += 0.5 * p.weight * work;
+      if (!j2_[part]) {
+        for (int i = 0; i < shell_strains; ++i) work += R[i] * e[i];
+        energy += 0.5 * p.weight * work;
+        continue;
+      }
+      // stored + dissipated energy of the committed layers (per unit volume, times dz), and
+      // the elastic transverse shear
+      double xi[physics::max_thickness_points], w[physics::max_thickness_points];
+      const int n = physics::thickness_rule(layers_[part], xi, w);
+      const auto q = static_cast<std::size_t>(&p - points_[part].data());
+      const double* state =
+          committed_[part].data() + q * static_cast<std::size_t>(n) * physics::j2_state::count;
+      for (int k = 0; k < n; ++k)
+        work += 0.5 * thickness_[part] * w[k] *
+                (state[k * physics::j2_state::count + physics::j2_state::elastic_energy] +
+                 state[k * physics::j2_state::count + physics::j2_state::dissipation]);
+      energy += p.weight * (work + 0.5 * (R[6] * e[6] + R[7] * e[7]));
     }
   return energy;
 }
@@ -312,6 +366,32 @@ FlatShellOperator::Vector FlatShellOperator::lumped_mass() const {
     for (std::size_t c = 0; c < nd; ++c) m(i * nd + c, 0) = c < shell_rx ? mass : rotary;
   }
   return m_owned;
+}
+
+bool FlatShellOperator::plastic() const {
+  for (const auto& law : j2_)
+    if (law) return true;
+  return false;
+}
+
+void FlatShellOperator::commit_state() const {
+  committed_ = trial_;
+}
+
+std::vector<double> FlatShellOperator::plastic_strain() const {
+  std::vector<double> out(maps_.owned_nodes->getNodeNumElements(), 0.0);
+  for (std::size_t part = 0; part < points_.size(); ++part) {
+    if (!j2_[part]) continue;
+    const auto n = static_cast<std::size_t>(layers_[part]);
+    for (std::size_t q = 0; q < points_[part].size(); ++q) {
+      double& largest = out[static_cast<std::size_t>(points_[part][q].owned_row)];
+      for (std::size_t k = 0; k < n; ++k)
+        largest = std::max(
+            largest,
+            committed_[part][(q * n + k) * physics::j2_state::count + physics::j2_state::alpha]);
+    }
+  }
+  return out;
 }
 
 }  // namespace efg

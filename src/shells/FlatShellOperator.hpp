@@ -16,8 +16,10 @@
 
 #include <array>
 #include <functional>
+#include <optional>
 #include <vector>
 
+#include "materials/J2Plasticity.hpp"
 #include "materials/MindlinSection.hpp"
 #include "model/Model.hpp"
 #include "parallel/DofMaps.hpp"
@@ -61,8 +63,21 @@ class FlatShellOperator {
   /// point's strains (smoothed membrane and bending strains, i.e. the means over its nodal cell;
   /// the shear strain at the particle, with the stabilized shear stiffness the solve used).
   std::vector<double> resultants(const Vector& d_owned) const;
-  /// Strain energy 1/2 d^T K d of this rank's points (without constraints).
+  /// Strain energy 1/2 d^T K d of this rank's points (without constraints); for J2 parts the
+  /// internal energy of the committed state (stored + dissipated, through the thickness) and
+  /// the elastic shear energy.
   double strain_energy(const Vector& d_owned) const;
+
+  /// J2 parts (explicit stages; physics ShellSectionJ2): internal_force evaluates trial states
+  /// from the committed ones, commit_state() accepts the last evaluation's. While the elastic
+  /// probe is on the layers answer elastically from the committed state (the stable step's
+  /// stiffness probes; MaterialStates' elastic probe for solids).
+  bool plastic() const;
+  void commit_state() const;
+  void set_elastic_probe(bool on) const { elastic_probe_ = on; }
+  /// The largest effective plastic strain through the thickness of every owned particle (its
+  /// own integration point), committed state; 0 for elastic parts.
+  std::vector<double> plastic_strain() const;
 
   /// f = K d without the constraints, assembled point by point (sum_L a_L B(L)^T S B(L) d), no
   /// matrix: the internal force of explicit stages (owned dofs, overwritten).
@@ -94,8 +109,18 @@ class FlatShellOperator {
   void point_resultants(std::size_t part, const Point& p, const View& d, double (&e)[shell_strains],
                         double (&R)[shell_strains]) const;
 
+  /// N, M, Q of a point of a J2 part: the layers' trial states written to trial_.
+  template <class View>
+  void plastic_resultants(std::size_t part, std::size_t q, const Point& p, const View& d,
+                          double (&e)[shell_strains], double (&R)[shell_strains]) const;
+
   const Model& model_;
   DofMaps maps_;
+  std::vector<int> layers_;                               ///< thickness points per part
+  std::vector<std::optional<physics::J2Parameters>> j2_;  ///< per part: J2 when plastic
+  /// per part: j2_state::count doubles per thickness point per integration point
+  mutable std::vector<std::vector<double>> committed_, trial_;
+  mutable bool elastic_probe_ = false;
   std::vector<physics::MindlinSection> sections_;
   std::vector<double> thickness_, alpha_;
   std::vector<std::vector<Point>> points_;  ///< per part

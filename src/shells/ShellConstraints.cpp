@@ -18,9 +18,10 @@ ShellConstraints::ShellConstraints(const Model& model, const FlatShellOperator& 
   const auto lid = [&](LocalIndex node) {
     return overlap.getLocalElement(static_cast<GlobalOrdinal>(node));
   };
-  // (node, component) -> value; a later support's value wins on shared nodes (corners).
-  std::map<std::pair<LocalIndex, int>, double> value;
-  for (const auto& s : supports) {
+  // (node, component) -> (value, support); a later support wins on shared nodes (corners).
+  std::map<std::pair<LocalIndex, int>, std::pair<double, int>> value;
+  for (std::size_t k = 0; k < supports.size(); ++k) {
+    const auto& s = supports[k];
     const auto* set = model.mesh.find_node_set(s.node_set);
     if (!set)
       throw InputError(model.scene.file + ": shell support: node set '" + s.node_set +
@@ -29,7 +30,7 @@ ShellConstraints::ShellConstraints(const Model& model, const FlatShellOperator& 
       const double* x = model.mesh.coordinates.data() + 2 * static_cast<std::size_t>(node);
       for (int c = 0; c < nd; ++c)
         if (s.value[static_cast<std::size_t>(c)])
-          value[{node, c}] = s.value[static_cast<std::size_t>(c)](x);
+          value[{node, c}] = {s.value[static_cast<std::size_t>(c)](x), static_cast<int>(k)};
     }
     long long sides = 0;
     Edge edge;
@@ -58,7 +59,11 @@ ShellConstraints::ShellConstraints(const Model& model, const FlatShellOperator& 
         row.node = lid(part.cloud.mesh_node[r]);
         row.component = c;
         row.scale = c < shell_rx ? section.membrane[0][0] : section.bending[0][0];
-        row.value = it->second;
+        row.value = it->second.first;
+        row.support = it->second.second;
+        const double* x =
+            model.mesh.coordinates.data() + 2 * static_cast<std::size_t>(part.cloud.mesh_node[r]);
+        row.x = {x[0], x[1]};
         for (auto k = rows.offsets[r]; k < rows.offsets[r + 1]; ++k) {
           row.columns.push_back(
               lid(part.cloud.mesh_node[static_cast<std::size_t>(rows.particles[k])]));
@@ -168,6 +173,24 @@ Teuchos::RCP<Tpetra::CrsMatrix<>> ShellConstraints::collocation_matrix(
   }
   C->fillComplete(dofs, rows);
   return C;
+}
+
+std::vector<double> ShellConstraints::collocation_values(
+    const std::vector<ShellSupport>& supports) const {
+  std::vector<double> values;
+  values.reserve(rows_.size());
+  for (const auto& r : rows_) {
+    const auto& f = supports.at(static_cast<std::size_t>(r.support))
+                        .value[static_cast<std::size_t>(r.component)];
+    values.push_back(f ? f(r.x.data()) : 0.0);
+  }
+  return values;
+}
+
+std::vector<std::pair<int, int>> ShellConstraints::row_supports() const {
+  std::vector<std::pair<int, int>> out;
+  for (const auto& r : rows_) out.emplace_back(r.support, r.component);
+  return out;
 }
 
 }  // namespace efg

@@ -59,10 +59,16 @@ class ShellConstraints {
   /// rank's constrained dofs (in order), the owned dofs as domain, fill complete; `values` gets
   /// g_c(X_J) in the rows' order (explicit stages: shells/ShellMultipliers).
   Teuchos::RCP<Tpetra::CrsMatrix<>> collocation_matrix(std::vector<double>& values) const;
+  /// g_c(X_J) of the same rows from `supports` (the same conditions, e.g. at another time).
+  std::vector<double> collocation_values(const std::vector<ShellSupport>& supports) const;
+  /// The support (index into the constructor's list) and component of each row, in order.
+  std::vector<std::pair<int, int>> row_supports() const;
 
  private:
   struct Row {
     int node = 0, component = 0;  ///< owned (= overlap) node index of J, component c
+    int support = 0;              ///< the support whose value it holds
+    std::array<double, 2> x{};    ///< X_J
     double scale = 1, value = 0;
     std::vector<int> columns;  ///< overlap node indices of the particles reaching X_J
     std::vector<double> phi;   ///< phi_I(X_J)

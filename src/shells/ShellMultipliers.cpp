@@ -2,6 +2,8 @@
 
 #include <TpetraExt_MatrixMatrix.hpp>
 
+#include <Teuchos_CommHelpers.hpp>
+
 #include <cmath>
 
 #include "shells/ShellConstraints.hpp"
@@ -15,6 +17,7 @@ ShellMultipliers::ShellMultipliers(const ShellConstraints& constraints, const Ve
       correction_(mass_owned.getMap()) {
   std::vector<double> values;
   C_ = constraints.collocation_matrix(values);
+  row_supports_ = constraints.row_supports();
   const auto rows = C_->getRowMap();
   count_ = static_cast<long long>(rows->getGlobalNumElements());
   inv_mass_.reciprocal(mass_owned);
@@ -45,12 +48,36 @@ ShellMultipliers::ShellMultipliers(const ShellConstraints& constraints, const Ve
 
 void ShellMultipliers::correct(Vector& d_owned, double dt, Vector* force_owned) const {
   if (count_ == 0) return;
+  dt_ = dt;
   C_->apply(d_owned, r_);
   r_.update(-1.0, *g_, 1.0);
   solver_->apply(r_, y_, Teuchos::NO_TRANS, 1.0, 0.0);
   C_->apply(y_, correction_, Teuchos::TRANS);
   d_owned.elementWiseMultiply(-1.0, inv_mass_, correction_, 1.0);
   if (force_owned) force_owned->update(-1.0 / (dt * dt), correction_, 1.0);
+}
+
+void ShellMultipliers::set_values(const std::vector<double>& g) {
+  if (count_ == 0) return;
+  auto v = g_->getLocalViewHost(Tpetra::Access::OverwriteAll);
+  for (std::size_t k = 0; k < g.size(); ++k) v(k, 0) = g[k];
+}
+
+std::vector<double> ShellMultipliers::support_forces(std::size_t supports) const {
+  constexpr std::size_t nd = 5;
+  std::vector<double> mine(supports * nd, 0.0), all(mine.size(), 0.0);
+  if (count_ > 0) {
+    const auto y = y_.getLocalViewHost(Tpetra::Access::ReadOnly);
+    for (std::size_t k = 0; k < row_supports_.size(); ++k) {
+      const auto [support, component] = row_supports_[k];
+      mine[static_cast<std::size_t>(support) * nd + static_cast<std::size_t>(component)] -=
+          y(k, 0) / (dt_ * dt_);
+    }
+  }
+  if (!mine.empty())
+    Teuchos::reduceAll(*inv_mass_.getMap()->getComm(), Teuchos::REDUCE_SUM,
+                       static_cast<int>(mine.size()), mine.data(), all.data());
+  return all;
 }
 
 }  // namespace efg

@@ -39,12 +39,22 @@ class ShellMultipliers {
   /// The number of constrained dofs (all ranks).
   long long count() const { return count_; }
 
+  /// New values g of the rows (ShellConstraints::collocation_values: moving supports).
+  void set_values(const std::vector<double>& g);
+
+  /// The force each support applies to the shell in the last correct(), per component:
+  /// 5 entries per support, -sum_J lambda_J over its rows (the shape functions sum to one, so
+  /// that is the total of -C^T lambda). Collective.
+  std::vector<double> support_forces(std::size_t supports) const;
+
  private:
   Teuchos::RCP<Tpetra::CrsMatrix<>> C_;
   Teuchos::RCP<MatrixPreconditioner> solver_;
   Teuchos::RCP<Vector> g_;
   Vector inv_mass_;
   mutable Vector r_, y_, correction_;
+  mutable double dt_ = 1.0;  ///< of the last correct()
+  std::vector<std::pair<int, int>> row_supports_;
   long long count_ = 0;
 };
 
