@@ -73,6 +73,11 @@ ShellExplicitSummary run_shell_explicit_stage(const Model& model, const FlatShel
       << " held dofs (Lagrange multipliers)";
     Log::info(o.str());
   }
+  if (op.plastic())
+    Log::warning("stage '" + stage.name +
+                 "': J2 shells are experimental: where sections soften "
+                 "an odd-even pattern of the moments can grow along the shell, which spoils the "
+                 "supports' forces (the hinge moments are right; docs/shells.md, \"J2 shells\")");
 
   const auto map = mass.getMap();
   Vector f_ext(map), f_ext_old(map), f_int(map), a(map), v_next(map), d_old(map), step(map),
