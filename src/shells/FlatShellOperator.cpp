@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <map>
 #include <stdexcept>
+#include <utility>
 
 #include "core/Errors.hpp"
 #include "discretization/ShapeFunctions.hpp"
@@ -375,7 +376,9 @@ bool FlatShellOperator::plastic() const {
 }
 
 void FlatShellOperator::commit_state() const {
-  committed_ = trial_;
+  // Every evaluation writes the trial state of every point of a J2 part, so the old committed
+  // states may become the next trial buffer: a swap, not a copy.
+  std::swap(committed_, trial_);
 }
 
 std::vector<double> FlatShellOperator::plastic_strain() const {
