@@ -7,8 +7,8 @@
 //
 // Each process hands over its own entries (global 0-based row and column positions; duplicates
 // are summed); the right-hand side and the solution live on process 0 of the communicator.
-// The symbolic analysis (fill-reducing ordering by Scotch nested dissection, or PT-Scotch in
-// parallel on more than one process) is kept while the pattern stays the same. Free of Trilinos.
+// The symbolic analysis (fill-reducing ordering by PORD, on process 0) is kept while the pattern
+// stays the same. Free of Trilinos.
 #pragma once
 
 #include <mpi.h>
