@@ -75,9 +75,9 @@ ShellExplicitSummary run_shell_explicit_stage(const Model& model, const FlatShel
   }
   if (op.plastic())
     Log::warning("stage '" + stage.name +
-                 "': J2 shells are experimental: where sections soften "
-                 "an odd-even pattern of the moments can grow along the shell, which spoils the "
-                 "supports' forces (the hinge moments are right; docs/shells.md, \"J2 shells\")");
+                 "': J2 shells are experimental: a hinge forming at a held edge can grow an "
+                 "odd-even pattern of the moments along the shell, which spoils the supports' "
+                 "forces (docs/shells.md, \"J2 shells\")");
 
   const auto map = mass.getMap();
   Vector f_ext(map), f_ext_old(map), f_int(map), a(map), v_next(map), d_old(map), step(map),
