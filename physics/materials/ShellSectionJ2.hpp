@@ -45,4 +45,24 @@ EFG_PHYSICS_FUNCTION void j2_section_resultants(J2Parameters p, double t, int po
   }
 }
 
+/// The stress (xx, yy, xy) of one layer k of such a section at the strains eps, kappa, from its
+/// state (the committed one: on the yield surface the return then gives its stress back).
+EFG_PHYSICS_FUNCTION void j2_layer_stress(J2Parameters p, double t, int points, int k,
+                                          const double (&eps)[3], const double (&kappa)[3],
+                                          const double* states, double (&sigma)[3]) {
+  p.small_strain = true;
+  p.plane_stress = true;
+  double xi[max_thickness_points], w[max_thickness_points];
+  thickness_rule(points, xi, w);
+  const double z = 0.5 * t * xi[k];
+  const double e[3] = {eps[0] + z * kappa[0], eps[1] + z * kappa[1], eps[2] + z * kappa[2]};
+  const double H[2][2] = {{e[0], 0.5 * e[2]}, {0.5 * e[2], e[1]}};
+  double old_state[j2_state::count], new_state[j2_state::count], P[2][2], cauchy[3][3];
+  for (int s = 0; s < j2_state::count; ++s) old_state[s] = states[k * j2_state::count + s];
+  j2_update<double, 2>(p, H, old_state, 0.0, P, new_state, cauchy);
+  sigma[0] = P[0][0];
+  sigma[1] = P[1][1];
+  sigma[2] = P[0][1];
+}
+
 }  // namespace efg::physics

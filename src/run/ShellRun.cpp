@@ -142,13 +142,6 @@ RunOutcome run_shell_stages(const CommPtr& comm, const Model& model, const std::
   ResultsOutput output(comm, path, model.mesh, model.maps.owned_nodes, layout,
                        scene.title.empty() ? scene.name : scene.title);
   const auto volume = lumped_nodal_volumes(model.mesh);
-  std::vector<double> node_thickness(model.mesh.node_count(), 0.0);
-  for (const auto& part : model.parts)
-    for (auto n : part.cloud.mesh_node)
-      node_thickness[static_cast<std::size_t>(n)] = part.part->shell->thickness;
-  const auto thickness_of_node = [&](LocalIndex n) {
-    return node_thickness[static_cast<std::size_t>(n)];
-  };
   std::vector<std::vector<double>> history;
   FlatShellOperator::Vector d(op.maps().owned_dofs), v(op.maps().owned_dofs);
   RunOutcome outcome;
@@ -156,8 +149,8 @@ RunOutcome run_shell_stages(const CommPtr& comm, const Model& model, const std::
   auto record = [&](double time, double kinetic, double external_work,
                     const std::vector<double>& forces) {
     const auto values = op.physical_values(d);
-    const auto resultants =
-        with_stress || with_resultants ? op.resultants(d) : std::vector<double>{};
+    const auto resultants = with_resultants ? op.resultants(d) : std::vector<double>{};
+    const auto stresses = with_stress ? op.surface_stresses(d) : std::vector<double>{};
     // the largest effective plastic strain through the thickness (0 for elastic parts)
     const auto plastic = with_plastic ? op.plastic_strain() : std::vector<double>{};
     const auto& owned = model.partition.owned;
@@ -168,12 +161,8 @@ RunOutcome run_shell_stages(const CommPtr& comm, const Model& model, const std::
         for (std::size_t c = 0; c < nd; ++c) out(i, c) = values[i * nd + c];
         std::size_t column = nd;
         const double* r = resultants.empty() ? nullptr : &resultants[i * shell_strains];
-        if (with_stress) {  // sigma = N / t +- 6 M / t^2 at z = +- t / 2
-          const double t = thickness_of_node(owned[i]);
-          for (double side : {1.0, -1.0})
-            for (std::size_t c = 0; c < 3; ++c)
-              out(i, column++) = r[c] / t + side * 6 * r[3 + c] / (t * t);
-        }
+        if (with_stress)
+          for (std::size_t c = 0; c < 6; ++c) out(i, column++) = stresses[i * 6 + c];
         if (with_resultants)
           for (std::size_t c = 0; c < shell_strains; ++c) out(i, column++) = r[c];
         if (with_plastic) out(i, column++) = plastic[i];

@@ -68,13 +68,6 @@ void check_shell_scene(const Scene& s, const BackgroundMesh& mesh) {
                    "' is a J2 shell, and implicit shell stages are linear "
                    "elastic in this version (no Newton iteration for shells yet): expected "
                    "explicit");
-      for (std::size_t k = 0; k < s.output.fields.size(); ++k)
-        if (s.output.fields[k] == "stress")
-          fail(s, d["output"]["fields"][k], "output.fields[" + std::to_string(k) + "]",
-               "part '" + part.name +
-                   "' is a J2 shell, whose layers' stresses are not written "
-                   "yet (N / t +- 6 M / t^2 would not be them once it yields): expected resultants "
-                   "and plastic_strain");
       if (material.constants.count("failure_strain"))
         fail(s, d["materials"], "materials",
              "material '" + material.name + "' of shell part '" + part.name +

@@ -27,6 +27,7 @@ constexpr int nd = shell_dofs_per_node;
 FlatShellOperator::FlatShellOperator(const Model& model, int thickness_points,
                                      double shear_stabilization)
     : model_(model), maps_(make_dof_maps(model.maps.owned_nodes->getComm(), model.partition, nd)) {
+  ++instances_;
   if (model.mesh.dimension != 2)
     throw InputError(model.scene.file + ": flat shells need a 2D mid-surface mesh");
   for (const auto& d : model.parts) {
@@ -392,6 +393,43 @@ std::vector<double> FlatShellOperator::plastic_strain() const {
         largest = std::max(
             largest,
             committed_[part][(q * n + k) * physics::j2_state::count + physics::j2_state::alpha]);
+    }
+  }
+  return out;
+}
+
+std::vector<double> FlatShellOperator::surface_stresses(const Vector& d_owned) const {
+  const auto d_overlap = to_overlap(d_owned);
+  const auto d = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
+  std::vector<double> out(maps_.owned_nodes->getNodeNumElements() * 6, 0.0);
+  for (std::size_t part = 0; part < points_.size(); ++part) {
+    const double t = thickness_[part];
+    for (std::size_t q = 0; q < points_[part].size(); ++q) {
+      const auto& p = points_[part][q];
+      double* o = &out[static_cast<std::size_t>(p.owned_row) * 6];
+      double e[shell_strains];
+      point_strains(p, d, e);
+      if (!j2_[part]) {
+        double R[shell_strains];
+        point_resultants(part, p, d, e, R);
+        for (std::size_t c = 0; c < 3; ++c) {
+          o[c] = R[c] / t + 6 * R[3 + c] / (t * t);
+          o[3 + c] = R[c] / t - 6 * R[3 + c] / (t * t);
+        }
+        continue;
+      }
+      const int n = layers_[part];
+      const double* states =
+          committed_[part].data() + q * static_cast<std::size_t>(n) * physics::j2_state::count;
+      double top[3], bottom[3];
+      physics::j2_layer_stress(*j2_[part], t, n, n - 1, {e[0], e[1], e[2]}, {e[3], e[4], e[5]},
+                               states, top);
+      physics::j2_layer_stress(*j2_[part], t, n, 0, {e[0], e[1], e[2]}, {e[3], e[4], e[5]}, states,
+                               bottom);
+      for (std::size_t c = 0; c < 3; ++c) {
+        o[c] = top[c];
+        o[3 + c] = bottom[c];
+      }
     }
   }
   return out;

@@ -15,6 +15,7 @@
 #include <Tpetra_Vector.hpp>
 
 #include <array>
+#include <atomic>
 #include <functional>
 #include <optional>
 #include <vector>
@@ -41,6 +42,9 @@ class FlatShellOperator {
   explicit FlatShellOperator(const Model& model, int thickness_points = 2,
                              double shear_stabilization = 0.1);
 
+  /// How many shell operators this process has built: a solid scene builds none (tested).
+  static long long instances() { return instances_; }
+
   const DofMaps& maps() const { return maps_; }
   const physics::MindlinSection& section(std::size_t part) const { return sections_[part]; }
   /// The section of part p where the particle spacing is h (its shear stabilized).
@@ -63,6 +67,10 @@ class FlatShellOperator {
   /// point's strains (smoothed membrane and bending strains, i.e. the means over its nodal cell;
   /// the shear strain at the particle, with the stabilized shear stiffness the solve used).
   std::vector<double> resultants(const Vector& d_owned) const;
+  /// The stresses (xx, yy, xy) on the top and the bottom of every owned particle's section (6 per
+  /// particle, in the order of maps().owned_nodes): elastic parts N / t +- 6 M / t^2 at
+  /// z = +- t / 2; J2 parts the stresses of the outermost Gauss layers (committed states).
+  std::vector<double> surface_stresses(const Vector& d_owned) const;
   /// Strain energy 1/2 d^T K d of this rank's points (without constraints); for J2 parts the
   /// internal energy of the committed state (stored + dissipated, through the thickness) and
   /// the elastic shear energy.
@@ -121,6 +129,7 @@ class FlatShellOperator {
   /// per part: j2_state::count doubles per thickness point per integration point
   mutable std::vector<std::vector<double>> committed_, trial_;
   mutable bool elastic_probe_ = false;
+  static inline std::atomic<long long> instances_{0};
   std::vector<physics::MindlinSection> sections_;
   std::vector<double> thickness_, alpha_;
   std::vector<std::vector<Point>> points_;  ///< per part

@@ -9,7 +9,9 @@ the last 10, the residual vibration; kinetic energy below 1e-3 of the internal e
 strain > 0 at the middle), and the moments of the particles in the middle half follow statics,
 M = -q x (L - x) / 2, within 3 % of M_p (statics holds whatever the material does).
 Above (q = 1.04 q_c): it runs away (the middle's deflection at the end more than 5 times that at
-the end of the rise) while the particles at the middle carry 1.0053 M_p within 2 %.
+the end of the rise) while the particles at the middle carry 1.0053 M_p within 2 %, their
+outermost layers (the stress_top/bottom output) in the fully plastic plane-strain state,
+|sigma_xx| = 2 sigma_y / sqrt 3 and sigma_yy = sigma_xx / 2, within 2 %.
 usage: check_shell_j2_collapse.py BELOW/history.csv BELOW.e ABOVE/history.csv ABOVE.e
 """
 import csv
@@ -67,6 +69,17 @@ hinge = -last("moment_xx")[np.abs(x - L / 2) < 1e-9] / (1.0052943945513044 * M_p
 print("above: hinge moments / (1.0053 M_p): %s" % np.array2string(hinge, precision=4))
 if hinge.size == 0 or np.any(np.abs(hinge - 1) > 0.02):
     errors.append("hinge moments %s, expected 1 within 2 %%" % hinge)
+# the outermost layers at the hinge in the fully plastic plane-strain state: |sigma_xx| =
+# 2 sigma_y / sqrt 3 and sigma_yy = sigma_xx / 2 (von Mises with eps_yy = 0 and plastic flow)
+at_hinge = np.abs(x - L / 2) < 1e-9
+for side in ("top", "bottom"):
+    sxx, syy = last("stress_%s_xx" % side)[at_hinge], last("stress_%s_yy" % side)[at_hinge]
+    print("above: %s layer at the hinge: |sigma_xx| / (2 sigma_y / sqrt 3) %s, sigma_yy / sigma_xx %s"
+          % (side, np.array2string(np.abs(sxx) / (2 * sigma_y / math.sqrt(3)), precision=4),
+             np.array2string(syy / sxx, precision=4)))
+    if np.any(np.abs(np.abs(sxx) / (2 * sigma_y / math.sqrt(3)) - 1) > 0.02) or \
+            np.any(np.abs(syy / sxx - 0.5) > 0.02):
+        errors.append("the %s layer at the hinge is not in the plane-strain plastic state" % side)
 if errors:
     sys.exit("\n".join(errors))
 print("ok")

@@ -82,6 +82,16 @@ TEST(ShellSectionJ2, EquibiaxialBendingFollowsTheLayersClosedForm) {
     EXPECT_NEAR(M[1], expected, 1e-10 * yield * t * t) << factor;
     EXPECT_NEAR(M[2], 0.0, 1e-12 * yield * t * t);
     for (int i = 0; i < 3; ++i) EXPECT_NEAR(N[i], 0.0, 1e-12 * yield * t);
+    // the outermost layers' stresses from the committed states (the output's top and bottom)
+    double top[3], bottom[3];
+    j2_layer_stress(perfectly_plastic(), t, n, n - 1, eps, kappa, new_states, top);
+    j2_layer_stress(perfectly_plastic(), t, n, 0, eps, kappa, new_states, bottom);
+    const double z = 0.5 * t * xi[n - 1];
+    const double outer = std::min(E / (1 - nu) * z * k, yield);
+    EXPECT_NEAR(top[0], outer, 1e-10 * yield) << factor;
+    EXPECT_NEAR(top[1], outer, 1e-10 * yield) << factor;
+    EXPECT_NEAR(bottom[0], -outer, 1e-10 * yield) << factor;
+    EXPECT_NEAR(top[2], 0.0, 1e-12 * yield);
     if (factor > 100) {  // fully plastic: sigma_y t^2 / 4 sum_k w_k |xi_k|
       double q = 0;
       for (int j = 0; j < n; ++j) q += w[j] * std::abs(xi[j]);

@@ -7,9 +7,11 @@
 #include <Tpetra_Core.hpp>
 
 #include <cmath>
+#include <filesystem>
 #include <sstream>
 
 #include "parallel/ReproducibleSum.hpp"
+#include "run/Simulation.hpp"
 #include "scene/SceneReader.hpp"
 #include "shells/FlatShellOperator.hpp"
 #include "shells/ShellConstraints.hpp"
@@ -137,6 +139,26 @@ TEST(ShellDynamics, MultipliersProjectOntoTheSupportsInTheMassNorm) {
   expected.elementWiseMultiply(1.0 / 0.25, mass, change, 0.0);
   force.update(-1.0, expected, 1.0);
   EXPECT_LT(force.normInf(), 1e-12 * expected.normInf());
+}
+
+// A scene builds only what it needs: an explicit solid run constructs no shell operator, a shell
+// run does (so the count can tell).
+TEST(ShellDynamics, SolidSceneBuildsNoShellMachinery) {
+  const auto comm = Tpetra::getDefaultComm();
+  const auto dir = std::filesystem::path(EFG_TEST_TMP) / "shell_machinery";
+  std::filesystem::create_directories(dir);
+  const std::string solid =
+      "mesh:\n  generate: {element: quad4, lower: [0, 0], upper: [1, 1], cells: [4, 4]}\n"
+      "parts:\n  - {name: b, blocks: [block_1], material: m}\n"
+      "materials:\n  - {name: m, model: linear_elastic, youngs_modulus: 1000, "
+      "poissons_ratio: 0.3, density: 1}\n"
+      "stages:\n  - {name: s, driver: explicit, end_time: 1e-3}\n";
+  const auto before = FlatShellOperator::instances();
+  run_stages(comm, build_model(comm, parse_scene(solid, "solid.yaml")), (dir / "solid.e").string());
+  EXPECT_EQ(FlatShellOperator::instances(), before);
+  const auto model = plate(3, 0.0, 0.05);
+  run_stages(comm, model, (dir / "shell.e").string());
+  EXPECT_GT(FlatShellOperator::instances(), before);
 }
 
 }  // namespace
