@@ -12,6 +12,7 @@
 #include "core/Log.hpp"
 #include "core/Progress.hpp"
 #include "parallel/Collective.hpp"
+#include "parallel/NonFinite.hpp"
 #include "parallel/ReproducibleSum.hpp"
 
 namespace efg {
@@ -119,15 +120,7 @@ bool ExplicitDriver::finite(const RunState& state) const {
 }
 
 void ExplicitDriver::report_non_finite(const RunState& state, long long step) const {
-  const auto& map = *state.d.getMap();
-  const auto d = state.d.getLocalViewHost(Tpetra::Access::ReadOnly);
-  const auto v = state.v.getLocalViewHost(Tpetra::Access::ReadOnly);
-  long long bad = -1;
-  for (std::size_t k = 0; k < d.extent(0) && bad < 0; ++k)
-    if (!std::isfinite(d(k, 0)) || !std::isfinite(v(k, 0)))
-      bad = map.getGlobalElement(static_cast<int>(k));
-  long long any = -1;
-  Teuchos::reduceAll(*map.getComm(), Teuchos::REDUCE_MAX, bad, Teuchos::outArg(any));
+  const long long any = non_finite_dof(state.d, &state.v);
   const int dim = ops_.model().mesh.dimension;
   const auto node = static_cast<std::size_t>(any / dim);
   std::ostringstream o;

@@ -9,6 +9,7 @@
 #include "core/Errors.hpp"
 #include "core/Log.hpp"
 #include "drivers/StableTimeStep.hpp"
+#include "parallel/NonFinite.hpp"
 #include "parallel/ReproducibleSum.hpp"
 #include "run/ShellStageInputs.hpp"
 #include "shells/ShellConstraints.hpp"
@@ -20,17 +21,12 @@ namespace {
 using Vector = FlatShellOperator::Vector;
 constexpr int nd = shell_dofs_per_node;
 
-// The first owned dof whose value is not finite, as "particle N (dof c)", or "" (collective).
+// The dof of a non-finite displacement as "particle N (dof c)", or "" (collective).
 std::string first_non_finite(const Vector& d) {
-  const auto v = d.getLocalViewHost(Tpetra::Access::ReadOnly);
-  long long mine = -1, worst = -1;
-  for (std::size_t k = 0; k < v.extent(0) && mine < 0; ++k)
-    if (!std::isfinite(v(k, 0)))
-      mine = static_cast<long long>(d.getMap()->getGlobalElement(static_cast<int>(k)));
-  Teuchos::reduceAll(*d.getMap()->getComm(), Teuchos::REDUCE_MAX, 1, &mine, &worst);
-  if (worst < 0) return "";
-  const char* const dof[nd] = {"u", "v", "w", "theta_x", "theta_y"};
-  return "particle " + std::to_string(worst / nd + 1) + " (" + dof[worst % nd] + ")";
+  const long long dof = non_finite_dof(d);
+  if (dof < 0) return "";
+  const char* const name[nd] = {"u", "v", "w", "theta_x", "theta_y"};
+  return "particle " + std::to_string(dof / nd + 1) + " (" + name[dof % nd] + ")";
 }
 
 }  // namespace
@@ -46,9 +42,12 @@ ShellExplicitSummary run_shell_explicit_stage(const Model& model, const FlatShel
   inv_mass.reciprocal(mass);
 
   const auto supports_at = [&](double time) { return shell_supports_at(scene, stage.name, time); };
-  const ShellConstraints constraints(model, op, supports_at(start));
+  const auto supports_then = supports_at(start);
+  const ShellConstraints constraints(model, op, supports_then);
   ShellMultipliers multipliers(constraints, mass);
-  const std::size_t supports = supports_at(start).size();
+  const std::size_t supports = supports_then.size();
+  // Supports held still keep their values and do no work: nothing to re-evaluate per step.
+  const bool moving = shell_supports_move(scene, stage.name);
 
   const auto internal_force = [&op](const Vector& x, Vector& f) { op.internal_force(x, f); };
   StableTimeStep stable(internal_force, mass, [&op](bool on) { op.set_elastic_probe(on); });
@@ -102,7 +101,7 @@ ShellExplicitSummary run_shell_explicit_stage(const Model& model, const FlatShel
   // t_(n+1): the predicted d + dt v projected by the multipliers gives the velocity that keeps
   // them; f_support is their force -C^T lambda in the step.
   const auto next_velocity = [&](double dt_mean, double dt_next, double t_next) {
-    multipliers.set_values(constraints.collocation_values(supports_at(t_next)));
+    if (moving) multipliers.set_values(constraints.collocation_values(supports_at(t_next)));
     v_next.update(1.0, v, dt_mean, a, 0.0);
     Tpetra::deep_copy(step, d);
     step.update(dt_next, v_next, 1.0);
@@ -132,10 +131,9 @@ ShellExplicitSummary run_shell_explicit_stage(const Model& model, const FlatShel
     worst_imbalance = std::max(worst_imbalance, std::abs(kin + strain - energy0 - external_work));
     summary.energy_error = largest_energy > 0 ? worst_imbalance / largest_energy : 0.0;
   };
-  // The supports' forces written at a record are their impulse since the previous record over
-  // the time between: the mean force, free of the step-to-step ringing of the multipliers
-  // (a moving support drives the particles next to it at the highest frequencies).
-  std::vector<double> impulse(supports * nd, 0.0);
+  // The supports' forces written at a record are their mean since the previous record (the
+  // impulse over the time between): a moving support drives the particles next to it at the
+  // highest frequencies, and the step-to-step multipliers ring.
   double since = start;
   for (;;) {
     const bool last = t >= stage.end_time - 1e-12 * std::max(1.0, std::abs(stage.end_time));
@@ -148,25 +146,22 @@ ShellExplicitSummary run_shell_explicit_stage(const Model& model, const FlatShel
       if (last) Tpetra::deep_copy(v, v_n);
       const double kin = kinetic(v_n);
       account(kin);
-      auto forces = multipliers.support_forces(supports);
-      if (t > since)
-        for (std::size_t k = 0; k < forces.size(); ++k) forces[k] = impulse[k] / (t - since);
-      record(t, kin, external_work, forces);
-      std::fill(impulse.begin(), impulse.end(), 0.0);
+      record(t, kin, external_work, multipliers.mean_support_forces(supports, t - since));
       since = t;
       next_output += interval;
     }
     if (last) break;
-    const auto forces = multipliers.support_forces(supports);
-    for (std::size_t k = 0; k < forces.size(); ++k) impulse[k] += forces[k] * dt_next;
+    multipliers.accumulate_impulse(dt_next);
     Tpetra::deep_copy(d_old, d);
     d.update(dt_next, v_next, 1.0);
-    // The supports' work: their force at t_n over the mean of the steps around it (zero for
+    // The supports' work: their force at t_n over the mean of the steps around it (none for
     // supports held still, whose force is normal to every motion they allow).
     step.update(1.0, d, -1.0, d_old, 0.0);
-    step_before.update(1.0, step, 1.0);
-    external_work += 0.5 * reproducible_dot(f_support, step_before);
-    Tpetra::deep_copy(step_before, step);
+    if (moving) {
+      step_before.update(1.0, step, 1.0);
+      external_work += 0.5 * reproducible_dot(f_support, step_before);
+      Tpetra::deep_copy(step_before, step);
+    }
     Tpetra::deep_copy(v, v_next);
     t += dt_next;
     dt_prev = dt_next;

@@ -138,7 +138,9 @@ RunOutcome run_shell_stages(const CommPtr& comm, const Model& model, const std::
         layout.global.push_back("support_" + bc.name + "_" + force_names[c]);
       }
   }
-  std::string stage_now;  // the stage a record belongs to
+  // Per condition, its place among those active in the stage being run (-1: not active there):
+  // the stage's support forces come 5 per active condition, in the scene's order.
+  std::vector<int> place_in_stage(scene.boundary_conditions.size(), -1);
   ResultsOutput output(comm, path, model.mesh, model.maps.owned_nodes, layout,
                        scene.title.empty() ? scene.name : scene.title);
   const auto volume = lumped_nodal_volumes(model.mesh);
@@ -174,16 +176,10 @@ RunOutcome run_shell_stages(const CommPtr& comm, const Model& model, const std::
     Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, 1, &local, &energy);
     std::vector<double> global = {energy, kinetic, external_work};
     for (double p : probe_values(model, d, op)) global.push_back(p);
-    // forces holds 5 entries per condition active in the stage, in the scene's order
     for (const auto& [i, c] : support_columns) {
-      std::size_t k = 0;
-      bool active = false;
-      for (std::size_t j = 0; j <= i; ++j)
-        if (scene.boundary_conditions[j].stages.includes(stage_now)) {
-          active = j == i;
-          if (j < i) ++k;
-        }
-      global.push_back(active && !forces.empty() ? forces[k * nd + c] : 0.0);
+      const int k = place_in_stage[i];
+      global.push_back(k >= 0 && !forces.empty() ? forces[static_cast<std::size_t>(k) * nd + c]
+                                                 : 0.0);
     }
     output.write(time, nodal, global);
     history.push_back(global);
@@ -212,7 +208,9 @@ RunOutcome run_shell_stages(const CommPtr& comm, const Model& model, const std::
       r.name = stage.name;
       r.time = stage.end_time;
       r.dofs = static_cast<long long>(op.maps().owned_dofs->getGlobalNumElements());
-      stage_now = stage.name;
+      for (std::size_t i = 0, k = 0; i < scene.boundary_conditions.size(); ++i)
+        place_in_stage[i] =
+            scene.boundary_conditions[i].stages.includes(stage.name) ? static_cast<int>(k++) : -1;
       if (stage.driver == "explicit") {
         const auto summary = run_shell_explicit_stage(model, op, stage, start, d, v, record);
         r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begun).count();

@@ -29,6 +29,18 @@ std::vector<ShellSupport> shell_supports_at(const Scene& scene, const std::strin
   return out;
 }
 
+bool shell_supports_move(const Scene& scene, const std::string& stage) {
+  for (const auto& bc : scene.boundary_conditions) {
+    if (!bc.stages.includes(stage)) continue;
+    if (!bc.curve.empty()) return true;
+    for (std::size_t c = 0; c < nd; ++c) {
+      const auto& field = c < 3 ? bc.components[c] : bc.rotations[c - 3];
+      if (field && field->uses_time()) return true;
+    }
+  }
+  return false;
+}
+
 FlatShellOperator::Pressure shell_pressure_at(const Model& model, const std::string& stage,
                                               double time) {
   const auto& scene = model.scene;

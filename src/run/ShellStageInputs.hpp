@@ -15,6 +15,10 @@ namespace efg {
 std::vector<ShellSupport> shell_supports_at(const Scene& scene, const std::string& stage,
                                             double time);
 
+/// Whether the conditions active in `stage` can prescribe different values at different times
+/// (a curve, or an expression of t): explicit stages then re-evaluate them every step.
+bool shell_supports_move(const Scene& scene, const std::string& stage);
+
 /// The shell_pressure loads active in `stage`, summed, at `time` (a load without a curve at full
 /// value).
 FlatShellOperator::Pressure shell_pressure_at(const Model& model, const std::string& stage,

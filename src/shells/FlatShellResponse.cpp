@@ -41,14 +41,16 @@ double FlatShellOperator::strain_energy(const Vector& d_owned) const {
   for (std::size_t part = 0; part < points_.size(); ++part)
     for (const auto& p : points_[part]) {
       double e[shell_strains], R[shell_strains], work = 0;
-      point_resultants(part, p, d, e, R);
       if (!j2_[part]) {
+        point_resultants(part, p, d, e, R);
         for (int i = 0; i < shell_strains; ++i) work += R[i] * e[i];
         energy += 0.5 * p.weight * work;
         continue;
       }
-      // stored + dissipated energy of the committed layers (per unit volume, times dz), and
-      // the elastic transverse shear
+      // stored + dissipated energy of the committed layers (per unit volume, times dz: no
+      // return map needed), and the elastic transverse shear
+      point_strains(p, d, e);
+      const double shear = section_at(part, p.spacing).shear;
       double xi[physics::max_thickness_points], w[physics::max_thickness_points];
       const int n = physics::thickness_rule(layers_[part], xi, w);
       const auto q = static_cast<std::size_t>(&p - points_[part].data());
@@ -58,7 +60,7 @@ double FlatShellOperator::strain_energy(const Vector& d_owned) const {
         work += 0.5 * thickness_[part] * w[k] *
                 (state[k * physics::j2_state::count + physics::j2_state::elastic_energy] +
                  state[k * physics::j2_state::count + physics::j2_state::dissipation]);
-      energy += p.weight * (work + 0.5 * (R[6] * e[6] + R[7] * e[7]));
+      energy += p.weight * (work + 0.5 * shear * (e[6] * e[6] + e[7] * e[7]));
     }
   return energy;
 }
@@ -170,7 +172,6 @@ std::vector<double> FlatShellOperator::surface_stresses(const Vector& d_owned) c
       const auto& p = points_[part][q];
       double* o = &out[static_cast<std::size_t>(p.owned_row) * 6];
       double e[shell_strains];
-      point_strains(p, d, e);
       if (!j2_[part]) {
         double R[shell_strains];
         point_resultants(part, p, d, e, R);
@@ -180,6 +181,7 @@ std::vector<double> FlatShellOperator::surface_stresses(const Vector& d_owned) c
         }
         continue;
       }
+      point_strains(p, d, e);
       const int n = layers_[part];
       const double* states =
           committed_[part].data() + q * static_cast<std::size_t>(n) * physics::j2_state::count;

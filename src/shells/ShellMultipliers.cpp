@@ -4,6 +4,7 @@
 
 #include <Teuchos_CommHelpers.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 #include "shells/ShellConstraints.hpp"
@@ -18,6 +19,7 @@ ShellMultipliers::ShellMultipliers(const ShellConstraints& constraints, const Ve
   std::vector<double> values;
   C_ = constraints.collocation_matrix(values);
   row_supports_ = constraints.row_supports();
+  impulse_.assign(row_supports_.size(), 0.0);
   const auto rows = C_->getRowMap();
   count_ = static_cast<long long>(rows->getGlobalNumElements());
   inv_mass_.reciprocal(mass_owned);
@@ -63,16 +65,23 @@ void ShellMultipliers::set_values(const std::vector<double>& g) {
   for (std::size_t k = 0; k < g.size(); ++k) v(k, 0) = g[k];
 }
 
-std::vector<double> ShellMultipliers::support_forces(std::size_t supports) const {
+void ShellMultipliers::accumulate_impulse(double dt) {
+  if (count_ == 0) return;
+  const auto y = y_.getLocalViewHost(Tpetra::Access::ReadOnly);
+  for (std::size_t k = 0; k < impulse_.size(); ++k) impulse_[k] -= y(k, 0) / (dt_ * dt_) * dt;
+}
+
+std::vector<double> ShellMultipliers::mean_support_forces(std::size_t supports, double elapsed) {
   constexpr std::size_t nd = 5;
   std::vector<double> mine(supports * nd, 0.0), all(mine.size(), 0.0);
   if (count_ > 0) {
     const auto y = y_.getLocalViewHost(Tpetra::Access::ReadOnly);
     for (std::size_t k = 0; k < row_supports_.size(); ++k) {
       const auto [support, component] = row_supports_[k];
-      mine[static_cast<std::size_t>(support) * nd + static_cast<std::size_t>(component)] -=
-          y(k, 0) / (dt_ * dt_);
+      mine[static_cast<std::size_t>(support) * nd + static_cast<std::size_t>(component)] +=
+          elapsed > 0 ? impulse_[k] / elapsed : -y(k, 0) / (dt_ * dt_);
     }
+    std::fill(impulse_.begin(), impulse_.end(), 0.0);
   }
   if (!mine.empty())
     Teuchos::reduceAll(*inv_mass_.getMap()->getComm(), Teuchos::REDUCE_SUM,

@@ -42,10 +42,14 @@ class ShellMultipliers {
   /// New values g of the rows (ShellConstraints::collocation_values: moving supports).
   void set_values(const std::vector<double>& g);
 
-  /// The force each support applies to the shell in the last correct(), per component:
+  /// Adds the last correct()'s constraint impulse over a step dt, -lambda dt per row (local: no
+  /// communication; a moving support's multipliers ring from step to step, their mean does not).
+  void accumulate_impulse(double dt);
+  /// The mean force each support applied to the shell since the previous call, per component:
   /// 5 entries per support, -sum_J lambda_J over its rows (the shape functions sum to one, so
-  /// that is the total of -C^T lambda). Collective.
-  std::vector<double> support_forces(std::size_t supports) const;
+  /// that is the total of -C^T lambda), the accumulated impulse over `elapsed`; with elapsed 0
+  /// the last correct()'s force. Resets the impulse. Collective.
+  std::vector<double> mean_support_forces(std::size_t supports, double elapsed);
 
  private:
   Teuchos::RCP<Tpetra::CrsMatrix<>> C_;
@@ -55,6 +59,7 @@ class ShellMultipliers {
   mutable Vector r_, y_, correction_;
   mutable double dt_ = 1.0;  ///< of the last correct()
   std::vector<std::pair<int, int>> row_supports_;
+  std::vector<double> impulse_;  ///< per row of this rank, since the last mean_support_forces
   long long count_ = 0;
 };
 
