@@ -134,5 +134,59 @@ INSTANTIATE_TEST_SUITE_P(Materials, Operators,
                                             ::testing::Values("linear_elastic", "neo_hookean"),
                                             ::testing::Values("scni", "gauss")));
 
+// A rejected Newton iterate or a cut-back load step (issue 15): force and tangent evaluations
+// at a trial displacement write only the trial history, so the committed history of a J2 part
+// stays bit for bit what the accepted step left, and the force at the accepted displacement is
+// reproduced bit for bit after the rejected evaluations (the implicit driver relies on both).
+TEST(History, RejectedEvaluationsLeaveTheCommittedStateBitIdentical) {
+  for (const char* formulation : {"small_strain", "total_lagrangian"}) {
+    SCOPED_TRACE(formulation);
+    Fixture fx(std::string("mesh:\n  generate: {element: quad4, lower: [0, 0], upper: [2, 1], "
+                           "cells: [8, 4], perturbation: 0.25, seed: 4}\n"
+                           "parts:\n  - {name: body, blocks: [block_1], material: m, section: "
+                           "{formulation: ") +
+               formulation +
+               ", integration: scni, dilation: 1.6}}\n"
+               "materials:\n  - {name: m, model: j2_plasticity, youngs_modulus: 100, "
+               "poissons_ratio: 0.3, yield_stress: 0.2, hardening_modulus: 5}\n");
+    auto& history = fx.op->history();
+    ASSERT_TRUE(history.any());
+    const auto host = [&] {
+      const auto& view = history.part(0).committed;
+      auto copy = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), view);
+      return std::vector<double>(copy.data(), copy.data() + copy.size());
+    };
+    const auto force_values = [&](const Vector& d) {
+      const auto f = fx.force(d);
+      const auto v = f.getLocalViewHost(Tpetra::Access::ReadOnly);
+      return std::vector<double>(v.data(), v.data() + v.extent(0));
+    };
+    const auto initial = host();
+    const auto accepted = fx.displacement(0.01);
+    force_values(accepted);
+    history.commit();  // the accepted (plastic) step
+    const auto committed = host();
+    ASSERT_NE(committed, initial) << "the accepted step must be plastic for the test to mean much";
+    const auto f_before = force_values(accepted);
+
+    // Rejected iterates: three times further, force and tangent (the trial history changes).
+    const auto rejected = fx.displacement(0.03);
+    const auto f_rejected = force_values(rejected);
+    FEMatrix K(Teuchos::rcp_const_cast<FEGraph>([&] {
+      CouplingGraph graph(fx.model.maps.overlap_nodes->getNodeNumElements());
+      fx.op->add_point_couplings(graph);
+      return graph.build(fx.model.maps);
+    }()));
+    K.beginAssembly();
+    fx.op->add_tangent(fx.overlap(rejected), K);
+    K.endAssembly();
+    ASSERT_NE(f_rejected, f_before);
+
+    EXPECT_TRUE(host() == committed) << "a rejected evaluation changed the committed history";
+    EXPECT_TRUE(force_values(accepted) == f_before)
+        << "the force at the accepted displacement changed after a rejected evaluation";
+  }
+}
+
 }  // namespace
 }  // namespace efg
