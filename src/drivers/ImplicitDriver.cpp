@@ -58,13 +58,14 @@ StageSummary ImplicitDriver::run(Vector& d, const OutputHook& output) {
     // state): on a steady load path Newton starts near the answer instead of at the last one,
     // where a plastic step's first iterate overshot (det F <= 0 in a trial, cutbacks). The
     // residual of the unpredicted start stays the scale of the Newton test.
-    double step_scale = 0;
+    double step_scale = 0, step_energy = 0;
     if (previous_dt > 0) {
       problem_.residual(d, start_residual);
       step_scale = start_residual.norm2();
+      step_energy = std::abs((target - t) / previous_dt * increment.dot(start_residual));
       d.update((target - t) / previous_dt, increment, 1.0);
     }
-    const auto result = newton.solve(d, step_scale);
+    const auto result = newton.solve(d, step_scale, step_energy);
     summary.newton_iterations += result.iterations;
     summary.linear_iterations += result.linear_iterations;
     summary.newton_records.push_back(result.record);

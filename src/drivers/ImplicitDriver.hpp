@@ -9,6 +9,7 @@
 #include <functional>
 
 #include "drivers/NewtonSolver.hpp"
+#include "drivers/StaticProblem.hpp"
 
 namespace efg {
 

@@ -61,7 +61,7 @@ NOX::StatusTest::StatusType NewtonConvergence::checkStatus(const NOX::Solver::Ge
   // mixed u-p system at nu = 0.499999 stops near 1e-9 of r_0), and an update of negligible
   // energy is the answer, not a failure.
   const double energy = std::abs(dd->innerProduct(previous.getF()));
-  if (k == 1) first_energy_ = energy;
+  if (k == 1) first_energy_ = std::max(energy, step_energy_);
   if (k > 1 && energy <= energy_tol_ * first_energy_) {
     record_.reason = "energy of the update below its tolerance";
     return status_ = NOX::StatusTest::Converged;

@@ -6,9 +6,12 @@
 //       predictor moved it, ImplicitDriver),
 //   (b) the problem is linear and the linear solve of the iteration converged (one Newton step of
 //       an affine residual with an exact direction is the solution: never cut back), or
-//   (c) |dd_k . r_{k-1}| <= energy_tol * |dd_1 . r_0|   (energy norm of the update: Bathe 1996,
-//       sec. 8.4.4; it also ends iterations stuck at the round-off floor of f_int, where the
-//       update is round-off too).
+//   (c) |dd_k . r_{k-1}| <= energy_tol * max(|dd_1 . r_0|, W_step)   (energy norm of the update:
+//       Bathe 1996, sec. 8.4.4; it also ends iterations stuck at the round-off floor of f_int,
+//       where the update is round-off too). W_step: after an extrapolated predictor, the work of
+//       the unpredicted residual over the predicted increment, so that a predictor that lands on
+//       the answer (a step that stays elastic: the first update is round-off already) is judged
+//       against the step's energy, not against round-off.
 // Fails when the linear solve of an iteration did not converge and reduced the residual of its
 // system by less than 1e-3 (the direction is no Newton direction: a singular or hopeless system),
 // or when ||r|| grows above 1e3 ||r_0|| (divergence). Keeps the per-iteration record the log and
@@ -22,7 +25,7 @@
 #include <string>
 #include <vector>
 
-#include "drivers/StaticProblem.hpp"
+#include "drivers/NonlinearProblem.hpp"
 
 namespace efg {
 
@@ -43,14 +46,17 @@ class NewtonConvergence : public NOX::StatusTest::Generic {
 
   /// `step_scale`: the residual norm of the load step's start before a predictor moved it (0:
   /// none), kept in the force scale so that a predicted start judges by the step's forces.
-  NewtonConvergence(const StaticProblem& problem, double tolerance, double energy_tolerance,
-                    LinearResidualRatio ratio, NewtonRecord& record, double step_scale = 0.0)
+  /// `step_energy`: W_step of (c) (0: none).
+  NewtonConvergence(const NonlinearProblem& problem, double tolerance, double energy_tolerance,
+                    LinearResidualRatio ratio, NewtonRecord& record, double step_scale = 0.0,
+                    double step_energy = 0.0)
       : problem_(problem),
         tol_(tolerance),
         energy_tol_(energy_tolerance),
         ratio_(std::move(ratio)),
         record_(record),
-        step_scale_(step_scale) {}
+        step_scale_(step_scale),
+        step_energy_(step_energy) {}
 
   NOX::StatusTest::StatusType checkStatus(const NOX::Solver::Generic& solver,
                                           NOX::StatusTest::CheckType type) override;
@@ -60,11 +66,11 @@ class NewtonConvergence : public NOX::StatusTest::Generic {
  private:
   void record_linear_solve(const NOX::Solver::Generic& solver, const NOX::Abstract::Vector& update);
 
-  const StaticProblem& problem_;
+  const NonlinearProblem& problem_;
   double tol_, energy_tol_;
   LinearResidualRatio ratio_;
   NewtonRecord& record_;
-  double first_energy_ = 0, step_scale_ = 0;
+  double first_energy_ = 0, step_scale_ = 0, step_energy_ = 0;
   NOX::StatusTest::StatusType status_ = NOX::StatusTest::Unevaluated;
 };
 

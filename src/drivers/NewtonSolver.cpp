@@ -111,17 +111,20 @@ Teuchos::RCP<Teuchos::ParameterList> linear_parameters(const LinearSolverPlan& p
   return p;
 }
 
-NewtonSolver::NewtonSolver(StaticProblem& problem, const YAML::Node& stage, const std::string& file,
-                           const std::string& where)
+NewtonSolver::NewtonSolver(NonlinearProblem& problem, const YAML::Node& stage,
+                           const std::string& file, const std::string& where)
     : problem_(problem) {
   const auto& model = problem.model();
   const int ranks = problem.owned_dofs()->getComm()->getSize();
   const auto dofs = static_cast<std::int64_t>(problem.owned_dofs()->getGlobalNumElements());
-  plan_ = plan_linear_solver(stage["solver"] ? stage["solver"].as<std::string>() : "auto",
-                             stage["direct_limit"] ? stage["direct_limit"].as<std::int64_t>() : 0,
-                             from_stage(stage, "linear_solver", file, where),
-                             from_stage(stage, "preconditioner", file, where), dofs,
-                             model.mesh.dimension, ranks);
+  // Shells' dofs are not displacements: no rigid-body modes for multigrid, the direct solver.
+  const std::string solver = !problem.displacement_dofs() ? "direct"
+                             : stage["solver"]            ? stage["solver"].as<std::string>()
+                                                          : "auto";
+  plan_ = plan_linear_solver(
+      solver, stage["direct_limit"] ? stage["direct_limit"].as<std::int64_t>() : 0,
+      from_stage(stage, "linear_solver", file, where),
+      from_stage(stage, "preconditioner", file, where), dofs, model.mesh.dimension, ranks);
   if (stage["residual_tolerance"]) tolerance_ = stage["residual_tolerance"].as<double>();
   try {
     nox_params_ = nonlinear_parameters(from_stage(stage, "nonlinear_solver", file, where));
@@ -153,7 +156,7 @@ double NewtonSolver::preconditioner_seconds() const {
   return preconditioner_.is_null() ? 0.0 : preconditioner_->setup_seconds();
 }
 
-NewtonResult NewtonSolver::solve(Vector& d, double step_scale) {
+NewtonResult NewtonSolver::solve(Vector& d, double step_scale, double step_energy) {
   Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewCounter("efg: Newton iterations"));
   NewtonResult result;
   model_->set_initial_guess(d);
@@ -173,8 +176,8 @@ NewtonResult NewtonSolver::solve(Vector& d, double step_scale) {
         dynamic_cast<const NOX::Thyra::Vector&>(dd).getThyraVector(),
         dynamic_cast<const NOX::Thyra::Vector&>(r).getThyraVector());
   };
-  tests->addStatusTest(Teuchos::rcp(new NewtonConvergence(problem_, tolerance_, energy_tolerance_,
-                                                          ratio, result.record, step_scale)));
+  tests->addStatusTest(Teuchos::rcp(new NewtonConvergence(
+      problem_, tolerance_, energy_tolerance_, ratio, result.record, step_scale, step_energy)));
   tests->addStatusTest(NOX::StatusTest::buildStatusTests(params->sublist("Status Tests"), utils));
   auto solver = NOX::Solver::buildSolver(group, tests, params);
   group->computeF();

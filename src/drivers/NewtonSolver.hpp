@@ -29,20 +29,21 @@ struct NewtonResult {
 class NewtonSolver {
  public:
   /// `stage` is the stage's resolved YAML (its solver maps); `where` names it in messages.
-  NewtonSolver(StaticProblem& problem, const YAML::Node& stage, const std::string& scene_file,
+  NewtonSolver(NonlinearProblem& problem, const YAML::Node& stage, const std::string& scene_file,
                const std::string& where);
 
   /// Solves r(d) = 0 starting from d; d holds the last iterate on return. `step_scale`: the
   /// residual norm where the load step began before a predictor moved d (0: none), a further
-  /// floor of the Newton test's force scale (NewtonConvergence).
-  NewtonResult solve(Vector& d, double step_scale = 0.0);
+  /// floor of the Newton test's force scale; `step_energy`: the work of that residual over the
+  /// predicted increment, a floor of its energy scale (NewtonConvergence).
+  NewtonResult solve(Vector& d, double step_scale = 0.0, double step_energy = 0.0);
 
   const LinearSolverPlan& plan() const { return plan_; }
   /// Seconds spent building preconditioners / factorizations so far.
   double preconditioner_seconds() const;
 
  private:
-  StaticProblem& problem_;
+  NonlinearProblem& problem_;
   LinearSolverPlan plan_;
   double tolerance_ = 1e-9, energy_tolerance_ = 1e-12;
   Teuchos::RCP<Teuchos::ParameterList> nox_params_;

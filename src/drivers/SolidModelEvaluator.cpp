@@ -17,7 +17,7 @@ using Extract = Thyra::TpetraOperatorVectorExtraction<double, Map::local_ordinal
                                                       GlobalOrdinal, Map::node_type>;
 }
 
-SolidModelEvaluator::SolidModelEvaluator(StaticProblem& problem, const Vector& initial_guess)
+SolidModelEvaluator::SolidModelEvaluator(NonlinearProblem& problem, const Vector& initial_guess)
     : problem_(problem), space_(Thyra::createVectorSpace<double>(problem.owned_dofs())) {
   set_initial_guess(initial_guess);
 }

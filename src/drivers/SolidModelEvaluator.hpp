@@ -1,5 +1,5 @@
 // The Thyra model evaluator NOX drives: x = generalized particle displacements (owned dofs),
-// f = the residual of StaticProblem, W = its Jacobian (an FECrsMatrix on the fixed graph).
+// f = the residual of a NonlinearProblem (solids or shells), W = its Jacobian (an FECrsMatrix on the fixed graph).
 // NOX has no Tpetra group in Trilinos 13.2; this is the documented path through Thyra.
 #pragma once
 
@@ -8,14 +8,14 @@
 
 #include <string>
 
-#include "drivers/StaticProblem.hpp"
+#include "drivers/NonlinearProblem.hpp"
 #include "solvers/MatrixPreconditioner.hpp"
 
 namespace efg {
 
 class SolidModelEvaluator : public Thyra::StateFuncModelEvaluatorBase<double> {
  public:
-  SolidModelEvaluator(StaticProblem& problem, const Vector& initial_guess);
+  SolidModelEvaluator(NonlinearProblem& problem, const Vector& initial_guess);
 
   void set_W_factory(
       const Teuchos::RCP<const Thyra::LinearOpWithSolveFactoryBase<double>>& factory) {
@@ -52,7 +52,7 @@ class SolidModelEvaluator : public Thyra::StateFuncModelEvaluatorBase<double> {
                      const Thyra::ModelEvaluatorBase::OutArgs<double>& out) const override;
 
  private:
-  StaticProblem& problem_;
+  NonlinearProblem& problem_;
   Teuchos::RCP<const Thyra::VectorSpaceBase<double>> space_;
   Teuchos::RCP<const Thyra::LinearOpWithSolveFactoryBase<double>> w_factory_;
   Thyra::ModelEvaluatorBase::InArgs<double> nominal_;

@@ -10,12 +10,13 @@
 #include <string>
 
 #include "contact/ImplicitContact.hpp"
+#include "drivers/NonlinearProblem.hpp"
 #include "operators/EssentialConditions.hpp"
 #include "operators/ModelOperators.hpp"
 
 namespace efg {
 
-class StaticProblem {
+class StaticProblem : public NonlinearProblem {
  public:
   /// Shares the run's operators; builds the essential conditions and the stiffness graph.
   explicit StaticProblem(std::shared_ptr<const ModelOperators> operators);
@@ -43,10 +44,12 @@ class StaticProblem {
     return contact_ ? contact_->body_displacements() : std::vector<std::array<double, 3>>{};
   }
   /// r = residual(d) on the owned dofs.
-  void residual(const Vector& d_owned, Vector& r_owned);
+  void residual(const Vector& d_owned, Vector& r_owned) override;
   /// K = dr/dd, refilled in place (the graph never changes).
-  void jacobian(const Vector& d_owned, FEMatrix& K);
-  Teuchos::RCP<FEMatrix> create_matrix() const { return Teuchos::rcp(new FEMatrix(graph_)); }
+  void jacobian(const Vector& d_owned, FEMatrix& K) override;
+  Teuchos::RCP<FEMatrix> create_matrix() const override {
+    return Teuchos::rcp(new FEMatrix(graph_));
+  }
 
   /// Accepts the load step converged at d: the material history computed at d (the internal
   /// force is evaluated there once more, whatever point the solver evaluated last) and the
@@ -59,19 +62,19 @@ class StaticProblem {
   /// Reactions of every boundary condition at d (after a converged solve).
   std::vector<std::array<double, 3>> reactions(const Vector& d_owned);
 
-  const Teuchos::RCP<const Map>& owned_dofs() const { return model_.maps.owned_dofs; }
+  const Teuchos::RCP<const Map>& owned_dofs() const override { return model_.maps.owned_dofs; }
   const SolidOperator& solid() const { return ops_->solid(); }
   const ModelOperators& operators() const { return *ops_; }
-  const Model& model() const { return model_; }
+  const Model& model() const override { return model_; }
 
   /// The force scale of the last residual evaluation: max(||f_ext||, ||f_int(d)||) (2-norms over
   /// the owned dofs; f_int without the boundary terms, so that it carries the reactions).
   /// Newton's tolerance is relative to it, so that a step that starts converged (a hold stage)
   /// or a load that is reacted by stiff supports is judged in force units.
-  double force_scale() const { return std::max(external_norm_, internal_norm_); }
+  double force_scale() const override { return std::max(external_norm_, internal_norm_); }
   /// True when r(d) is affine in d (small-strain linear elastic parts only): one Newton step
   /// with a converged linear solve is then the solution.
-  bool linear() const { return linear_; }
+  bool linear() const override { return linear_; }
   /// Imports owned values to the overlap map (owned then ghost particles).
   void to_overlap(const Vector& owned, Vector& overlap) const { ops_->to_overlap(owned, overlap); }
 

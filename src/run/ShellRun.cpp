@@ -19,6 +19,7 @@
 #include "model/Curves.hpp"
 #include "model/PointOwner.hpp"
 #include "run/ShellExplicitStage.hpp"
+#include "run/ShellImplicitStage.hpp"
 #include "run/ShellStageInputs.hpp"
 #include "shells/ShellConstraints.hpp"
 #include "solvers/MatrixPreconditioner.hpp"
@@ -31,12 +32,15 @@ constexpr int nd = shell_dofs_per_node;
 constexpr int probe_columns = nd + 3;
 const char* const probe_names[probe_columns] = {"ux", "uy", "uz", "rx", "ry", "mxx", "myy", "mxy"};
 
-// Probe columns at each probe point (collective): u^h of the five fields and M = D kappa with
-// the curvature from the direct gradients of the rotations there.
+// Probe columns at each probe point (collective): u^h of the five fields and the moments:
+// elastic parts M = D kappa with the curvature from the direct gradients of the rotations there;
+// J2 parts (whose moments need a layer history, kept at the integration points only) the
+// moments of the nearest integration point of the part on the probe's rank.
 std::vector<double> probe_values(const Model& model, const FlatShellOperator::Vector& d_owned,
                                  const FlatShellOperator& op) {
   std::vector<double> local(model.scene.probes.size() * probe_columns, 0.0),
       global(local.size(), 0.0);
+  const auto point_resultants = op.plastic() ? op.resultants(d_owned) : std::vector<double>{};
   Tpetra::Import<> importer(op.maps().owned_dofs, op.maps().overlap_dofs);
   FlatShellOperator::Vector d_overlap(op.maps().overlap_dofs);
   d_overlap.doImport(d_owned, importer, Tpetra::INSERT);
@@ -61,6 +65,20 @@ std::vector<double> probe_values(const Model& model, const FlatShellOperator::Ve
         grad_ry[a] += v.grad[2 * k + a] * d(lid * nd + shell_ry, 0);
       }
     }
+    if (op.section_law(static_cast<std::size_t>(p), 0.0).j2) {
+      double nearest = -1;
+      for (std::size_t r = 0; r < cloud.owned_count; ++r) {
+        const double dx = cloud.position[2 * r] - probe.point[0],
+                     dy = cloud.position[2 * r + 1] - probe.point[1];
+        if (nearest >= 0 && dx * dx + dy * dy >= nearest) continue;
+        nearest = dx * dx + dy * dy;
+        const auto row = static_cast<std::size_t>(
+            op.maps().owned_nodes->getLocalElement(static_cast<GlobalOrdinal>(cloud.mesh_node[r])));
+        for (std::size_t c = 0; c < 3; ++c)
+          out[nd + c] = point_resultants[row * shell_strains + 3 + c];
+      }
+      continue;
+    }
     const double kappa[3] = {grad_ry[0], -grad_rx[1], grad_ry[1] - grad_rx[0]};
     const auto& D = op.section(static_cast<std::size_t>(p)).bending;
     for (std::size_t r = 0; r < 3; ++r)
@@ -78,6 +96,7 @@ struct StageResult {
   long long dofs = 0;
   long long steps = 0;  ///< explicit stages: time steps, their dt and energy balance error
   double dt = 0, energy_error = 0;
+  long long newton_iterations = -1, cutbacks = 0;  ///< J2 implicit stages (Newton)
 };
 
 }  // namespace
@@ -223,6 +242,25 @@ RunOutcome run_shell_stages(const CommPtr& comm, const Model& model, const std::
         start = stage.end_time;
         continue;
       }
+      if (op.plastic()) {
+        const auto summary =
+            run_shell_implicit_stage(model, op, stage, start, scene.stages.front().end_time, d,
+                                     [&](double time) { record(time, 0.0, 0.0, {}); });
+        r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begun).count();
+        r.strain_energy = history.back()[1];
+        r.steps = summary.steps;
+        r.newton_iterations = summary.newton_iterations;
+        r.cutbacks = summary.cutbacks;
+        r.largest_deflection = largest_deflection(stage.name);
+        v.putScalar(0.0);  // a static solution, at rest
+        Log::info("stage '" + stage.name + "' done: " + std::to_string(summary.steps) + " steps, " +
+                  std::to_string(summary.cutbacks) + " cutbacks, " +
+                  std::to_string(summary.newton_iterations) + " Newton iterations (shells, " +
+                  summary.linear_solver + ")");
+        results.push_back(r);
+        start = stage.end_time;
+        continue;
+      }
       const ShellConstraints constraints(model, op, shell_supports_at(scene, stage.name, r.time));
       const auto K = op.stiffness(constraints);
       FlatShellOperator::Vector f(op.maps().owned_dofs);
@@ -283,7 +321,11 @@ RunOutcome run_shell_stages(const CommPtr& comm, const Model& model, const std::
              << ", \"seconds\": " << results[s].seconds
              << ", \"strain_energy\": " << results[s].strain_energy
              << ", \"largest_deflection\": " << results[s].largest_deflection;
-      if (results[s].steps > 0)
+      if (results[s].newton_iterations >= 0)
+        report << ", \"steps\": " << results[s].steps
+               << ", \"newton_iterations\": " << results[s].newton_iterations
+               << ", \"cutbacks\": " << results[s].cutbacks;
+      else if (results[s].steps > 0)
         report << ", \"steps\": " << results[s].steps << ", \"dt\": " << results[s].dt
                << ", \"energy_balance_error\": " << results[s].energy_error;
       report << "}";

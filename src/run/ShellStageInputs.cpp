@@ -8,8 +8,8 @@ constexpr int nd = shell_dofs_per_node;
 }
 
 std::vector<ShellSupport> shell_supports_at(const Scene& scene, const std::string& stage,
-                                            double time) {
-  const auto factor = curve_factor(scene, time, 1.0, stage);
+                                            double time, double ramp) {
+  const auto factor = curve_factor(scene, time, ramp, stage);
   std::vector<ShellSupport> out;
   for (const auto& bc : scene.boundary_conditions) {
     if (!bc.stages.includes(stage)) continue;
@@ -42,9 +42,9 @@ bool shell_supports_move(const Scene& scene, const std::string& stage) {
 }
 
 FlatShellOperator::Pressure shell_pressure_at(const Model& model, const std::string& stage,
-                                              double time) {
+                                              double time, double ramp) {
   const auto& scene = model.scene;
-  const auto factor = curve_factor(scene, time, 1.0, stage);
+  const auto factor = curve_factor(scene, time, ramp, stage);
   std::vector<std::pair<const LoadSpec*, double>> loads;
   for (const auto& l : scene.loads)
     if (l.type == "shell_pressure" && l.stages.includes(stage))

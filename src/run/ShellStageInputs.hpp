@@ -11,17 +11,19 @@
 
 namespace efg {
 
-/// The displacement and rotation conditions active in `stage`, valued at `time`.
+/// The displacement and rotation conditions active in `stage`, valued at `time`; a condition
+/// without a curve is scaled by `ramp` (implicit load steps: the solids' linear ramp over the
+/// first stage, model/Curves.hpp curve_factor).
 std::vector<ShellSupport> shell_supports_at(const Scene& scene, const std::string& stage,
-                                            double time);
+                                            double time, double ramp = 1.0);
 
 /// Whether the conditions active in `stage` can prescribe different values at different times
 /// (a curve, or an expression of t): explicit stages then re-evaluate them every step.
 bool shell_supports_move(const Scene& scene, const std::string& stage);
 
-/// The shell_pressure loads active in `stage`, summed, at `time` (a load without a curve at full
-/// value).
+/// The shell_pressure loads active in `stage`, summed, at `time` (a load without a curve at
+/// `ramp` times its value).
 FlatShellOperator::Pressure shell_pressure_at(const Model& model, const std::string& stage,
-                                              double time);
+                                              double time, double ramp = 1.0);
 
 }  // namespace efg

@@ -12,6 +12,7 @@
 #include "discretization/ShapeFunctions.hpp"
 #include "model/MaterialLaws.hpp"
 #include "operators/CouplingGraph.hpp"
+#include "shells/FlatShellPointLaw.hpp"
 #include "shells/ShellConstraints.hpp"
 #include "shells/ShellSpacing.hpp"
 
@@ -99,8 +100,8 @@ FlatShellOperator::FlatShellOperator(const Model& model, int thickness_points,
   }
 }
 
-std::vector<double> FlatShellOperator::point_stiffness(const Point& p, std::size_t part) const {
-  const auto s = section_at(part, p.spacing);
+std::vector<double> FlatShellOperator::point_stiffness(const Point& p,
+                                                       const SectionTangent& S) const {
   const std::size_t n = p.node.size(), cols = n * nd;
   std::vector<double> K(cols * cols, 0.0);
   std::vector<std::array<std::array<double, nd>, shell_strains>> SB(n);
@@ -108,7 +109,7 @@ std::vector<double> FlatShellOperator::point_stiffness(const Point& p, std::size
   for (std::size_t a = 0; a < n; ++a) {
     double Ba[shell_strains][nd], SBa[shell_strains][nd];
     plate_strain_rows({p.b[2 * a], p.b[2 * a + 1]}, {p.g[2 * a], p.g[2 * a + 1]}, p.phi[a], Ba);
-    resultant_rows(s, Ba, SBa);
+    tangent_rows(S, Ba, SBa);
     for (int i = 0; i < shell_strains; ++i)
       for (int c = 0; c < nd; ++c) {
         B[(a * shell_strains + static_cast<std::size_t>(i)) * nd + static_cast<std::size_t>(c)] =
@@ -128,32 +129,57 @@ std::vector<double> FlatShellOperator::point_stiffness(const Point& p, std::size
   return K;
 }
 
-Teuchos::RCP<FlatShellOperator::Matrix> FlatShellOperator::stiffness(
+Teuchos::RCP<FlatShellOperator::Matrix> FlatShellOperator::create_matrix(
     const ShellConstraints& constraints) const {
   CouplingGraph couplings(maps_.overlap_nodes->getNodeNumElements());
   for (const auto& part : points_)
     for (const auto& p : part) couplings.add_clique(p.node.data(), p.node.size());
   constraints.add_couplings(couplings);
-  auto K = Teuchos::rcp(new Matrix(couplings.build(maps_)));
-  K->beginAssembly();
-  std::vector<int> cols;
-  for (std::size_t part = 0; part < points_.size(); ++part)
-    for (const auto& p : points_[part]) {
-      const auto Kp = point_stiffness(p, part);
-      const std::size_t n = p.node.size(), width = n * nd;
-      cols.resize(width);
-      for (std::size_t a = 0; a < n; ++a)
-        for (std::size_t c = 0; c < nd; ++c)
-          cols[a * nd + c] = p.node[a] * nd + static_cast<int>(c);
-      for (std::size_t r = 0; r < width; ++r)
-        K->sumIntoLocalValues(cols[r], static_cast<int>(width), Kp.data() + r * width, cols.data());
-    }
-  constraints.add_edge_terms(*K);
-  K->endAssembly();
-  K->beginModify();
-  constraints.replace_rows(*K);
-  K->endModify();
+  return Teuchos::rcp(new Matrix(couplings.build(maps_)));
+}
+
+Teuchos::RCP<FlatShellOperator::Matrix> FlatShellOperator::stiffness(
+    const ShellConstraints& constraints) const {
+  auto K = create_matrix(constraints);
+  fill_tangent(Vector(maps_.owned_dofs), constraints, *K);
   return K;
+}
+
+void FlatShellOperator::fill_tangent(const Vector& d_owned, const ShellConstraints& constraints,
+                                     Matrix& K) const {
+  const auto d_overlap = to_overlap(d_owned);
+  K.beginAssembly();
+  K.setAllToScalar(0.0);
+  std::vector<int> cols;
+  {
+    const auto d = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
+    for (std::size_t part = 0; part < points_.size(); ++part) {
+      const std::size_t block = history_size(part);
+      for (std::size_t q = 0; q < points_[part].size(); ++q) {
+        const auto& p = points_[part][q];
+        double e[shell_strains], R[shell_strains];
+        SectionTangent S;
+        point_strains(p, d, e);
+        shell_section_response(section_law(part, p.spacing), e,
+                               block ? committed_[part].data() + q * block : nullptr,
+                               block ? trial_[part].data() + q * block : nullptr, R, &S);
+        const auto Kp = point_stiffness(p, S);
+        const std::size_t n = p.node.size(), width = n * nd;
+        cols.resize(width);
+        for (std::size_t a = 0; a < n; ++a)
+          for (std::size_t c = 0; c < nd; ++c)
+            cols[a * nd + c] = p.node[a] * nd + static_cast<int>(c);
+        for (std::size_t r = 0; r < width; ++r)
+          K.sumIntoLocalValues(cols[r], static_cast<int>(width), Kp.data() + r * width,
+                               cols.data());
+      }
+    }
+  }
+  constraints.add_edge_terms(d_overlap, K);
+  K.endAssembly();
+  K.beginModify();
+  constraints.replace_rows(K);
+  K.endModify();
 }
 
 void FlatShellOperator::add_pressure(const Pressure& q, Vector& f_owned) const {

@@ -17,7 +17,9 @@
 #include <array>
 #include <atomic>
 #include <functional>
+#include <map>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "materials/J2Plasticity.hpp"
@@ -25,6 +27,7 @@
 #include "model/Model.hpp"
 #include "parallel/DofMaps.hpp"
 #include "shells/PlateStrains.hpp"
+#include "shells/ShellSectionResponse.hpp"
 
 namespace efg {
 
@@ -53,8 +56,32 @@ class FlatShellOperator {
   }
 
   /// K on the owned dofs (fill complete), with the constraints' edge terms and the rows of
-  /// constrained dofs replaced by their collocation rows (ShellConstraints).
+  /// constrained dofs replaced by their collocation rows (ShellConstraints): the tangent at
+  /// d = 0 (elastic parts: the stiffness).
   Teuchos::RCP<Matrix> stiffness(const ShellConstraints& constraints) const;
+  /// A matrix on the couplings of the points and of the constraints (no values yet).
+  Teuchos::RCP<Matrix> create_matrix(const ShellConstraints& constraints) const;
+  /// K(d) = d(f_int + edge terms)/dd with the constrained rows replaced by their collocation
+  /// rows, refilled in place (the implicit Newton's Jacobian). J2 parts: the consistent section
+  /// tangent (shells/ShellSectionResponse.hpp), the layers' trial states written.
+  void fill_tangent(const Vector& d_owned, const ShellConstraints& constraints, Matrix& K) const;
+  /// The section law of part p where the particle spacing is h (elastic with its stabilized
+  /// shear, or J2 through the thickness).
+  ShellSectionLaw section_law(std::size_t part, double h) const {
+    return {section_at(part, h), j2_[part] ? &*j2_[part] : nullptr, thickness_[part],
+            layers_[part]};
+  }
+  /// Doubles of J2 history per integration point of part p (0 for elastic parts).
+  std::size_t history_size(std::size_t part) const {
+    return j2_[part] ? static_cast<std::size_t>(layers_[part]) * physics::j2_state::count : 0;
+  }
+  /// The committed J2 history of the edge points of a support's node set (ShellConstraints),
+  /// kept here so that every stage's constraints continue it; `size` doubles, zero at first.
+  std::vector<double>& edge_history(const std::string& node_set, std::size_t size) const {
+    auto& h = edge_history_[node_set];
+    if (h.size() != size) h.assign(size, 0.0);
+    return h;
+  }
   /// Pressure (force per area along +z) of part p at x.
   using Pressure = std::function<double(std::size_t part, const double* x)>;
   /// f_(I,w) += sum_L a_L phi_I(X_L) q(X_L) (owned dofs).
@@ -106,8 +133,8 @@ class FlatShellOperator {
     std::vector<int> node;
     std::vector<double> b, g, phi;  // 2, 2, 1 per particle
   };
-  /// K_L = a_L B^T S B of one point (5n x 5n, row major).
-  std::vector<double> point_stiffness(const Point& p, std::size_t part) const;
+  /// K_L = a_L B^T S B of one point (5n x 5n, row major), S its section tangent.
+  std::vector<double> point_stiffness(const Point& p, const SectionTangent& S) const;
   Vector to_overlap(const Vector& d_owned) const;
   /// The 8 generalized strains of a point at the overlap values d.
   template <class View>
@@ -129,6 +156,7 @@ class FlatShellOperator {
   /// per part: j2_state::count doubles per thickness point per integration point
   mutable std::vector<std::vector<double>> committed_, trial_;
   mutable bool elastic_probe_ = false;
+  mutable std::map<std::string, std::vector<double>> edge_history_;
   static inline std::atomic<long long> instances_{0};
   std::vector<physics::MindlinSection> sections_;
   std::vector<double> thickness_, alpha_;

@@ -37,9 +37,19 @@ ShellConstraints::ShellConstraints(const Model& model, const FlatShellOperator& 
     for (int c = 0; c < nd; ++c)
       edge.held[static_cast<std::size_t>(c)] =
           static_cast<bool>(s.value[static_cast<std::size_t>(c)]);
-    for (auto& p : shell_edge_points(model, s.node_set, &sides)) {
+    auto points = shell_edge_points(model, s.node_set, &sides);
+    // J2 parts: the edge points' layers continue the history of earlier stages (op's store)
+    std::size_t size = 0;
+    for (const auto& p : points) size += op.history_size(p.part);
+    double* store = size ? op.edge_history(s.node_set, size).data() : nullptr;
+    for (auto& p : points) {
       edge.node.clear();
       for (auto n : p.node) edge.node.push_back(lid(n));
+      const std::size_t n = op.history_size(p.part);
+      edge.committed = n ? store : nullptr;
+      store += n;
+      edge.trial = trial_.size();
+      trial_.resize(trial_.size() + n, 0.0);
       edge.point = std::move(p);
       edges_.push_back(edge);
     }
@@ -80,38 +90,83 @@ void ShellConstraints::add_couplings(CouplingGraph& graph) const {
   for (const auto& r : rows_) graph.add_row(r.node, r.columns.data(), r.columns.size());
 }
 
-void ShellConstraints::add_edge_terms(const Edge& e, FlatShellOperator::Matrix& K) const {
+template <class View>
+void ShellConstraints::edge_response(const Edge& e, const View& d, double (&R)[shell_strains],
+                                     SectionTangent* S) const {
   const auto& p = e.point;
-  const std::size_t n = p.node.size(), width = n * nd;
-  // T[c][k]: the traction of component c that unit column dof k produces.
-  std::vector<double> T(nd * width);
-  std::vector<int> cols(width);
-  for (std::size_t a = 0; a < n; ++a) {
-    double B[shell_strains][nd], SB[shell_strains][nd];
+  double strain[shell_strains] = {};
+  for (std::size_t a = 0; a < p.node.size(); ++a) {
+    double B[shell_strains][nd];
     const double g[2] = {p.grad[2 * a], p.grad[2 * a + 1]};
     plate_strain_rows(g, g, p.phi[a], B);
-    resultant_rows(op_.section_at(p.part, p.spacing), B, SB);
-    for (int d = 0; d < nd; ++d) {
-      const auto k = a * nd + static_cast<std::size_t>(d);
-      cols[k] = e.node[a] * nd + d;
-      double R[shell_strains], t[nd];
-      for (int r = 0; r < shell_strains; ++r) R[r] = SB[r][d];
-      edge_traction(R, p.normal, t);
-      for (int c = 0; c < nd; ++c) T[static_cast<std::size_t>(c) * width + k] = t[c];
+    for (int c = 0; c < nd; ++c) {
+      const double dc = d(static_cast<std::size_t>(e.node[a] * nd + c), 0);
+      for (int i = 0; i < shell_strains; ++i) strain[i] += B[i][c] * dc;
     }
   }
-  std::vector<double> vals(width);
-  for (std::size_t a = 0; a < n; ++a)
-    for (int c = 0; c < nd; ++c) {
-      if (!e.held[static_cast<std::size_t>(c)]) continue;
-      for (std::size_t k = 0; k < width; ++k)
-        vals[k] = -p.length * p.phi[a] * T[static_cast<std::size_t>(c) * width + k];
-      K.sumIntoLocalValues(e.node[a] * nd + c, static_cast<int>(width), vals.data(), cols.data());
-    }
+  shell_section_response(op_.section_law(p.part, p.spacing), strain, e.committed,
+                         e.committed ? trial_.data() + e.trial : nullptr, R, S);
 }
 
-void ShellConstraints::add_edge_terms(FlatShellOperator::Matrix& K) const {
-  for (const auto& e : edges_) add_edge_terms(e, K);
+void ShellConstraints::add_edge_terms(const FlatShellOperator::Vector& d_overlap,
+                                      FlatShellOperator::Matrix& K) const {
+  const auto d = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
+  std::vector<double> T, vals;
+  std::vector<int> cols;
+  for (const auto& e : edges_) {
+    const auto& p = e.point;
+    const std::size_t n = p.node.size(), width = n * nd;
+    double R[shell_strains];
+    SectionTangent S;
+    edge_response(e, d, R, &S);
+    // T[c][k]: the traction of component c that unit column dof k produces.
+    T.assign(nd * width, 0.0);
+    cols.resize(width);
+    for (std::size_t a = 0; a < n; ++a) {
+      double B[shell_strains][nd], SB[shell_strains][nd];
+      const double g[2] = {p.grad[2 * a], p.grad[2 * a + 1]};
+      plate_strain_rows(g, g, p.phi[a], B);
+      tangent_rows(S, B, SB);
+      for (int c = 0; c < nd; ++c) {
+        const auto k = a * nd + static_cast<std::size_t>(c);
+        cols[k] = e.node[a] * nd + c;
+        double dR[shell_strains], t[nd];
+        for (int r = 0; r < shell_strains; ++r) dR[r] = SB[r][c];
+        edge_traction(dR, p.normal, t);
+        for (int h = 0; h < nd; ++h) T[static_cast<std::size_t>(h) * width + k] = t[h];
+      }
+    }
+    vals.resize(width);
+    for (std::size_t a = 0; a < n; ++a)
+      for (int c = 0; c < nd; ++c) {
+        if (!e.held[static_cast<std::size_t>(c)]) continue;
+        for (std::size_t k = 0; k < width; ++k)
+          vals[k] = -p.length * p.phi[a] * T[static_cast<std::size_t>(c) * width + k];
+        K.sumIntoLocalValues(e.node[a] * nd + c, static_cast<int>(width), vals.data(), cols.data());
+      }
+  }
+}
+
+void ShellConstraints::add_edge_forces(const FlatShellOperator::Vector& d_overlap,
+                                       FlatShellOperator::Vector& f_overlap) const {
+  const auto d = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
+  auto f = f_overlap.getLocalViewHost(Tpetra::Access::ReadWrite);
+  for (const auto& e : edges_) {
+    double R[shell_strains], T[nd];
+    edge_response(e, d, R, nullptr);
+    edge_traction(R, e.point.normal, T);
+    for (std::size_t a = 0; a < e.point.node.size(); ++a)
+      for (int c = 0; c < nd; ++c)
+        if (e.held[static_cast<std::size_t>(c)])
+          f(static_cast<std::size_t>(e.node[a] * nd + c), 0) -=
+              e.point.length * e.point.phi[a] * T[c];
+  }
+}
+
+void ShellConstraints::commit() const {
+  for (const auto& e : edges_)
+    if (e.committed)
+      std::copy_n(trial_.data() + e.trial, op_.history_size(e.point.part), e.committed);
 }
 
 void ShellConstraints::replace_rows(FlatShellOperator::Matrix& K) const {
@@ -132,7 +187,7 @@ void ShellConstraints::replace_rows(FlatShellOperator::Matrix& K) const {
     // many orders of magnitude smaller than their neighbours' (pivoting, round-off).
     double scale = 0;
     for (auto v : zeros) scale = std::max(scale, std::abs(v));
-    r.scale = scale > 0 ? scale : r.scale;
+    if (!scaled_) r.scale = scale > 0 ? scale : r.scale;
     std::fill(zeros.begin(), zeros.end(), 0.0);
     K.replaceLocalValues(row, all_cols(), zeros());
     cols.clear();
@@ -144,12 +199,32 @@ void ShellConstraints::replace_rows(FlatShellOperator::Matrix& K) const {
     }
     K.replaceLocalValues(row, static_cast<int>(cols.size()), vals.data(), cols.data());
   }
+  scaled_ = true;
 }
 
 void ShellConstraints::set_values(FlatShellOperator::Vector& rhs_owned) const {
   auto rhs = rhs_owned.getLocalViewHost(Tpetra::Access::ReadWrite);
   for (const auto& r : rows_)
     rhs(static_cast<std::size_t>(r.node * nd + r.component), 0) = r.scale * r.value;
+}
+
+void ShellConstraints::constrained_residual(const FlatShellOperator::Vector& d_overlap,
+                                            const std::vector<double>& values,
+                                            FlatShellOperator::Vector& r_owned) const {
+  const auto d = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
+  auto r = r_owned.getLocalViewHost(Tpetra::Access::ReadWrite);
+  for (std::size_t k = 0; k < rows_.size(); ++k) {
+    const auto& row = rows_[k];
+    double u = 0;
+    for (std::size_t j = 0; j < row.columns.size(); ++j)
+      u += row.phi[j] * d(static_cast<std::size_t>(row.columns[j] * nd + row.component), 0);
+    r(static_cast<std::size_t>(row.node * nd + row.component), 0) = row.scale * (u - values[k]);
+  }
+}
+
+void ShellConstraints::zero_constrained(FlatShellOperator::Vector& v_owned) const {
+  auto v = v_owned.getLocalViewHost(Tpetra::Access::ReadWrite);
+  for (const auto& row : rows_) v(static_cast<std::size_t>(row.node * nd + row.component), 0) = 0;
 }
 
 Teuchos::RCP<Tpetra::CrsMatrix<>> ShellConstraints::collocation_matrix(

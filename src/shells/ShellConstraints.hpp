@@ -47,13 +47,28 @@ class ShellConstraints {
 
   /// The couplings of the edge terms and of the collocation rows.
   void add_couplings(CouplingGraph& graph) const;
-  /// Adds the edge traction terms (assembly mode; overlap rows).
-  void add_edge_terms(FlatShellOperator::Matrix& K) const;
+  /// Adds the derivative of the edge traction terms at the overlap values d (assembly mode;
+  /// overlap rows). J2 parts: the edge points' own layers (their trial states written).
+  void add_edge_terms(const FlatShellOperator::Vector& d_overlap,
+                      FlatShellOperator::Matrix& K) const;
+  /// f_(I,c) += - sum_e l_e phi_I(X_e) T_c(d) over the edge points, held components c (overlap).
+  void add_edge_forces(const FlatShellOperator::Vector& d_overlap,
+                       FlatShellOperator::Vector& f_overlap) const;
+  /// The edge points' J2 states of the last evaluation become the committed ones.
+  void commit() const;
   /// Replaces the rows of this rank's constrained dofs by their collocation rows (modify mode).
+  /// The row scales are taken from the first matrix and kept (Newton's residual uses them).
   void replace_rows(FlatShellOperator::Matrix& K) const;
   /// (after replace_rows, whose row scales it uses)
   /// rhs(J, c) = s_c g_c(X_J) on this rank's constrained dofs (other entries untouched).
   void set_values(FlatShellOperator::Vector& rhs_owned) const;
+  /// r(J, c) = s_c (sum_I phi_I(X_J) d_(I,c) - g) on this rank's constrained dofs, g from
+  /// `values` (collocation_values' order); other entries untouched.
+  void constrained_residual(const FlatShellOperator::Vector& d_overlap,
+                            const std::vector<double>& values,
+                            FlatShellOperator::Vector& r_owned) const;
+  /// Zeroes the constrained dofs' entries of an owned vector.
+  void zero_constrained(FlatShellOperator::Vector& v_owned) const;
 
   /// The collocation rows unscaled, C d = g with C_(J,c),(I,c) = phi_I(X_J): a row map of this
   /// rank's constrained dofs (in order), the owned dofs as domain, fill complete; `values` gets
@@ -77,12 +92,19 @@ class ShellConstraints {
     ShellEdgePoint point;
     std::vector<int> node;  ///< overlap node indices of point.node
     std::array<bool, shell_dofs_per_node> held{};
+    double* committed = nullptr;  ///< J2 parts: the layers' committed states (op's store)
+    std::size_t trial = 0;        ///< offset of its trial states in trial_
   };
-  void add_edge_terms(const Edge& e, FlatShellOperator::Matrix& K) const;
+  /// The edge point's strains at d, its resultants R and (when asked) their tangent S.
+  template <class View>
+  void edge_response(const Edge& e, const View& d, double (&R)[shell_strains],
+                     SectionTangent* S) const;
 
   const FlatShellOperator& op_;
-  mutable std::vector<Row> rows_;  ///< this rank's (replace_rows sets the scales)
-  std::vector<Edge> edges_;        ///< this rank's
+  mutable std::vector<Row> rows_;      ///< this rank's (replace_rows sets the scales)
+  mutable bool scaled_ = false;        ///< the row scales are set
+  std::vector<Edge> edges_;            ///< this rank's
+  mutable std::vector<double> trial_;  ///< the J2 edge points' trial states
 };
 
 /// The edge tractions conjugate to (u, v, w, theta_x, theta_y) from the resultants

@@ -1,0 +1,38 @@
+// What NOX's Newton (drivers/NewtonSolver) needs of an implicit problem: the residual r(d) and
+// its Jacobian on a graph built once, the force scale of its convergence test, and whether it is
+// affine. The solids' StaticProblem and the shells' ShellStaticProblem implement it, so both
+// formulations share one Newton, one linear-solver plan and one set of stopping tests.
+#pragma once
+
+#include <Tpetra_FECrsMatrix.hpp>
+#include <Tpetra_Vector.hpp>
+
+#include "model/Model.hpp"
+
+namespace efg {
+
+using Vector = Tpetra::Vector<>;
+using FEMatrix = Tpetra::FECrsMatrix<>;
+
+class NonlinearProblem {
+ public:
+  virtual ~NonlinearProblem() = default;
+
+  /// r = residual(d) on the owned dofs.
+  virtual void residual(const Vector& d_owned, Vector& r_owned) = 0;
+  /// K = dr/dd, refilled in place (the graph never changes).
+  virtual void jacobian(const Vector& d_owned, FEMatrix& K) = 0;
+  virtual Teuchos::RCP<FEMatrix> create_matrix() const = 0;
+  virtual const Teuchos::RCP<const Tpetra::Map<>>& owned_dofs() const = 0;
+  /// The force scale of the last residual evaluation (drivers/NewtonConvergence).
+  virtual double force_scale() const = 0;
+  /// True when r(d) is affine in d: one Newton step with a converged linear solve solves it.
+  virtual bool linear() const = 0;
+  /// The model (mesh dimension, particle maps and coordinates for the linear-solver plan).
+  virtual const Model& model() const = 0;
+  /// False when the dofs are not the solid's displacements (shells: five per particle), so the
+  /// multigrid's rigid-body modes do not apply: the plan is then the direct solver.
+  virtual bool displacement_dofs() const { return true; }
+};
+
+}  // namespace efg

@@ -1,0 +1,61 @@
+#include "drivers/ShellStaticProblem.hpp"
+
+#include <Tpetra_Export.hpp>
+#include <Tpetra_Import.hpp>
+
+#include <algorithm>
+
+namespace efg {
+
+ShellStaticProblem::ShellStaticProblem(const Model& model, const FlatShellOperator& op,
+                                       const std::vector<ShellSupport>& supports)
+    : model_(model),
+      op_(op),
+      constraints_(model, op, supports),
+      f_ext_(op.maps().owned_dofs),
+      d_overlap_(op.maps().overlap_dofs),
+      edge_overlap_(op.maps().overlap_dofs),
+      edge_owned_(op.maps().owned_dofs),
+      values_(constraints_.collocation_values(supports)) {
+  // The collocation rows' scales come from the tangent's rows at the start (kept afterwards).
+  auto K = create_matrix();
+  op_.fill_tangent(Vector(op.maps().owned_dofs), constraints_, *K);
+}
+
+void ShellStaticProblem::set_level(const FlatShellOperator::Pressure& pressure,
+                                   const std::vector<ShellSupport>& supports) {
+  f_ext_.putScalar(0.0);
+  op_.add_pressure(pressure, f_ext_);
+  constraints_.zero_constrained(f_ext_);
+  external_norm_ = f_ext_.norm2();
+  values_ = constraints_.collocation_values(supports);
+}
+
+void ShellStaticProblem::residual(const Vector& d_owned, Vector& r_owned) {
+  op_.internal_force(d_owned, r_owned);
+  Tpetra::Import<> importer(op_.maps().owned_dofs, op_.maps().overlap_dofs);
+  d_overlap_.doImport(d_owned, importer, Tpetra::INSERT);
+  edge_overlap_.putScalar(0.0);
+  constraints_.add_edge_forces(d_overlap_, edge_overlap_);
+  Tpetra::Export<> exporter(op_.maps().overlap_dofs, op_.maps().owned_dofs);
+  edge_owned_.putScalar(0.0);
+  edge_owned_.doExport(edge_overlap_, exporter, Tpetra::ADD);
+  r_owned.update(1.0, edge_owned_, 1.0);
+  constraints_.zero_constrained(r_owned);
+  internal_norm_ = r_owned.norm2();
+  r_owned.update(-1.0, f_ext_, 1.0);
+  constraints_.constrained_residual(d_overlap_, values_, r_owned);
+}
+
+void ShellStaticProblem::jacobian(const Vector& d_owned, FEMatrix& K) {
+  op_.fill_tangent(d_owned, constraints_, K);
+}
+
+void ShellStaticProblem::commit(const Vector& d_owned) {
+  Vector r(op_.maps().owned_dofs);
+  residual(d_owned, r);  // every point's and edge point's trial state at d
+  op_.commit_state();
+  constraints_.commit();
+}
+
+}  // namespace efg

@@ -1,0 +1,55 @@
+// The discrete equilibrium of an implicit shell stage at one load level (the shells' side of
+// drivers/NonlinearProblem, driven by the same NOX Newton as the solids):
+//   r(d) = f_int(d) + f_edge(d) - f_ext
+// with f_int the point-by-point internal force of FlatShellOperator (elastic sections or J2
+// through the thickness), f_edge the transformation conditions' edge traction terms
+// (ShellConstraints; J2 edge points carry their own layers), f_ext the shell pressure, and the
+// rows of constrained dofs replaced by their scaled collocation equations s (C d - g). The
+// Jacobian is FlatShellOperator::fill_tangent, the exact derivative of r (tested against central
+// differences).
+#pragma once
+
+#include <vector>
+
+#include "drivers/NonlinearProblem.hpp"
+#include "shells/FlatShellOperator.hpp"
+#include "shells/ShellConstraints.hpp"
+
+namespace efg {
+
+class ShellStaticProblem : public NonlinearProblem {
+ public:
+  /// `supports` fixes which dofs are held (their values are set per load level).
+  ShellStaticProblem(const Model& model, const FlatShellOperator& op,
+                     const std::vector<ShellSupport>& supports);
+
+  /// The loads and prescribed values of a load level: the pressure and the supports' values.
+  void set_level(const FlatShellOperator::Pressure& pressure,
+                 const std::vector<ShellSupport>& supports);
+
+  void residual(const Vector& d_owned, Vector& r_owned) override;
+  void jacobian(const Vector& d_owned, FEMatrix& K) override;
+  Teuchos::RCP<FEMatrix> create_matrix() const override { return op_.create_matrix(constraints_); }
+  const Teuchos::RCP<const Tpetra::Map<>>& owned_dofs() const override {
+    return op_.maps().owned_dofs;
+  }
+  /// max(||f_ext||, ||f_int + f_edge|| on the free rows) of the last residual.
+  double force_scale() const override { return std::max(external_norm_, internal_norm_); }
+  bool linear() const override { return !op_.plastic(); }
+  const Model& model() const override { return model_; }
+  bool displacement_dofs() const override { return false; }
+
+  /// Accepts the load step converged at d: the J2 layers of the points and of the edge points
+  /// evaluated at d become the committed states.
+  void commit(const Vector& d_owned);
+
+ private:
+  const Model& model_;
+  const FlatShellOperator& op_;
+  ShellConstraints constraints_;
+  Vector f_ext_, d_overlap_, edge_overlap_, edge_owned_;
+  std::vector<double> values_;  ///< the supports' values, collocation rows' order
+  double external_norm_ = 0, internal_norm_ = 0;
+};
+
+}  // namespace efg

@@ -1,0 +1,96 @@
+#include "run/ShellImplicitStage.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "core/Errors.hpp"
+#include "core/Log.hpp"
+#include "drivers/NewtonSolver.hpp"
+#include "drivers/ShellStaticProblem.hpp"
+#include "run/ShellStageInputs.hpp"
+
+namespace efg {
+
+ShellImplicitSummary run_shell_implicit_stage(const Model& model, const FlatShellOperator& op,
+                                              const StageSpec& stage, double start,
+                                              double first_end, FlatShellOperator::Vector& d,
+                                              const std::function<void(double)>& record) {
+  const auto& scene = model.scene;
+  const double end = stage.end_time, span = end - start;
+  const int steps = stage.settings["load_steps"].as<int>();
+  const double min_step = stage.settings["min_step_fraction"].as<double>() * span;
+  const double interval = stage.output_interval.value_or(span);
+  const auto ramp = [&](double time) { return std::min(1.0, time / first_end); };
+  ShellStaticProblem problem(model, op, shell_supports_at(scene, stage.name, end));
+  NewtonSolver newton(problem, stage.settings, scene.file, "stage '" + stage.name + "'");
+  ShellImplicitSummary summary;
+  summary.linear_solver = newton.plan().describe();
+  Vector saved(d, Teuchos::Copy), increment(d.getMap()), start_residual(d.getMap());
+  double t = start, dt = span / steps, previous_dt = 0, last_record = start;
+  double next_output = std::min(end, start + interval);
+  while (t < end - 1e-12 * span) {
+    // (a step ending within round-off of the stage end ends exactly there)
+    const double target = end - (t + dt) < 1e-12 * span ? end : t + dt;
+    problem.set_level(shell_pressure_at(model, stage.name, target, ramp(target)),
+                      shell_supports_at(scene, stage.name, target, ramp(target)));
+    Log::info("  stage '" + stage.name + "' step " + std::to_string(summary.steps + 1) +
+              ": t = " + std::to_string(target));
+    Tpetra::deep_copy(saved, d);
+    // The extrapolated predictor of the solids' ImplicitDriver (docs/implicit.md): Newton starts
+    // from the last increment scaled to this step; the unpredicted residual stays its scale.
+    double step_scale = 0, step_energy = 0;
+    if (previous_dt > 0) {
+      problem.residual(d, start_residual);
+      step_scale = start_residual.norm2();
+      step_energy = std::abs((target - t) / previous_dt * increment.dot(start_residual));
+      d.update((target - t) / previous_dt, increment, 1.0);
+    }
+    const auto result = newton.solve(d, step_scale, step_energy);
+    summary.newton_iterations += result.iterations;
+    std::ostringstream why;
+    why << "stage '" << stage.name << "' (shells): load step " << summary.steps + 1
+        << " at t = " << target << ", " << result.iterations << " Newton iterations";
+    // A plastic problem's failed linear solve: the tangent of a mechanism, not a solver setting.
+    const bool singular = result.linear_failure && !problem.linear();
+    if (singular)
+      why << ": " << result.record.reason << ", the tangent is singular (a mechanism)";
+    else if (!result.failure.empty())
+      why << ": " << result.failure;
+    // An elastic system that cannot be solved stays so at any step size; a plastic one whose
+    // tangent turned singular (a hinge with no hardening left: beyond the limit load) is cut
+    // back like a Newton failure, so the run approaches the limit load from below.
+    // The last converged state stays in the results when the stage stops.
+    const auto stop = [&](const std::string& message) {
+      if (t > last_record) record(t);
+      throw NumericalError(message);
+    };
+    if (result.linear_failure && problem.linear()) stop(why.str());
+    if (!result.converged || result.linear_failure) {
+      Tpetra::deep_copy(d, saved);
+      ++summary.cutbacks;
+      dt /= 2;
+      why << (singular ? "" : " without convergence") << " (||r||:";
+      for (double r : result.residual_history) why << " " << r;
+      why << ")";
+      if (dt < min_step * (1 - 1e-12))
+        stop(why.str() + "; the minimum step " + std::to_string(min_step) +
+             " is reached (beyond a limit load, no equilibrium exists)");
+      Log::warning(why.str() + "; cutting the step to " + std::to_string(dt));
+      continue;
+    }
+    problem.commit(d);  // the converged layers become the history; a cut-back step never does
+    increment.update(1.0, d, -1.0, saved, 0.0);
+    previous_dt = target - t;
+    t = target;
+    ++summary.steps;
+    if (t >= next_output - 1e-12 * span) {
+      record(t);
+      last_record = t;
+      next_output = std::min(end, next_output + interval);
+    }
+  }
+  return summary;
+}
+
+}  // namespace efg

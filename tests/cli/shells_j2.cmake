@@ -1,0 +1,50 @@
+# J2 shells in implicit stages (issue 18, docs/shells.md "J2 shells"; included from
+# CMakeLists.txt after its helper functions). A simply supported plate strip pressed statically to
+# 0.985 q_c by Newton load steps and released: moments on statics, the plastic strain left by the
+# elastic unloading unchanged, the deflection recovered that of the elastic beam, 1 vs 2 ranks;
+# and beyond the collapse load the run stops with its last converged load between the 12-layer
+# rule's limit and 1 % above (tests/cli/check_shell_j2_implicit.py).
+foreach(ranks 1 2)
+  if(ranks EQUAL 1)
+    set(launcher "${efg}")
+  else()
+    set(launcher "${EFG_MPIRUN2}|${efg}")
+  endif()
+  set(dir ${EFG_CLI_TMP}/shell_j2_implicit_np${ranks})
+  efg_cli_test(NAME cli.shell_j2_implicit_np${ranks}
+    COMMAND "${launcher}|run|tests/scenes/shells/strip_j2_implicit.yaml|-o|${dir}"
+    EXIT 0 TEXT "stage 'press' done: 10 steps, 0 cutbacks|stage 'release' done: 2 steps, 0 cutbacks"
+    FILE ${dir}/history.csv RANKS ${ranks})
+  set_tests_properties(cli.shell_j2_implicit_np${ranks} PROPERTIES
+    FIXTURES_SETUP shell_j2_implicit_np${ranks})
+endforeach()
+# (rotation_x is round-off in cylindrical bending: the fields compared are those that carry it)
+add_test(NAME cli.shell_j2_implicit_ranks COMMAND /usr/bin/python3
+  ${CMAKE_CURRENT_SOURCE_DIR}/check_same_on_ranks.py 1e-9
+  ${EFG_CLI_TMP}/shell_j2_implicit_np1/history.csv ${EFG_CLI_TMP}/shell_j2_implicit_np2/history.csv
+  ${EFG_CLI_TMP}/shell_j2_implicit_np1/strip_j2_implicit.e
+  ${EFG_CLI_TMP}/shell_j2_implicit_np2/strip_j2_implicit.e
+  displacement_z rotation_y plastic_strain moment_xx)
+set_tests_properties(cli.shell_j2_implicit_ranks PROPERTIES LABELS "cli;mpi"
+  FIXTURES_REQUIRED "shell_j2_implicit_np1;shell_j2_implicit_np2")
+efg_cli_test(NAME cli.shell_j2_implicit_collapse
+  COMMAND "${efg}|run|tests/scenes/shells/strip_j2_implicit_collapse.yaml|-o|${EFG_CLI_TMP}/shell_j2_implicit_collapse"
+  EXIT 3 TEXT "the tangent is singular (a mechanism)|is reached (beyond a limit load, no equilibrium exists)"
+  FILE ${EFG_CLI_TMP}/shell_j2_implicit_collapse/strip_j2_implicit_collapse.e.part)
+set_tests_properties(cli.shell_j2_implicit_collapse PROPERTIES FIXTURES_SETUP shell_j2_implicit_collapse)
+# Clamped at both ends: hinges at the clamps, whose moments come from the edge points' own J2
+# layers; the unloading recovers the elastic twin's response to round-off.
+foreach(scene strip_j2_clamped strip_elastic_clamped)
+  efg_cli_test(NAME cli.shell_${scene}
+    COMMAND "${efg}|run|tests/scenes/shells/${scene}.yaml|-o|${EFG_CLI_TMP}/shell_${scene}"
+    EXIT 0 TEXT "stage 'press'" FILE ${EFG_CLI_TMP}/shell_${scene}/${scene}.e)
+  set_tests_properties(cli.shell_${scene} PROPERTIES FIXTURES_SETUP shell_${scene})
+endforeach()
+add_test(NAME cli.shell_j2_implicit_check COMMAND /usr/bin/python3
+  ${CMAKE_CURRENT_SOURCE_DIR}/check_shell_j2_implicit.py
+  ${EFG_CLI_TMP}/shell_j2_implicit_np1/strip_j2_implicit.e
+  --collapse ${EFG_CLI_TMP}/shell_j2_implicit_collapse/strip_j2_implicit_collapse.e.part
+  --clamped ${EFG_CLI_TMP}/shell_strip_j2_clamped/strip_j2_clamped.e
+            ${EFG_CLI_TMP}/shell_strip_elastic_clamped/strip_elastic_clamped.e)
+set_tests_properties(cli.shell_j2_implicit_check PROPERTIES LABELS cli FIXTURES_REQUIRED
+  "shell_j2_implicit_np1;shell_j2_implicit_collapse;shell_strip_j2_clamped;shell_strip_elastic_clamped")
