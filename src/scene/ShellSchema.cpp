@@ -6,9 +6,10 @@ using namespace schema;
 
 SpecPtr shell_spec() {
   return map("The part is a Reissner-Mindlin shell whose mid-surface is the part's mesh: today a "
-             "flat shell in the x-y plane of a 2D mesh, linear elastic, implicit and explicit "
-             "stages; five "
-             "dofs per particle (u, v, w and the rotations about x and y). See docs/shells.md.")
+             "flat shell in the x-y plane of a 2D mesh, small strain, linear elastic or J2 "
+             "through the thickness (implicit stages by Newton), implicit and explicit stages; "
+             "five dofs per particle (u, v, w and the rotations about x and y). See "
+             "docs/shells.md.")
       .required("thickness", real("Shell thickness.", "length").above(0))
       .optional("thickness_points",
                 integer("Gauss points through the thickness (2 integrate an elastic section "

@@ -8,7 +8,8 @@
 // for the membrane and bending rows and the direct gradients for the shear rows. A pressure q
 // (force per area along +z) gives f_(I,w) = sum_L a_L phi_I(X_L) q, consistent with the same
 // nodal quadrature. Shells are a formulation module of their own beside SolidOperator (a solid
-// scene builds none of this); this first slice is linear, implicit and flat.
+// scene builds none of this); flat and small-strain, elastic or J2 through the thickness, in
+// implicit (Newton: fill_tangent, drivers/ShellStaticProblem) and explicit stages.
 #pragma once
 
 #include <Tpetra_FECrsMatrix.hpp>
