@@ -28,7 +28,7 @@ StageSummary ImplicitDriver::run(Vector& d, const OutputHook& output) {
   summary.linear_solver = newton.plan().describe() + " (" + newton.plan().reason + ")";
   double t = start_, dt = span / steps, next_output = std::min(end, start_ + interval),
          last_output = start_;
-  Vector saved(d, Teuchos::Copy), increment(d.getMap()), start_residual(d.getMap());
+  Vector saved(d, Teuchos::Copy), increment(d.getMap());
   double previous_dt = 0;
   auto set_loads = [&](double time) {
     const double ramp = std::min(1.0, time / first_end_);
@@ -53,19 +53,11 @@ StageSummary ImplicitDriver::run(Vector& d, const OutputHook& output) {
               ": t = " + std::to_string(target));
     Tpetra::deep_copy(saved, d);
     problem_.solid().history().set_step_time(target - t);
-    // Extrapolated predictor (the last accepted increment scaled to this step; the start of
-    // Newton, not a change of the history, which each iterate recomputes from the committed
-    // state): on a steady load path Newton starts near the answer instead of at the last one,
-    // where a plastic step's first iterate overshot (det F <= 0 in a trial, cutbacks). The
-    // residual of the unpredicted start stays the scale of the Newton test.
-    double step_scale = 0, step_energy = 0;
-    if (previous_dt > 0) {
-      problem_.residual(d, start_residual);
-      step_scale = start_residual.norm2();
-      step_energy = std::abs((target - t) / previous_dt * increment.dot(start_residual));
-      d.update((target - t) / previous_dt, increment, 1.0);
-    }
-    const auto result = newton.solve(d, step_scale, step_energy);
+    // Extrapolated predictor: on a steady load path Newton starts near the answer instead of at
+    // the last one, where a plastic step's first iterate overshot (det F <= 0 in a trial,
+    // cutbacks).
+    const auto result =
+        newton.solve_predicted(d, increment, previous_dt > 0 ? (target - t) / previous_dt : 0.0);
     summary.newton_iterations += result.iterations;
     summary.linear_iterations += result.linear_iterations;
     summary.newton_records.push_back(result.record);

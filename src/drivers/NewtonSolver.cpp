@@ -156,6 +156,16 @@ double NewtonSolver::preconditioner_seconds() const {
   return preconditioner_.is_null() ? 0.0 : preconditioner_->setup_seconds();
 }
 
+NewtonResult NewtonSolver::solve_predicted(Vector& d, const Vector& increment, double ratio) {
+  if (!(ratio > 0)) return solve(d);
+  Vector start_residual(d.getMap());
+  problem_.residual(d, start_residual);
+  const double scale = start_residual.norm2();
+  const double energy = std::abs(ratio * increment.dot(start_residual));
+  d.update(ratio, increment, 1.0);
+  return solve(d, scale, energy);
+}
+
 NewtonResult NewtonSolver::solve(Vector& d, double step_scale, double step_energy) {
   Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewCounter("efg: Newton iterations"));
   NewtonResult result;

@@ -37,6 +37,12 @@ class NewtonSolver {
   /// floor of the Newton test's force scale; `step_energy`: the work of that residual over the
   /// predicted increment, a floor of its energy scale (NewtonConvergence).
   NewtonResult solve(Vector& d, double step_scale = 0.0, double step_energy = 0.0);
+  /// solve() from the extrapolated predictor of a load step (docs/implicit.md): d moves by
+  /// `ratio` times the last accepted increment (the step's length over the last one; 0: no
+  /// predictor, the first step of a stage), and the residual of the unpredicted start and its
+  /// work over the predicted move become the scales of the Newton test. The predictor is the
+  /// start of Newton, not a change of any history, which each iterate recomputes.
+  NewtonResult solve_predicted(Vector& d, const Vector& increment, double ratio);
 
   const LinearSolverPlan& plan() const { return plan_; }
   /// Seconds spent building preconditioners / factorizations so far.

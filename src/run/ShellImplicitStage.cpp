@@ -26,7 +26,7 @@ ShellImplicitSummary run_shell_implicit_stage(const Model& model, const FlatShel
   NewtonSolver newton(problem, stage.settings, scene.file, "stage '" + stage.name + "'");
   ShellImplicitSummary summary;
   summary.linear_solver = newton.plan().describe();
-  Vector saved(d, Teuchos::Copy), increment(d.getMap()), start_residual(d.getMap());
+  Vector saved(d, Teuchos::Copy), increment(d.getMap());
   double t = start, dt = span / steps, previous_dt = 0, last_record = start;
   double next_output = std::min(end, start + interval);
   while (t < end - 1e-12 * span) {
@@ -37,16 +37,9 @@ ShellImplicitSummary run_shell_implicit_stage(const Model& model, const FlatShel
     Log::info("  stage '" + stage.name + "' step " + std::to_string(summary.steps + 1) +
               ": t = " + std::to_string(target));
     Tpetra::deep_copy(saved, d);
-    // The extrapolated predictor of the solids' ImplicitDriver (docs/implicit.md): Newton starts
-    // from the last increment scaled to this step; the unpredicted residual stays its scale.
-    double step_scale = 0, step_energy = 0;
-    if (previous_dt > 0) {
-      problem.residual(d, start_residual);
-      step_scale = start_residual.norm2();
-      step_energy = std::abs((target - t) / previous_dt * increment.dot(start_residual));
-      d.update((target - t) / previous_dt, increment, 1.0);
-    }
-    const auto result = newton.solve(d, step_scale, step_energy);
+    // The extrapolated predictor of the solids' ImplicitDriver (docs/implicit.md).
+    const auto result =
+        newton.solve_predicted(d, increment, previous_dt > 0 ? (target - t) / previous_dt : 0.0);
     summary.newton_iterations += result.iterations;
     std::ostringstream why;
     why << "stage '" << stage.name << "' (shells): load step " << summary.steps + 1

@@ -230,35 +230,35 @@ RunOutcome run_shell_stages(const CommPtr& comm, const Model& model, const std::
       for (std::size_t i = 0, k = 0; i < scene.boundary_conditions.size(); ++i)
         place_in_stage[i] =
             scene.boundary_conditions[i].stages.includes(stage.name) ? static_cast<int>(k++) : -1;
-      if (stage.driver == "explicit") {
-        const auto summary = run_shell_explicit_stage(model, op, stage, start, d, v, record);
+      // the stage's time, energy and deflection at its last record, into the report
+      const auto finish = [&] {
         r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begun).count();
         r.strain_energy = history.back()[1];
-        r.steps = summary.steps;
-        r.dt = summary.dt;
-        r.energy_error = summary.energy_error;
         r.largest_deflection = largest_deflection(stage.name);
         results.push_back(r);
         start = stage.end_time;
+      };
+      if (stage.driver == "explicit") {
+        const auto summary = run_shell_explicit_stage(model, op, stage, start, d, v, record);
+        r.steps = summary.steps;
+        r.dt = summary.dt;
+        r.energy_error = summary.energy_error;
+        finish();
         continue;
       }
       if (op.plastic()) {
         const auto summary =
             run_shell_implicit_stage(model, op, stage, start, scene.stages.front().end_time, d,
                                      [&](double time) { record(time, 0.0, 0.0, {}); });
-        r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begun).count();
-        r.strain_energy = history.back()[1];
         r.steps = summary.steps;
         r.newton_iterations = summary.newton_iterations;
         r.cutbacks = summary.cutbacks;
-        r.largest_deflection = largest_deflection(stage.name);
         v.putScalar(0.0);  // a static solution, at rest
         Log::info("stage '" + stage.name + "' done: " + std::to_string(summary.steps) + " steps, " +
                   std::to_string(summary.cutbacks) + " cutbacks, " +
                   std::to_string(summary.newton_iterations) + " Newton iterations (shells, " +
                   summary.linear_solver + ")");
-        results.push_back(r);
-        start = stage.end_time;
+        finish();
         continue;
       }
       const ShellConstraints constraints(model, op, shell_supports_at(scene, stage.name, r.time));

@@ -5,11 +5,7 @@
 # and beyond the collapse load the run stops with its last converged load between the 12-layer
 # rule's limit and 1 % above (tests/cli/check_shell_j2_implicit.py).
 foreach(ranks 1 2)
-  if(ranks EQUAL 1)
-    set(launcher "${efg}")
-  else()
-    set(launcher "${EFG_MPIRUN2}|${efg}")
-  endif()
+  efg_launcher(launcher ${ranks})
   set(dir ${EFG_CLI_TMP}/shell_j2_implicit_np${ranks})
   efg_cli_test(NAME cli.shell_j2_implicit_np${ranks}
     COMMAND "${launcher}|run|tests/scenes/shells/strip_j2_implicit.yaml|-o|${dir}"
@@ -19,14 +15,8 @@ foreach(ranks 1 2)
     FIXTURES_SETUP shell_j2_implicit_np${ranks})
 endforeach()
 # (rotation_x is round-off in cylindrical bending: the fields compared are those that carry it)
-add_test(NAME cli.shell_j2_implicit_ranks COMMAND /usr/bin/python3
-  ${CMAKE_CURRENT_SOURCE_DIR}/check_same_on_ranks.py 1e-9
-  ${EFG_CLI_TMP}/shell_j2_implicit_np1/history.csv ${EFG_CLI_TMP}/shell_j2_implicit_np2/history.csv
-  ${EFG_CLI_TMP}/shell_j2_implicit_np1/strip_j2_implicit.e
-  ${EFG_CLI_TMP}/shell_j2_implicit_np2/strip_j2_implicit.e
+efg_shell_same_on_ranks(shell_j2_implicit strip_j2_implicit.e 1e-9
   displacement_z rotation_y plastic_strain moment_xx)
-set_tests_properties(cli.shell_j2_implicit_ranks PROPERTIES LABELS "cli;mpi"
-  FIXTURES_REQUIRED "shell_j2_implicit_np1;shell_j2_implicit_np2")
 efg_cli_test(NAME cli.shell_j2_implicit_collapse
   COMMAND "${efg}|run|tests/scenes/shells/strip_j2_implicit_collapse.yaml|-o|${EFG_CLI_TMP}/shell_j2_implicit_collapse"
   EXIT 3 TEXT "the tangent is singular (a mechanism)|is reached (beyond a limit load, no equilibrium exists)"
