@@ -50,14 +50,15 @@ ShellImplicitSummary run_shell_implicit_stage(const Model& model, const FlatShel
       why << ": " << result.record.reason << ", the tangent is singular (a mechanism)";
     else if (!result.failure.empty())
       why << ": " << result.failure;
-    // An elastic system that cannot be solved stays so at any step size; a plastic one whose
-    // tangent turned singular (a hinge with no hardening left: beyond the limit load) is cut
-    // back like a Newton failure, so the run approaches the limit load from below.
-    // The last converged state stays in the results when the stage stops.
+    // When the stage stops, the last converged state stays in the results.
     const auto stop = [&](const std::string& message) {
+      Tpetra::deep_copy(d, saved);
       if (t > last_record) record(t);
       throw NumericalError(message);
     };
+    // An elastic system that cannot be solved stays so at any step size; a plastic one whose
+    // tangent turned singular (a hinge with no hardening left: beyond the limit load) is cut
+    // back like a Newton failure, so the run approaches the limit load from below.
     if (result.linear_failure && problem.linear()) stop(why.str());
     if (!result.converged || result.linear_failure) {
       Tpetra::deep_copy(d, saved);
