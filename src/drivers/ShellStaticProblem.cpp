@@ -44,7 +44,17 @@ void ShellStaticProblem::residual(const Vector& d_owned, Vector& r_owned) {
   constraints_.zero_constrained(r_owned);
   internal_norm_ = r_owned.norm2();
   r_owned.update(-1.0, f_ext_, 1.0);
+  if (released_) r_owned.update(-remaining_, *released_, 1.0);
   constraints_.constrained_residual(d_overlap_, values_, r_owned);
+}
+
+void ShellStaticProblem::begin_release(const Vector& d0_owned) {
+  released_.reset();  // the stage's own residual first, without a release term
+  auto r0 = std::make_unique<Vector>(op_.maps().owned_dofs);
+  residual(d0_owned, *r0);
+  constraints_.zero_constrained(*r0);
+  released_ = std::move(r0);
+  remaining_ = 1;
 }
 
 void ShellStaticProblem::jacobian(const Vector& d_owned, FEMatrix& K) {

@@ -9,6 +9,7 @@
 // differences).
 #pragma once
 
+#include <memory>
 #include <vector>
 
 #include "drivers/NonlinearProblem.hpp"
@@ -43,6 +44,13 @@ class ShellStaticProblem : public NonlinearProblem {
   /// evaluated at d become the committed states.
   void commit(const Vector& d_owned);
 
+  /// Springback (as the solids' StaticProblem::begin_release): r(d0) of the stage's own
+  /// equations at the current level, free rows, is subtracted from the residual scaled by
+  /// `remaining` (set_release), so d0 is in equilibrium at remaining = 1 and the forces out of
+  /// balance (released supports and loads, an explicit state's inertia) are gone at 0.
+  void begin_release(const Vector& d0_owned);
+  void set_release(double remaining) { remaining_ = remaining; }
+
  private:
   const Model& model_;
   const FlatShellOperator& op_;
@@ -50,6 +58,8 @@ class ShellStaticProblem : public NonlinearProblem {
   Vector f_ext_, d_overlap_, edge_overlap_, edge_owned_;
   std::vector<double> values_;  ///< the supports' values, collocation rows' order
   double external_norm_ = 0, internal_norm_ = 0;
+  std::unique_ptr<Vector> released_;  ///< springback: r(d0) on the free rows (null: none)
+  double remaining_ = 0;
 };
 
 }  // namespace efg

@@ -29,11 +29,22 @@ ShellImplicitSummary run_shell_implicit_stage(const Model& model, const FlatShel
   Vector saved(d, Teuchos::Copy), increment(d.getMap());
   double t = start, dt = span / steps, previous_dt = 0, last_record = start;
   double next_output = std::min(end, start + interval);
+  const bool springback = stage.settings["springback"].as<bool>();
+  if (springback) {
+    // The forces out of balance at the start (released supports and loads) are released
+    // linearly over the stage, as the solids' springback stages do (docs/implicit.md).
+    problem.set_level(shell_pressure_at(model, stage.name, start, ramp(start)),
+                      shell_supports_at(scene, stage.name, start, ramp(start)));
+    problem.begin_release(d);
+    Log::info("  stage '" + stage.name + "': springback, releasing the forces out of balance " +
+              "at the start over " + std::to_string(steps) + " load step(s)");
+  }
   while (t < end - 1e-12 * span) {
     // (a step ending within round-off of the stage end ends exactly there)
     const double target = end - (t + dt) < 1e-12 * span ? end : t + dt;
     problem.set_level(shell_pressure_at(model, stage.name, target, ramp(target)),
                       shell_supports_at(scene, stage.name, target, ramp(target)));
+    if (springback) problem.set_release(std::max(0.0, (end - target) / span));
     Log::info("  stage '" + stage.name + "' step " + std::to_string(summary.steps + 1) +
               ": t = " + std::to_string(target));
     Tpetra::deep_copy(saved, d);

@@ -23,8 +23,10 @@ efg_cli_test(NAME cli.shell_j2_implicit_collapse
   FILE ${EFG_CLI_TMP}/shell_j2_implicit_collapse/strip_j2_implicit_collapse.e.part)
 set_tests_properties(cli.shell_j2_implicit_collapse PROPERTIES FIXTURES_SETUP shell_j2_implicit_collapse)
 # Clamped at both ends: hinges at the clamps, whose moments come from the edge points' own J2
-# layers; the unloading recovers the elastic twin's response to round-off.
-foreach(scene strip_j2_clamped strip_elastic_clamped)
+# layers; the unloading recovers the elastic twin's response to round-off. Clamps and load
+# released by a springback stage: the end state of the release at once.
+foreach(scene strip_j2_clamped strip_elastic_clamped strip_j2_springback_release
+        strip_j2_direct_release)
   efg_cli_test(NAME cli.shell_${scene}
     COMMAND "${efg}|run|tests/scenes/shells/${scene}.yaml|-o|${EFG_CLI_TMP}/shell_${scene}"
     EXIT 0 TEXT "stage 'press'" FILE ${EFG_CLI_TMP}/shell_${scene}/${scene}.e)
@@ -35,9 +37,11 @@ add_test(NAME cli.shell_j2_implicit_check COMMAND /usr/bin/python3
   ${EFG_CLI_TMP}/shell_j2_implicit_np1/strip_j2_implicit.e
   --collapse ${EFG_CLI_TMP}/shell_j2_implicit_collapse/strip_j2_implicit_collapse.e.part
   --clamped ${EFG_CLI_TMP}/shell_strip_j2_clamped/strip_j2_clamped.e
-            ${EFG_CLI_TMP}/shell_strip_elastic_clamped/strip_elastic_clamped.e)
+            ${EFG_CLI_TMP}/shell_strip_elastic_clamped/strip_elastic_clamped.e
+  --springback ${EFG_CLI_TMP}/shell_strip_j2_springback_release/strip_j2_springback_release.e
+               ${EFG_CLI_TMP}/shell_strip_j2_direct_release/strip_j2_direct_release.e)
 set_tests_properties(cli.shell_j2_implicit_check PROPERTIES LABELS cli FIXTURES_REQUIRED
-  "shell_j2_implicit_np1;shell_j2_implicit_collapse;shell_strip_j2_clamped;shell_strip_elastic_clamped")
+  "shell_j2_implicit_np1;shell_j2_implicit_collapse;shell_strip_j2_clamped;shell_strip_elastic_clamped;shell_strip_j2_springback_release;shell_strip_j2_direct_release")
 # Springback of a J2 shell (issues 18 and 21): bent explicitly by end rotations to 10 kappa_y,
 # released implicitly (the layers' history handed from the explicit stage to the Newton stage):
 # the curvature springs back by the closed form M / (E' I) (3 %) and by the bent strip's own
