@@ -24,9 +24,10 @@ efg_cli_test(NAME cli.shell_j2_implicit_collapse
 set_tests_properties(cli.shell_j2_implicit_collapse PROPERTIES FIXTURES_SETUP shell_j2_implicit_collapse)
 # Clamped at both ends: hinges at the clamps, whose moments come from the edge points' own J2
 # layers; the unloading recovers the elastic twin's response to round-off. Clamps and load
-# released by a springback stage: the end state of the release at once.
+# released by a springback stage: the end state of the release at once. Explicit and implicit
+# J2 shells on a quasi-static plastic loading (0.9 q_c, smooth ramp): the same state.
 foreach(scene strip_j2_clamped strip_elastic_clamped strip_j2_springback_release
-        strip_j2_direct_release)
+        strip_j2_direct_release strip_j2_quasistatic_explicit strip_j2_quasistatic_implicit)
   efg_cli_test(NAME cli.shell_${scene}
     COMMAND "${efg}|run|tests/scenes/shells/${scene}.yaml|-o|${EFG_CLI_TMP}/shell_${scene}"
     EXIT 0 TEXT "stage 'press'" FILE ${EFG_CLI_TMP}/shell_${scene}/${scene}.e)
@@ -39,9 +40,11 @@ add_test(NAME cli.shell_j2_implicit_check COMMAND /usr/bin/python3
   --clamped ${EFG_CLI_TMP}/shell_strip_j2_clamped/strip_j2_clamped.e
             ${EFG_CLI_TMP}/shell_strip_elastic_clamped/strip_elastic_clamped.e
   --springback ${EFG_CLI_TMP}/shell_strip_j2_springback_release/strip_j2_springback_release.e
-               ${EFG_CLI_TMP}/shell_strip_j2_direct_release/strip_j2_direct_release.e)
+               ${EFG_CLI_TMP}/shell_strip_j2_direct_release/strip_j2_direct_release.e
+  --quasistatic ${EFG_CLI_TMP}/shell_strip_j2_quasistatic_explicit/strip_j2_quasistatic_explicit.e
+                ${EFG_CLI_TMP}/shell_strip_j2_quasistatic_implicit/strip_j2_quasistatic_implicit.e)
 set_tests_properties(cli.shell_j2_implicit_check PROPERTIES LABELS cli FIXTURES_REQUIRED
-  "shell_j2_implicit_np1;shell_j2_implicit_collapse;shell_strip_j2_clamped;shell_strip_elastic_clamped;shell_strip_j2_springback_release;shell_strip_j2_direct_release")
+  "shell_j2_implicit_np1;shell_j2_implicit_collapse;shell_strip_j2_clamped;shell_strip_elastic_clamped;shell_strip_j2_springback_release;shell_strip_j2_direct_release;shell_strip_j2_quasistatic_explicit;shell_strip_j2_quasistatic_implicit")
 # Springback of a J2 shell (issues 18 and 21): bent explicitly by end rotations to 10 kappa_y,
 # released implicitly (the layers' history handed from the explicit stage to the Newton stage):
 # the curvature springs back by the closed form M / (E' I) (3 %) and by the bent strip's own
