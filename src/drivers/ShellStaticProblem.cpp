@@ -1,8 +1,5 @@
 #include "drivers/ShellStaticProblem.hpp"
 
-#include <Tpetra_Export.hpp>
-#include <Tpetra_Import.hpp>
-
 #include <algorithm>
 
 namespace efg {
@@ -14,8 +11,6 @@ ShellStaticProblem::ShellStaticProblem(const Model& model, const FlatShellOperat
       constraints_(model, op, supports),
       f_ext_(op.maps().owned_dofs),
       d_overlap_(op.maps().overlap_dofs),
-      edge_overlap_(op.maps().overlap_dofs),
-      edge_owned_(op.maps().owned_dofs),
       values_(constraints_.collocation_values(supports)) {
   // The collocation rows' scales come from the tangent's rows at the start (kept afterwards).
   auto K = create_matrix();
@@ -32,19 +27,12 @@ void ShellStaticProblem::set_level(const FlatShellOperator::Pressure& pressure,
 }
 
 void ShellStaticProblem::residual(const Vector& d_owned, Vector& r_owned) {
-  op_.internal_force(d_owned, r_owned);
-  Tpetra::Import<> importer(op_.maps().owned_dofs, op_.maps().overlap_dofs);
-  d_overlap_.doImport(d_owned, importer, Tpetra::INSERT);
-  edge_overlap_.putScalar(0.0);
-  constraints_.add_edge_forces(d_overlap_, edge_overlap_);
-  Tpetra::Export<> exporter(op_.maps().overlap_dofs, op_.maps().owned_dofs);
-  edge_owned_.putScalar(0.0);
-  edge_owned_.doExport(edge_overlap_, exporter, Tpetra::ADD);
-  r_owned.update(1.0, edge_owned_, 1.0);
+  op_.internal_force(d_owned, r_owned, &constraints_);  // with the edge terms
   constraints_.zero_constrained(r_owned);
   internal_norm_ = r_owned.norm2();
   r_owned.update(-1.0, f_ext_, 1.0);
   if (released_) r_owned.update(-remaining_, *released_, 1.0);
+  op_.to_overlap(d_owned, d_overlap_);
   constraints_.constrained_residual(d_overlap_, values_, r_owned);
 }
 

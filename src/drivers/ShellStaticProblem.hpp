@@ -55,7 +55,7 @@ class ShellStaticProblem : public NonlinearProblem {
   const Model& model_;
   const FlatShellOperator& op_;
   ShellConstraints constraints_;
-  Vector f_ext_, d_overlap_, edge_overlap_, edge_owned_;
+  Vector f_ext_, d_overlap_;
   std::vector<double> values_;  ///< the supports' values, collocation rows' order
   double external_norm_ = 0, internal_norm_ = 0;
   std::unique_ptr<Vector> released_;  ///< springback: r(d0) on the free rows (null: none)

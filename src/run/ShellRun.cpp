@@ -36,14 +36,14 @@ const char* const probe_names[probe_columns] = {"ux", "uy", "uz", "rx", "ry", "m
 // elastic parts M = D kappa with the curvature from the direct gradients of the rotations there;
 // J2 parts (whose moments need a layer history, kept at the integration points only) the
 // moments of the nearest integration point of the part on the probe's rank.
+// `point_resultants`: FlatShellOperator::resultants at d (needed when a part is J2).
 std::vector<double> probe_values(const Model& model, const FlatShellOperator::Vector& d_owned,
-                                 const FlatShellOperator& op) {
+                                 const FlatShellOperator& op,
+                                 const std::vector<double>& point_resultants) {
   std::vector<double> local(model.scene.probes.size() * probe_columns, 0.0),
       global(local.size(), 0.0);
-  const auto point_resultants = op.plastic() ? op.resultants(d_owned) : std::vector<double>{};
-  Tpetra::Import<> importer(op.maps().owned_dofs, op.maps().overlap_dofs);
   FlatShellOperator::Vector d_overlap(op.maps().overlap_dofs);
-  d_overlap.doImport(d_owned, importer, Tpetra::INSERT);
+  op.to_overlap(d_owned, d_overlap);
   const auto d = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
   for (std::size_t i = 0; i < model.scene.probes.size(); ++i) {
     const auto& probe = model.scene.probes[i];
@@ -170,7 +170,10 @@ RunOutcome run_shell_stages(const CommPtr& comm, const Model& model, const std::
   auto record = [&](double time, double kinetic, double external_work,
                     const std::vector<double>& forces) {
     const auto values = op.physical_values(d);
-    const auto resultants = with_resultants ? op.resultants(d) : std::vector<double>{};
+    // (J2 parts' probes read the points' resultants too)
+    const bool plastic_probes = op.plastic() && !scene.probes.empty();
+    std::vector<double> resultants;
+    if (with_resultants || plastic_probes) resultants = op.resultants(d);
     const auto stresses = with_stress ? op.surface_stresses(d) : std::vector<double>{};
     // the largest effective plastic strain through the thickness (0 for elastic parts)
     const auto plastic = with_plastic ? op.plastic_strain() : std::vector<double>{};
@@ -194,7 +197,7 @@ RunOutcome run_shell_stages(const CommPtr& comm, const Model& model, const std::
     double energy = 0, local = op.strain_energy(d);
     Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, 1, &local, &energy);
     std::vector<double> global = {energy, kinetic, external_work};
-    for (double p : probe_values(model, d, op)) global.push_back(p);
+    for (double p : probe_values(model, d, op, resultants)) global.push_back(p);
     for (const auto& [i, c] : support_columns) {
       const int k = place_in_stage[i];
       global.push_back(k >= 0 && !forces.empty() ? forces[static_cast<std::size_t>(k) * nd + c]

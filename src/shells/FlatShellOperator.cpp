@@ -25,7 +25,10 @@ constexpr int nd = shell_dofs_per_node;
 
 FlatShellOperator::FlatShellOperator(const Model& model, int thickness_points,
                                      double shear_stabilization)
-    : model_(model), maps_(make_dof_maps(model.maps.owned_nodes->getComm(), model.partition, nd)) {
+    : model_(model),
+      maps_(make_dof_maps(model.maps.owned_nodes->getComm(), model.partition, nd)),
+      importer_(Teuchos::rcp(new Tpetra::Import<>(maps_.owned_dofs, maps_.overlap_dofs))),
+      exporter_(Teuchos::rcp(new Tpetra::Export<>(maps_.overlap_dofs, maps_.owned_dofs))) {
   ++instances_;
   if (model.mesh.dimension != 2)
     throw InputError(model.scene.file + ": flat shells need a 2D mid-surface mesh");
@@ -194,15 +197,18 @@ void FlatShellOperator::add_pressure(const Pressure& q, Vector& f_owned) const {
           f(static_cast<std::size_t>(p.node[a]) * nd + shell_w, 0) += load * p.phi[a];
       }
   }
-  Tpetra::Export<> exporter(maps_.overlap_dofs, maps_.owned_dofs);
-  f_owned.doExport(f_overlap, exporter, Tpetra::ADD);
+  f_owned.doExport(f_overlap, *exporter_, Tpetra::ADD);
 }
 
 FlatShellOperator::Vector FlatShellOperator::to_overlap(const Vector& d_owned) const {
   Vector d(maps_.overlap_dofs);
-  Tpetra::Import<> importer(maps_.owned_dofs, maps_.overlap_dofs);
-  d.doImport(d_owned, importer, Tpetra::INSERT);
+  to_overlap(d_owned, d);
   return d;
+}
+
+void FlatShellOperator::export_add(const Vector& f_overlap, Vector& f_owned) const {
+  f_owned.putScalar(0.0);
+  f_owned.doExport(f_overlap, *exporter_, Tpetra::ADD);
 }
 
 std::vector<double> FlatShellOperator::physical_values(const Vector& d_owned) const {

@@ -12,7 +12,9 @@
 // implicit (Newton: fill_tangent, drivers/ShellStaticProblem) and explicit stages.
 #pragma once
 
+#include <Tpetra_Export.hpp>
 #include <Tpetra_FECrsMatrix.hpp>
+#include <Tpetra_Import.hpp>
 #include <Tpetra_Vector.hpp>
 
 #include <array>
@@ -116,8 +118,15 @@ class FlatShellOperator {
   std::vector<double> plastic_strain() const;
 
   /// f = K d without the constraints, assembled point by point (sum_L a_L B(L)^T S B(L) d), no
-  /// matrix: the internal force of explicit stages (owned dofs, overwritten).
-  void internal_force(const Vector& d_owned, Vector& f_owned) const;
+  /// matrix: the internal force of explicit stages (owned dofs, overwritten). With `edges`, their
+  /// edge traction terms are added before the export (the implicit residual; one import, one
+  /// export).
+  void internal_force(const Vector& d_owned, Vector& f_owned,
+                      const ShellConstraints* edges = nullptr) const;
+  /// The owned values imported to the overlap map (owned then ghost particles).
+  void to_overlap(const Vector& d_owned, Vector& d_overlap) const {
+    d_overlap.doImport(d_owned, *importer_, Tpetra::INSERT);
+  }
   /// The lumped mass of every owned dof (shells/ShellMass.hpp): translations the row sums
   /// rho t sum_L a_L phi_I(X_L) of the consistent mass, rotations that mass times
   /// max(t^2, h^2) / 12 (rotary inertia scaled up to the particle spacing h). Throws InputError
@@ -137,6 +146,8 @@ class FlatShellOperator {
   /// K_L = a_L B^T S B of one point (5n x 5n, row major), S its section tangent.
   std::vector<double> point_stiffness(const Point& p, const SectionTangent& S) const;
   Vector to_overlap(const Vector& d_owned) const;
+  /// f_owned = the sum of the overlap contributions of every rank.
+  void export_add(const Vector& f_overlap, Vector& f_owned) const;
   /// The 8 generalized strains of a point at the overlap values d.
   template <class View>
   void point_strains(const Point& p, const View& d, double (&e)[shell_strains]) const;
@@ -152,6 +163,9 @@ class FlatShellOperator {
 
   const Model& model_;
   DofMaps maps_;
+  // built once: an Import/Export plan is collective setup work, not per evaluation
+  Teuchos::RCP<const Tpetra::Import<>> importer_;
+  Teuchos::RCP<const Tpetra::Export<>> exporter_;
   std::vector<int> layers_;                               ///< thickness points per part
   std::vector<std::optional<physics::J2Parameters>> j2_;  ///< per part: J2 when plastic
   /// per part: j2_state::count doubles per thickness point per integration point

@@ -10,6 +10,7 @@
 
 #include "core/Errors.hpp"
 #include "shells/FlatShellPointLaw.hpp"
+#include "shells/ShellConstraints.hpp"
 #include "shells/ShellMass.hpp"
 
 namespace efg {
@@ -65,7 +66,8 @@ double FlatShellOperator::strain_energy(const Vector& d_owned) const {
   return energy;
 }
 
-void FlatShellOperator::internal_force(const Vector& d_owned, Vector& f_owned) const {
+void FlatShellOperator::internal_force(const Vector& d_owned, Vector& f_owned,
+                                       const ShellConstraints* edges) const {
   const auto d_overlap = to_overlap(d_owned);
   Vector f_overlap(maps_.overlap_dofs);
   {
@@ -87,9 +89,8 @@ void FlatShellOperator::internal_force(const Vector& d_owned, Vector& f_owned) c
         }
       }
   }
-  f_owned.putScalar(0.0);
-  Tpetra::Export<> exporter(maps_.overlap_dofs, maps_.owned_dofs);
-  f_owned.doExport(f_overlap, exporter, Tpetra::ADD);
+  if (edges) edges->add_edge_forces(d_overlap, f_overlap);
+  export_add(f_overlap, f_owned);
 }
 
 FlatShellOperator::Vector FlatShellOperator::lumped_mass() const {
@@ -118,8 +119,7 @@ FlatShellOperator::Vector FlatShellOperator::lumped_mass() const {
     }
   }
   Vector m_owned(maps_.owned_dofs);
-  Tpetra::Export<> exporter(maps_.overlap_dofs, maps_.owned_dofs);
-  m_owned.doExport(m_overlap, exporter, Tpetra::ADD);
+  export_add(m_overlap, m_owned);
   auto m = m_owned.getLocalViewHost(Tpetra::Access::ReadWrite);
   for (std::size_t i = 0; i < spacing.size(); ++i) {
     const double mass = m(i * nd, 0);
