@@ -18,9 +18,11 @@ ShellStaticProblem::ShellStaticProblem(const Model& model, const FlatShellOperat
 }
 
 void ShellStaticProblem::set_level(const FlatShellOperator::Pressure& pressure,
-                                   const std::vector<ShellSupport>& supports) {
+                                   const std::vector<ShellSupport>& supports,
+                                   const std::function<void(Vector&)>& more_loads) {
   f_ext_.putScalar(0.0);
   op_.add_pressure(pressure, f_ext_);
+  if (more_loads) more_loads(f_ext_);
   constraints_.zero_constrained(f_ext_);
   external_norm_ = f_ext_.norm2();
   values_ = constraints_.collocation_values(supports);
@@ -49,11 +51,12 @@ void ShellStaticProblem::jacobian(const Vector& d_owned, FEMatrix& K) {
   op_.fill_tangent(d_owned, constraints_, K);
 }
 
-void ShellStaticProblem::commit(const Vector& d_owned) {
+void ShellStaticProblem::commit(Vector& d_owned) {
   Vector r(op_.maps().owned_dofs);
   residual(d_owned, r);  // every point's and edge point's trial state at d
   op_.commit_state();
   constraints_.commit();
+  if (op_.finite_rotations()) op_.accept_rotations(d_owned);
 }
 
 }  // namespace efg

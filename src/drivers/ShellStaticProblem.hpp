@@ -9,6 +9,7 @@
 // differences).
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -24,9 +25,11 @@ class ShellStaticProblem : public NonlinearProblem {
   ShellStaticProblem(const Model& model, const FlatShellOperator& op,
                      const std::vector<ShellSupport>& supports);
 
-  /// The loads and prescribed values of a load level: the pressure and the supports' values.
+  /// The loads and prescribed values of a load level: the pressure, further loads added to the
+  /// external force by `more_loads` (edge line loads), and the supports' values.
   void set_level(const FlatShellOperator::Pressure& pressure,
-                 const std::vector<ShellSupport>& supports);
+                 const std::vector<ShellSupport>& supports,
+                 const std::function<void(Vector&)>& more_loads = {});
 
   void residual(const Vector& d_owned, Vector& r_owned) override;
   void jacobian(const Vector& d_owned, FEMatrix& K) override;
@@ -36,13 +39,14 @@ class ShellStaticProblem : public NonlinearProblem {
   }
   /// max(||f_ext||, ||f_int + f_edge|| on the free rows) of the last residual.
   double force_scale() const override { return std::max(external_norm_, internal_norm_); }
-  bool linear() const override { return !op_.plastic(); }
+  bool linear() const override { return !op_.plastic() && !op_.finite_rotations(); }
   const Model& model() const override { return model_; }
   bool displacement_dofs() const override { return false; }
 
   /// Accepts the load step converged at d: the J2 layers of the points and of the edge points
-  /// evaluated at d become the committed states.
-  void commit(const Vector& d_owned);
+  /// evaluated at d become the committed states; with finite rotations the particles' frames
+  /// take the step's rotations, whose dofs in d become 0 (FlatShellOperator::accept_rotations).
+  void commit(Vector& d_owned);
 
   /// Springback (as the solids' StaticProblem::begin_release): r(d0) of the stage's own
   /// equations at the current level, free rows, is subtracted from the residual scaled by

@@ -23,6 +23,10 @@ ShellImplicitSummary run_shell_implicit_stage(const Model& model, const FlatShel
   const double interval = stage.output_interval.value_or(span);
   const auto ramp = [&](double time) { return std::min(1.0, time / first_end); };
   ShellStaticProblem problem(model, op, shell_supports_at(scene, stage.name, end));
+  const ShellEdgeLoads edge_loads(model, op, stage.name);
+  const auto edge_loads_at = [&](double time) {
+    return [&edge_loads, time, r = ramp(time)](Vector& f) { edge_loads.add(time, r, f); };
+  };
   NewtonSolver newton(problem, stage.settings, scene.file, "stage '" + stage.name + "'");
   ShellImplicitSummary summary;
   summary.linear_solver = newton.plan().describe();
@@ -34,7 +38,8 @@ ShellImplicitSummary run_shell_implicit_stage(const Model& model, const FlatShel
     // The forces out of balance at the start (released supports and loads) are released
     // linearly over the stage, as the solids' springback stages do (docs/implicit.md).
     problem.set_level(shell_pressure_at(model, stage.name, start, ramp(start)),
-                      shell_supports_at(scene, stage.name, start, ramp(start)));
+                      shell_supports_at(scene, stage.name, start, ramp(start)),
+                      edge_loads_at(start));
     problem.begin_release(d);
     Log::info("  stage '" + stage.name + "': springback, releasing the forces out of balance " +
               "at the start over " + std::to_string(steps) + " load step(s)");
@@ -43,7 +48,8 @@ ShellImplicitSummary run_shell_implicit_stage(const Model& model, const FlatShel
     // (a step ending within round-off of the stage end ends exactly there)
     const double target = end - (t + dt) < 1e-12 * span ? end : t + dt;
     problem.set_level(shell_pressure_at(model, stage.name, target, ramp(target)),
-                      shell_supports_at(scene, stage.name, target, ramp(target)));
+                      shell_supports_at(scene, stage.name, target, ramp(target)),
+                      edge_loads_at(target));
     if (springback) problem.set_release(std::max(0.0, (end - target) / span));
     Log::info("  stage '" + stage.name + "' step " + std::to_string(summary.steps + 1) +
               ": t = " + std::to_string(target));
@@ -84,8 +90,10 @@ ShellImplicitSummary run_shell_implicit_stage(const Model& model, const FlatShel
       Log::warning(why.str() + "; cutting the step to " + std::to_string(dt));
       continue;
     }
-    problem.commit(d);  // the converged layers become the history; a cut-back step never does
+    // the step's change (the next predictor's; with finite rotations the rotation dofs'
+    // change is the step's rotation, taken before commit makes the frames carry it)
     increment.update(1.0, d, -1.0, saved, 0.0);
+    problem.commit(d);  // the converged layers become the history; a cut-back step never does
     previous_dt = target - t;
     t = target;
     ++summary.steps;

@@ -34,8 +34,9 @@ const char* const probe_names[probe_columns] = {"ux", "uy", "uz", "rx", "ry", "m
 
 // Probe columns at each probe point (collective): u^h of the five fields and the moments:
 // elastic parts M = D kappa with the curvature from the direct gradients of the rotations there;
-// J2 parts (whose moments need a layer history, kept at the integration points only) the
-// moments of the nearest integration point of the part on the probe's rank.
+// J2 parts (whose moments need a layer history, kept at the integration points only) and finite
+// rotations (rotation dofs since the last step) the moments of the nearest integration point of
+// the part on the probe's rank, and with finite rotations the rotations of the director there.
 // `point_resultants`: FlatShellOperator::resultants at d (needed when a part is J2).
 std::vector<double> probe_values(const Model& model, const FlatShellOperator::Vector& d_owned,
                                  const FlatShellOperator& op,
@@ -55,17 +56,23 @@ std::vector<double> probe_values(const Model& model, const FlatShellOperator::Ve
     });
     double* out = &local[i * probe_columns];
     double grad_rx[2] = {0, 0}, grad_ry[2] = {0, 0};
+    Vec3 director{};  // finite rotations: sum phi_I d_I
     for (auto k = v.neighbors.offsets[0]; k < v.neighbors.offsets[1]; ++k) {
       const auto node = cloud.mesh_node[static_cast<std::size_t>(v.neighbors.particles[k])];
       const auto lid = static_cast<std::size_t>(
           op.maps().overlap_nodes->getLocalElement(static_cast<GlobalOrdinal>(node)));
       for (std::size_t c = 0; c < nd; ++c) out[c] += v.phi[k] * d(lid * nd + c, 0);
+      if (op.finite_rotations()) {
+        const auto dI = op.node_at(static_cast<int>(lid), nullptr, nullptr, 0.0, d).director.d;
+        for (std::size_t c = 0; c < 3; ++c) director[c] += v.phi[k] * dI[c];
+      }
       for (std::size_t a = 0; a < 2; ++a) {
         grad_rx[a] += v.grad[2 * k + a] * d(lid * nd + shell_rx, 0);
         grad_ry[a] += v.grad[2 * k + a] * d(lid * nd + shell_ry, 0);
       }
     }
-    if (op.section_law(static_cast<std::size_t>(p), 0.0).j2) {
+    if (op.finite_rotations()) director_rotation(director, out[shell_rx], out[shell_ry]);
+    if (op.section_law(static_cast<std::size_t>(p), 0.0).j2 || op.finite_rotations()) {
       double nearest = -1;
       for (std::size_t r = 0; r < cloud.owned_count; ++r) {
         const double dx = cloud.position[2 * r] - probe.point[0],
@@ -171,7 +178,8 @@ RunOutcome run_shell_stages(const CommPtr& comm, const Model& model, const std::
                     const std::vector<double>& forces) {
     const auto values = op.physical_values(d);
     // (J2 parts' probes read the points' resultants too)
-    const bool plastic_probes = op.plastic() && !scene.probes.empty();
+    const bool plastic_probes =
+        (op.plastic() || op.finite_rotations()) && !scene.probes.empty();
     std::vector<double> resultants;
     if (with_resultants || plastic_probes) resultants = op.resultants(d);
     const auto stresses = with_stress ? op.surface_stresses(d) : std::vector<double>{};
@@ -249,7 +257,7 @@ RunOutcome run_shell_stages(const CommPtr& comm, const Model& model, const std::
         finish();
         continue;
       }
-      if (op.plastic()) {
+      if (op.plastic() || op.finite_rotations()) {
         const auto summary =
             run_shell_implicit_stage(model, op, stage, start, scene.stages.front().end_time, d,
                                      [&](double time) { record(time, 0.0, 0.0, {}); });
@@ -268,6 +276,7 @@ RunOutcome run_shell_stages(const CommPtr& comm, const Model& model, const std::
       const auto K = op.stiffness(constraints);
       FlatShellOperator::Vector f(op.maps().owned_dofs);
       op.add_pressure(shell_pressure_at(model, stage.name, r.time), f);
+      ShellEdgeLoads(model, op, stage.name).add(r.time, 1.0, f);
       constraints.set_values(f);
       const auto lu = make_direct_preconditioner(Teuchos::ParameterList());
       lu->set_map(op.maps().owned_dofs);

@@ -1,5 +1,6 @@
 #include "run/ShellStageInputs.hpp"
 
+#include "core/Errors.hpp"
 #include "model/Curves.hpp"
 
 namespace efg {
@@ -58,6 +59,43 @@ FlatShellOperator::Pressure shell_pressure_at(const Model& model, const std::str
     }
     return q;
   };
+}
+
+ShellEdgeLoads::ShellEdgeLoads(const Model& model, const FlatShellOperator& op,
+                               const std::string& stage)
+    : model_(model), op_(op), stage_(stage) {
+  for (const auto& l : model.scene.loads) {
+    if (l.type != "shell_edge_load" || !l.stages.includes(stage)) continue;
+    long long sides = 0;
+    loads_.emplace_back(&l, shell_edge_points(model, l.set, &sides));
+    if (sides == 0)
+      throw InputError(model.scene.file + ": load '" + l.name + "': node set '" + l.set +
+                       "' covers no edge of a shell part");
+  }
+}
+
+void ShellEdgeLoads::add(double time, double ramp, FlatShellOperator::Vector& f_owned) const {
+  if (loads_.empty()) return;
+  const auto factor = curve_factor(model_.scene, time, ramp, stage_);
+  FlatShellOperator::Vector f_overlap(op_.maps().overlap_dofs);
+  {
+    auto f = f_overlap.getLocalViewHost(Tpetra::Access::ReadWrite);
+    const auto& overlap = *op_.maps().overlap_nodes;
+    for (const auto& [load, points] : loads_) {
+      const double scale = factor(load->curve);
+      for (const auto& p : points) {
+        const double x[3] = {p.x[0], p.x[1], 0.0};
+        double q[nd];
+        for (std::size_t c = 0; c < nd; ++c) q[c] = scale * load->value[c].at(x, time);
+        for (std::size_t a = 0; a < p.node.size(); ++a) {
+          const auto lid = static_cast<std::size_t>(
+              overlap.getLocalElement(static_cast<GlobalOrdinal>(p.node[a])));
+          for (std::size_t c = 0; c < nd; ++c) f(lid * nd + c, 0) += p.length * p.phi[a] * q[c];
+        }
+      }
+    }
+  }
+  op_.add_overlap(f_overlap, f_owned);
 }
 
 }  // namespace efg

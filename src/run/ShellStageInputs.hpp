@@ -1,5 +1,5 @@
 // What a shell stage reads of the scene at a time: its supports (the boundary conditions active
-// in the stage, their curves' factors at that time) and its shell_pressure loads.
+// in the stage, their curves' factors at that time), its shell_pressure and shell_edge_load loads.
 #pragma once
 
 #include <string>
@@ -7,6 +7,7 @@
 
 #include "model/Model.hpp"
 #include "shells/FlatShellOperator.hpp"
+#include "shells/ShellBoundary.hpp"
 #include "shells/ShellConstraints.hpp"
 
 namespace efg {
@@ -25,5 +26,23 @@ bool shell_supports_move(const Scene& scene, const std::string& stage);
 /// `ramp` times its value).
 FlatShellOperator::Pressure shell_pressure_at(const Model& model, const std::string& stage,
                                               double time, double ramp = 1.0);
+
+/// The shell_edge_load line loads active in a stage: their edge points (the SCNI boundary
+/// quadrature of shells/ShellBoundary.hpp) found once, the loads added at any time.
+class ShellEdgeLoads {
+ public:
+  ShellEdgeLoads(const Model& model, const FlatShellOperator& op, const std::string& stage);
+  /// f_(I,c) += sum_e l_e phi_I(X_e) s q_c(X_e, t) (owned dofs), s the load's curve factor at
+  /// `time` (without a curve: `ramp`). Components: forces along x, y, z, moments about the
+  /// rotation dofs' axes.
+  void add(double time, double ramp, FlatShellOperator::Vector& f_owned) const;
+  bool empty() const { return loads_.empty(); }
+
+ private:
+  const Model& model_;
+  const FlatShellOperator& op_;
+  std::string stage_;
+  std::vector<std::pair<const LoadSpec*, std::vector<ShellEdgePoint>>> loads_;
+};
 
 }  // namespace efg

@@ -111,11 +111,12 @@ class Checker {
       const auto& ld = d["loads"][i];
       if (load.type == "traction" || load.type == "pressure")
         require_name(ld["side_set"], path + ".side_set", load.set, "side set", side_sets);
-      if (load.type == "nodal_force") {
+      if (load.type == "nodal_force" || load.type == "shell_edge_load") {
         require_name(ld["node_set"], path + ".node_set", load.set, "node set", node_sets);
         require_nodes(ld["node_set"], path + ".node_set", load.set);
       }
-      if (load.type != "pressure" && load.type != "shell_pressure" && !load.from_exact)
+      if (load.type != "pressure" && load.type != "shell_pressure" &&
+          load.type != "shell_edge_load" && !load.from_exact)
         require_dimension(ld["value"], path + ".value", load.value.size());
     }
     for (std::size_t i = 0; i < s_.rigid_walls.size(); ++i) {

@@ -207,7 +207,8 @@ SpecPtr load_spec() {
   return map("An external load. Keys after type depend on the type.")
       .required("name", string("Load name, unique."))
       .required("type", choice("Kind of load.", {"traction", "pressure", "nodal_force",
-                                                 "body_force", "shell_pressure"}))
+                                                 "body_force", "shell_pressure",
+                                                 "shell_edge_load"}))
       .optional("stages", string_list("Stages the load acts in (names of stages); every stage "
                                       "when omitted.")
                               .items(1, 1000))
@@ -245,7 +246,8 @@ SpecPtr load_spec() {
                                  .items(2, 3)
                                  .varying(ExpressionVariables::position_and_time)),
                 exact, curve})
-      .variant("shell_pressure", shell_pressure_keys());
+      .variant("shell_pressure", shell_pressure_keys())
+      .variant("shell_edge_load", shell_edge_load_keys());
 }
 
 SpecPtr initial_condition_spec() {

@@ -31,10 +31,11 @@ void check_solid_scene(const Scene& s) {
            "resultants (forces and moments per unit length) are shell fields, and no part of "
            "this scene is a shell; expected stress or strain");
   for (std::size_t i = 0; i < s.loads.size(); ++i)
-    if (s.loads[i].type == "shell_pressure")
+    if (s.loads[i].type == "shell_pressure" || s.loads[i].type == "shell_edge_load")
       fail(s, d["loads"][i]["type"], "loads[" + std::to_string(i) + "].type",
-           "shell_pressure loads the mid-surface of shell parts, and no part of this scene is a "
-           "shell; expected pressure (on a side set) or body_force");
+           s.loads[i].type +
+               " loads shell parts, and no part of this scene is a shell; expected pressure, "
+               "traction (on a side set), nodal_force or body_force");
 }
 
 }  // namespace
@@ -69,16 +70,23 @@ void check_shell_scene(const Scene& s, const BackgroundMesh& mesh) {
     if (part.section.integration == Integration::gauss)
       fail(s, pd["section"]["integration"], path + ".section.integration",
            "shells are integrated at the particles: expected scni or nodal");
-    if (part.section.formulation != Formulation::small_strain)
+    if (part.section.formulation != s.parts.front().section.formulation)
       fail(s, pd["section"]["formulation"], path + ".section.formulation",
-           "shells are linear (small rotations) in this version: expected small_strain");
+           "every shell part of a scene has the same kinematics in this version: expected the "
+           "formulation of parts[0]");
     if (part.formulation != PartFormulation::displacement)
       fail(s, pd["formulation"], path + ".formulation",
            "a shell has no mixed_up formulation: expected displacement");
   }
+  const bool finite = s.parts.front().section.formulation == Formulation::total_lagrangian;
   for (std::size_t i = 0; i < s.stages.size(); ++i) {
     const auto& stage = s.stages[i];
     if (stage.driver != "explicit") continue;
+    if (finite)
+      fail(s, d["stages"][i]["driver"], "stages[" + std::to_string(i) + "].driver",
+           "finite rotations of shells (section.formulation: total_lagrangian) are implicit in "
+           "this version (the explicit co-rotational update is not built yet): expected "
+           "implicit");
     if (stage.settings["transformation_traction"].as<bool>())
       fail(s, d["stages"][i]["transformation_traction"],
            "stages[" + std::to_string(i) + "].transformation_traction",
@@ -94,14 +102,23 @@ void check_shell_scene(const Scene& s, const BackgroundMesh& mesh) {
     if (bc.method != "transformation")
       fail(s, bd["method"], path + ".method",
            "shells enforce their conditions by the transformation method in this version");
+    for (std::size_t c = 0; finite && c < 2; ++c) {
+      const auto& r = bc.rotations[c];
+      if (r && (r->varies() || r->constant != 0)) {
+        const char* key = c == 0 ? "rx" : "ry";
+        fail(s, bd[key], path + "." + key,
+             "with finite rotations a support holds rotations at 0 in this version (prescribed "
+             "rotations are not built yet): expected 0");
+      }
+    }
     if (bc.from_exact[0] || bc.from_exact[1] || bc.from_exact[2])
       fail(s, bd["from_exact_solution"], path + ".from_exact_solution",
            "shells have no exact-solution conditions; give the values");
   }
   for (std::size_t i = 0; i < s.loads.size(); ++i)
-    if (s.loads[i].type != "shell_pressure")
+    if (s.loads[i].type != "shell_pressure" && s.loads[i].type != "shell_edge_load")
       fail(s, d["loads"][i]["type"], "loads[" + std::to_string(i) + "].type",
-           "shell parts take shell_pressure loads in this version");
+           "shell parts take shell_pressure and shell_edge_load loads in this version");
   const std::pair<bool, const char*> unsupported[] = {
       {!s.initial_conditions.empty(), "initial_conditions"},
       {s.initial_state.has_value(), "initial_state"},

@@ -45,4 +45,20 @@ std::vector<Key> shell_pressure_keys() {
                                        "stage drivers for what happens without one."))};
 }
 
+std::vector<Key> shell_edge_load_keys() {
+  return {required_key("node_set", string("Node set of the loaded edge: the shell edges whose "
+                                          "nodes all lie in it.")),
+          required_key(
+              "value",
+              real_list("Line load on the edge per unit reference length: forces along x, y, z "
+                        "and moments about x, y (rotations' axes; with finite rotations the axes "
+                        "of the particles' frames, docs/shells.md); each a number or an "
+                        "expression of x, y, z, t.",
+                        "force/length")
+                  .items(5, 5)
+                  .varying(ExpressionVariables::position_and_time)),
+          optional_key("curve", string("Name of a curve scaling the load over time; see the "
+                                       "stage drivers for what happens without one."))};
+}
+
 }  // namespace efg

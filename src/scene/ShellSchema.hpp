@@ -1,5 +1,5 @@
 // Scene keys of shell parts (parts[].shell), rotation conditions (boundary_conditions[].rx, ry)
-// and the shell pressure load; scene/ShellChecks cross-checks them against the rest of the scene.
+// and the shell loads (pressure, edge line loads); scene/ShellChecks cross-checks them against the rest of the scene.
 #pragma once
 
 #include <vector>
@@ -13,5 +13,7 @@ schema::SpecPtr shell_spec();
 std::vector<schema::Key> rotation_keys();
 /// The keys of loads of type shell_pressure.
 std::vector<schema::Key> shell_pressure_keys();
+/// The keys of loads of type shell_edge_load (line forces and moments on an edge).
+std::vector<schema::Key> shell_edge_load_keys();
 
 }  // namespace efg

@@ -4,6 +4,7 @@
 #include <Tpetra_Import.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <stdexcept>
 #include <utility>
@@ -32,6 +33,11 @@ FlatShellOperator::FlatShellOperator(const Model& model, int thickness_points,
   ++instances_;
   if (model.mesh.dimension != 2)
     throw InputError(model.scene.file + ": flat shells need a 2D mid-surface mesh");
+  // One kinematics for the model (scene/ShellChecks refuses a mix): finite rotations carry a
+  // frame per overlap particle.
+  finite_ = !model.parts.empty() &&
+            model.parts.front().part->section.formulation == Formulation::total_lagrangian;
+  if (finite_) frames_.assign(maps_.overlap_nodes->getNodeNumElements(), ShellFrame{});
   for (const auto& d : model.parts) {
     const auto& part = *d.part;
     const auto& material = *model.scene.find_material(part.material);
@@ -103,15 +109,22 @@ FlatShellOperator::FlatShellOperator(const Model& model, int thickness_points,
   }
 }
 
-std::vector<double> FlatShellOperator::point_stiffness(const Point& p,
-                                                       const SectionTangent& S) const {
+void FlatShellOperator::strain_rows(const Point& p, std::size_t a, const FinitePoint* fp,
+                                    double (&B)[shell_strains][nd]) const {
+  if (fp) return finite_rotation_rows(fp->geometry, fp->nodes[a], B);
+  plate_strain_rows({p.b[2 * a], p.b[2 * a + 1]}, {p.g[2 * a], p.g[2 * a + 1]}, p.phi[a], B);
+}
+
+std::vector<double> FlatShellOperator::point_stiffness(const Point& p, const SectionTangent& S,
+                                                       const FinitePoint* fp,
+                                                       const double* R) const {
   const std::size_t n = p.node.size(), cols = n * nd;
   std::vector<double> K(cols * cols, 0.0);
   std::vector<std::array<std::array<double, nd>, shell_strains>> SB(n);
   std::vector<double> B(n * shell_strains * nd);
   for (std::size_t a = 0; a < n; ++a) {
     double Ba[shell_strains][nd], SBa[shell_strains][nd];
-    plate_strain_rows({p.b[2 * a], p.b[2 * a + 1]}, {p.g[2 * a], p.g[2 * a + 1]}, p.phi[a], Ba);
+    strain_rows(p, a, fp, Ba);
     tangent_rows(S, Ba, SBa);
     for (int i = 0; i < shell_strains; ++i)
       for (int c = 0; c < nd; ++c) {
@@ -129,6 +142,15 @@ std::vector<double> FlatShellOperator::point_stiffness(const Point& p,
             v += B[(a * shell_strains + i) * nd + c] * SB[b][i][e];
           K[(a * nd + c) * cols + b * nd + e] = p.weight * v;
         }
+  if (!fp) return K;
+  double resultants[shell_strains], G[nd][nd];
+  std::copy(R, R + shell_strains, resultants);
+  for (std::size_t a = 0; a < n; ++a)
+    for (std::size_t b = 0; b < n; ++b) {
+      finite_rotation_geometric(fp->geometry, resultants, fp->nodes[a], fp->nodes[b], a == b, G);
+      for (std::size_t c = 0; c < nd; ++c)
+        for (std::size_t e = 0; e < nd; ++e) K[(a * nd + c) * cols + b * nd + e] += p.weight * G[c][e];
+    }
   return K;
 }
 
@@ -154,6 +176,7 @@ void FlatShellOperator::fill_tangent(const Vector& d_owned, const ShellConstrain
   K.beginAssembly();
   K.setAllToScalar(0.0);
   std::vector<int> cols;
+  FinitePoint fp;
   {
     const auto d = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
     for (std::size_t part = 0; part < points_.size(); ++part) {
@@ -162,11 +185,16 @@ void FlatShellOperator::fill_tangent(const Vector& d_owned, const ShellConstrain
         const auto& p = points_[part][q];
         double e[shell_strains], R[shell_strains];
         SectionTangent S;
-        point_strains(p, d, e);
+        if (finite_) {
+          finite_point(p, d, fp);
+          finite_rotation_strains(fp.geometry, e);
+        } else {
+          point_strains(p, d, e);
+        }
         shell_section_response(section_law(part, p.spacing), e,
                                block ? committed_[part].data() + q * block : nullptr,
                                block ? trial_[part].data() + q * block : nullptr, R, &S);
-        const auto Kp = point_stiffness(p, S);
+        const auto Kp = finite_ ? point_stiffness(p, S, &fp, R) : point_stiffness(p, S);
         const std::size_t n = p.node.size(), width = n * nd;
         cols.resize(width);
         for (std::size_t a = 0; a < n; ++a)
@@ -211,6 +239,17 @@ void FlatShellOperator::export_add(const Vector& f_overlap, Vector& f_owned) con
   f_owned.doExport(f_overlap, *exporter_, Tpetra::ADD);
 }
 
+void FlatShellOperator::accept_rotations(Vector& d_owned) const {
+  const auto d_overlap = to_overlap(d_owned);
+  {
+    const auto d = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
+    for (std::size_t i = 0; i < frames_.size(); ++i)
+      rotate_frame(frames_[i], d(i * nd + shell_rx, 0), d(i * nd + shell_ry, 0));
+  }
+  auto d = d_owned.getLocalViewHost(Tpetra::Access::ReadWrite);
+  for (std::size_t i = 0; i < d.extent(0); i += nd) d(i + shell_rx, 0) = d(i + shell_ry, 0) = 0;
+}
+
 std::vector<double> FlatShellOperator::physical_values(const Vector& d_owned) const {
   const auto d_overlap = to_overlap(d_owned);
   const auto d = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
@@ -222,12 +261,19 @@ std::vector<double> FlatShellOperator::physical_values(const Vector& d_owned) co
     for (std::size_t r = 0; r < part.cloud.owned_count; ++r) {
       const auto row = static_cast<std::size_t>(
           owned.getLocalElement(static_cast<GlobalOrdinal>(part.cloud.mesh_node[r])));
+      Vec3 director{};  // finite rotations: the director there, sum phi_I d_I
       for (auto k = rows.offsets[r]; k < rows.offsets[r + 1]; ++k) {
         const auto node = part.cloud.mesh_node[static_cast<std::size_t>(rows.particles[k])];
         const auto lid = static_cast<std::size_t>(overlap.getLocalElement(node));
         for (std::size_t c = 0; c < nd; ++c)
           out[row * nd + c] += rows.values[k] * d(lid * nd + c, 0);
+        if (!finite_) continue;
+        const auto dI = node_director(frames_[lid], d(lid * nd + shell_rx, 0),
+                                      d(lid * nd + shell_ry, 0))
+                            .d;
+        for (std::size_t c = 0; c < 3; ++c) director[c] += rows.values[k] * dI[c];
       }
+      if (finite_) director_rotation(director, out[row * nd + shell_rx], out[row * nd + shell_ry]);
     }
   }
   return out;

@@ -8,8 +8,10 @@
 // for the membrane and bending rows and the direct gradients for the shear rows. A pressure q
 // (force per area along +z) gives f_(I,w) = sum_L a_L phi_I(X_L) q, consistent with the same
 // nodal quadrature. Shells are a formulation module of their own beside SolidOperator (a solid
-// scene builds none of this); flat and small-strain, elastic or J2 through the thickness, in
-// implicit (Newton: fill_tangent, drivers/ShellStaticProblem) and explicit stages.
+// scene builds none of this); flat, elastic or J2 through the thickness, in implicit (Newton:
+// fill_tangent, drivers/ShellStaticProblem) and explicit stages; with `section.formulation:
+// total_lagrangian` the kinematics are the finite rotations of shells/FiniteRotation.hpp
+// (implicit stages), the tangent then adding the geometric stiffness.
 #pragma once
 
 #include <Tpetra_Export.hpp>
@@ -29,6 +31,7 @@
 #include "materials/MindlinSection.hpp"
 #include "model/Model.hpp"
 #include "parallel/DofMaps.hpp"
+#include "shells/FiniteRotation.hpp"
 #include "shells/PlateStrains.hpp"
 #include "shells/ShellSectionResponse.hpp"
 
@@ -106,6 +109,25 @@ class FlatShellOperator {
   /// the elastic shear energy.
   double strain_energy(const Vector& d_owned) const;
 
+  /// Finite rotations (shells/FiniteRotation.hpp): every part's section formulation is
+  /// total_lagrangian. The rotation dofs are then the rotation since the last accepted step.
+  bool finite_rotations() const { return finite_; }
+  /// Accepts the rotations of d: every particle's frame is turned by its rotation dofs
+  /// (exponential map) and those dofs are set to 0 in d (translations stay totals).
+  void accept_rotations(Vector& d_owned) const;
+  /// One particle's translations and director at the overlap values d (finite rotations).
+  template <class View>
+  ShellNodeAtPoint node_at(int node, const double* b, const double* g, double phi,
+                           const View& d) const {
+    const auto k = static_cast<std::size_t>(node) * shell_dofs_per_node;
+    return {b,
+            g,
+            phi,
+            {d(k, 0), d(k + 1, 0), d(k + 2, 0)},
+            node_director(frames_[static_cast<std::size_t>(node)], d(k + shell_rx, 0),
+                          d(k + shell_ry, 0))};
+  }
+
   /// J2 parts (explicit stages; physics ShellSectionJ2): internal_force evaluates trial states
   /// from the committed ones, commit_state() accepts the last evaluation's. While the elastic
   /// probe is on the layers answer elastically from the committed state (the stable step's
@@ -123,6 +145,13 @@ class FlatShellOperator {
   /// export).
   void internal_force(const Vector& d_owned, Vector& f_owned,
                       const ShellConstraints* edges = nullptr) const;
+  /// f_owned += the sum over the ranks of their overlap contributions f_overlap.
+  void add_overlap(const Vector& f_overlap, Vector& f_owned) const {
+    // (an export replaces the entries a rank owns itself: sum into a zeroed vector first)
+    Vector sum(maps_.owned_dofs);
+    sum.doExport(f_overlap, *exporter_, Tpetra::ADD);
+    f_owned.update(1.0, sum, 1.0);
+  }
   /// The owned values imported to the overlap map (owned then ghost particles).
   void to_overlap(const Vector& d_owned, Vector& d_overlap) const {
     d_overlap.doImport(d_owned, *importer_, Tpetra::INSERT);
@@ -143,8 +172,18 @@ class FlatShellOperator {
     std::vector<int> node;
     std::vector<double> b, g, phi;  // 2, 2, 1 per particle
   };
-  /// K_L = a_L B^T S B of one point (5n x 5n, row major), S its section tangent.
-  std::vector<double> point_stiffness(const Point& p, const SectionTangent& S) const;
+  /// The kinematics of a point with finite rotations: its particles and point quantities.
+  using FinitePoint = FiniteRotationPoint;
+  template <class View>
+  void finite_point(const Point& p, const View& d, FinitePoint& fp) const;
+  /// B of particle a of a point (finite rotations: of fp's kinematics).
+  void strain_rows(const Point& p, std::size_t a, const FinitePoint* fp,
+                   double (&B)[shell_strains][shell_dofs_per_node]) const;
+  /// K_L = a_L (B^T S B + G) of one point (5n x 5n, row major), S its section tangent, G the
+  /// geometric stiffness of the resultants R (finite rotations: fp not null).
+  std::vector<double> point_stiffness(const Point& p, const SectionTangent& S,
+                                      const FinitePoint* fp = nullptr,
+                                      const double* R = nullptr) const;
   Vector to_overlap(const Vector& d_owned) const;
   /// f_owned = the sum of the overlap contributions of every rank.
   void export_add(const Vector& f_overlap, Vector& f_owned) const;
@@ -171,6 +210,8 @@ class FlatShellOperator {
   /// per part: j2_state::count doubles per thickness point per integration point
   mutable std::vector<std::vector<double>> committed_, trial_;
   mutable bool elastic_probe_ = false;
+  bool finite_ = false;
+  mutable std::vector<ShellFrame> frames_;  ///< per overlap particle (finite rotations)
   mutable std::map<std::string, std::vector<double>> edge_history_;
   static inline std::atomic<long long> instances_{0};
   std::vector<physics::MindlinSection> sections_;

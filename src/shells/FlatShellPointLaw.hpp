@@ -10,8 +10,23 @@
 namespace efg {
 
 template <class View>
+void FlatShellOperator::finite_point(const Point& p, const View& d, FinitePoint& fp) const {
+  fp.nodes.clear();
+  fp.geometry = reference_geometry();
+  for (std::size_t a = 0; a < p.node.size(); ++a) {
+    fp.nodes.push_back(node_at(p.node[a], &p.b[2 * a], &p.g[2 * a], p.phi[a], d));
+    add_to_geometry(fp.nodes.back(), fp.geometry);
+  }
+}
+
+template <class View>
 void FlatShellOperator::point_strains(const Point& p, const View& d,
                                       double (&e)[shell_strains]) const {
+  if (finite_) {
+    FinitePoint fp;
+    finite_point(p, d, fp);
+    return finite_rotation_strains(fp.geometry, e);
+  }
   for (auto& v : e) v = 0;
   for (std::size_t a = 0; a < p.node.size(); ++a) {
     double B[shell_strains][shell_dofs_per_node];

@@ -73,14 +73,15 @@ void FlatShellOperator::internal_force(const Vector& d_owned, Vector& f_owned,
   {
     const auto d = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
     auto f = f_overlap.getLocalViewHost(Tpetra::Access::ReadWrite);
+    FinitePoint fp;
     for (std::size_t part = 0; part < points_.size(); ++part)
       for (const auto& p : points_[part]) {
         double e[shell_strains], R[shell_strains];
         point_resultants(part, p, d, e, R);
+        if (finite_) finite_point(p, d, fp);  // (point_resultants built it too: cheap, local)
         for (std::size_t a = 0; a < p.node.size(); ++a) {
           double B[shell_strains][nd];
-          plate_strain_rows({p.b[2 * a], p.b[2 * a + 1]}, {p.g[2 * a], p.g[2 * a + 1]}, p.phi[a],
-                            B);
+          strain_rows(p, a, finite_ ? &fp : nullptr, B);
           for (std::size_t c = 0; c < nd; ++c) {
             double v = 0;
             for (std::size_t i = 0; i < shell_strains; ++i) v += B[i][c] * R[i];

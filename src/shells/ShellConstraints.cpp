@@ -9,7 +9,8 @@
 namespace efg {
 namespace {
 constexpr int nd = shell_dofs_per_node;
-}
+double dot3(const Vec3& x, const Vec3& y) { return x[0] * y[0] + x[1] * y[1] + x[2] * y[2]; }
+}  // namespace
 
 ShellConstraints::ShellConstraints(const Model& model, const FlatShellOperator& op,
                                    const std::vector<ShellSupport>& supports)
@@ -92,10 +93,20 @@ void ShellConstraints::add_couplings(CouplingGraph& graph) const {
 
 template <class View>
 void ShellConstraints::edge_response(const Edge& e, const View& d, double (&R)[shell_strains],
-                                     SectionTangent* S) const {
+                                     SectionTangent* S, FiniteRotationPoint* fe) const {
   const auto& p = e.point;
   double strain[shell_strains] = {};
-  for (std::size_t a = 0; a < p.node.size(); ++a) {
+  if (fe) {  // an edge point's gradients are the direct ones (b = g)
+    fe->nodes.clear();
+    fe->geometry = reference_geometry();
+    for (std::size_t a = 0; a < p.node.size(); ++a) {
+      const double* g = &p.grad[2 * a];
+      fe->nodes.push_back(op_.node_at(e.node[a], g, g, p.phi[a], d));
+      add_to_geometry(fe->nodes.back(), fe->geometry);
+    }
+    finite_rotation_strains(fe->geometry, strain);
+  }
+  for (std::size_t a = 0; !fe && a < p.node.size(); ++a) {
     double B[shell_strains][nd];
     const double g[2] = {p.grad[2 * a], p.grad[2 * a + 1]};
     plate_strain_rows(g, g, p.phi[a], B);
@@ -108,12 +119,82 @@ void ShellConstraints::edge_response(const Edge& e, const View& d, double (&R)[s
                          e.committed ? trial_.data() + e.trial : nullptr, R, S);
 }
 
+template <class View, class Force>
+void ShellConstraints::add_finite_edge_forces(const Edge& e, const View& d, Force& f) const {
+  const auto& p = e.point;
+  FiniteRotationPoint fe;
+  double R[shell_strains];
+  edge_response(e, d, R, nullptr, &fe);
+  Vec3 t, m;
+  finite_rotation_edge_reaction(fe.geometry, R, {p.normal[0], p.normal[1]}, t, m);
+  for (std::size_t a = 0; a < p.node.size(); ++a)
+    for (int c = 0; c < nd; ++c) {
+      if (!e.held[static_cast<std::size_t>(c)]) continue;
+      const double T = c < shell_rx ? t[static_cast<std::size_t>(c)]
+                                    : dot3(m, fe.nodes[a].director.T[c - shell_rx]);
+      f(static_cast<std::size_t>(e.node[a] * nd + c), 0) -= p.length * p.phi[a] * T;
+    }
+}
+
+template <class View>
+void ShellConstraints::add_finite_edge_terms(const Edge& e, const View& d,
+                                             FlatShellOperator::Matrix& K) const {
+  const auto& p = e.point;
+  const std::size_t n = p.node.size(), width = n * nd;
+  FiniteRotationPoint fe;
+  double R[shell_strains];
+  SectionTangent S;
+  edge_response(e, d, R, &S, &fe);
+  const double normal[2] = {p.normal[0], p.normal[1]};
+  Vec3 t, m;
+  finite_rotation_edge_reaction(fe.geometry, R, normal, t, m);
+  // dt[k], dm[k]: the reaction's change for a unit change of column dof k
+  std::vector<Vec3> dt(width), dm(width);
+  std::vector<int> cols(width);
+  for (std::size_t b = 0; b < n; ++b) {
+    double B[shell_strains][nd], SB[shell_strains][nd];
+    finite_rotation_rows(fe.geometry, fe.nodes[b], B);
+    tangent_rows(S, B, SB);
+    for (int c = 0; c < nd; ++c) {
+      const auto k = b * nd + static_cast<std::size_t>(c);
+      cols[k] = e.node[b] * nd + c;
+      double dR[shell_strains];
+      for (int r = 0; r < shell_strains; ++r) dR[r] = SB[r][c];
+      finite_rotation_edge_reaction_change(fe.geometry, R, dR, normal, fe.nodes[b], c, dt[k],
+                                           dm[k]);
+    }
+  }
+  std::vector<double> vals(width);
+  for (std::size_t a = 0; a < n; ++a)
+    for (int c = 0; c < nd; ++c) {
+      if (!e.held[static_cast<std::size_t>(c)]) continue;
+      const double scale = -p.length * p.phi[a];
+      for (std::size_t k = 0; k < width; ++k) {
+        if (c < shell_rx) {
+          vals[k] = scale * dt[k][static_cast<std::size_t>(c)];
+          continue;
+        }
+        const auto& director = fe.nodes[a].director;
+        double v = dot3(dm[k], director.T[c - shell_rx]);
+        const int column = static_cast<int>(k % nd);
+        if (k / nd == a && column >= shell_rx)  // the row's own director turning
+          v += dot3(m, director.S[c - shell_rx][column - shell_rx]);
+        vals[k] = scale * v;
+      }
+      K.sumIntoLocalValues(e.node[a] * nd + c, static_cast<int>(width), vals.data(), cols.data());
+    }
+}
+
 void ShellConstraints::add_edge_terms(const FlatShellOperator::Vector& d_overlap,
                                       FlatShellOperator::Matrix& K) const {
   const auto d = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
   std::vector<double> T, vals;
   std::vector<int> cols;
   for (const auto& e : edges_) {
+    if (op_.finite_rotations()) {
+      add_finite_edge_terms(e, d, K);
+      continue;
+    }
     const auto& p = e.point;
     const std::size_t n = p.node.size(), width = n * nd;
     double R[shell_strains];
@@ -152,6 +233,10 @@ void ShellConstraints::add_edge_forces(const FlatShellOperator::Vector& d_overla
   const auto d = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
   auto f = f_overlap.getLocalViewHost(Tpetra::Access::ReadWrite);
   for (const auto& e : edges_) {
+    if (op_.finite_rotations()) {
+      add_finite_edge_forces(e, d, f);
+      continue;
+    }
     double R[shell_strains], T[nd];
     edge_response(e, d, R, nullptr);
     edge_traction(R, e.point.normal, T);

@@ -96,9 +96,18 @@ class ShellConstraints {
     std::size_t trial = 0;        ///< offset of its trial states in trial_
   };
   /// The edge point's strains at d, its resultants R and (when asked) their tangent S.
+  /// With finite rotations (FlatShellOperator::finite_rotations) `fe` gets the point's
+  /// kinematics (required then).
   template <class View>
-  void edge_response(const Edge& e, const View& d, double (&R)[shell_strains],
-                     SectionTangent* S) const;
+  void edge_response(const Edge& e, const View& d, double (&R)[shell_strains], SectionTangent* S,
+                     FiniteRotationPoint* fe = nullptr) const;
+  /// The finite-rotation edge term's force -l phi_I T_c and its derivative (shells/
+  /// FiniteRotation.hpp, finite_rotation_edge_reaction): T = t for translations, m . dd_I/dw
+  /// for the rotation dofs of particle I.
+  template <class View>
+  void add_finite_edge_terms(const Edge& e, const View& d, FlatShellOperator::Matrix& K) const;
+  template <class View, class Force>
+  void add_finite_edge_forces(const Edge& e, const View& d, Force& f) const;
 
   const FlatShellOperator& op_;
   mutable std::vector<Row> rows_;      ///< this rank's (replace_rows sets the scales)
