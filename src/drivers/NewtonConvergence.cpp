@@ -80,7 +80,13 @@ NOX::StatusTest::StatusType NewtonConvergence::checkStatus(const NOX::Solver::Ge
     record_.reason = "linear problem solved in one Newton step";
     return status_ = NOX::StatusTest::Converged;
   }
-  if (r0 > 0 && !(r <= 1e3 * r0)) {
+  // Without a line search (NonlinearProblem::residual_norm_is_a_merit) the first full step may
+  // raise ||r|| (a shell's second-order membrane forces): growth counts from the larger of the
+  // first two residuals then.
+  const auto& rs = record_.residuals;
+  const double reference =
+      problem_.residual_norm_is_a_merit() || rs.size() < 2 ? r0 : std::max(r0, rs[1]);
+  if (reference > 0 && !(r <= 1e3 * reference)) {
     record_.reason = "||r|| grew above 1e3 times its start (divergence)";
     return status_ = NOX::StatusTest::Failed;
   }

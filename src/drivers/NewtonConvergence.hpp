@@ -14,8 +14,9 @@
 //       against the step's energy, not against round-off.
 // Fails when the linear solve of an iteration did not converge and reduced the residual of its
 // system by less than 1e-3 (the direction is no Newton direction: a singular or hopeless system),
-// or when ||r|| grows above 1e3 ||r_0|| (divergence). Keeps the per-iteration record the log and
-// the run report print.
+// or when ||r|| grows above 1e3 ||r_0|| (divergence; 1e3 max(||r_0||, ||r_1||) for problems
+// Newton solves by full steps, NonlinearProblem::residual_norm_is_a_merit). Keeps the
+// per-iteration record the log and the run report print.
 #pragma once
 
 #include <NOX_Abstract_Vector.H>

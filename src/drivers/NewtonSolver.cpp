@@ -66,7 +66,8 @@ std::string linear_failure_advice(const LinearSolverPlan& plan) {
 
 }  // namespace
 
-Teuchos::RCP<Teuchos::ParameterList> nonlinear_parameters(const Teuchos::ParameterList& user) {
+Teuchos::RCP<Teuchos::ParameterList> nonlinear_parameters(const Teuchos::ParameterList& user,
+                                                          bool line_search) {
   auto p = Teuchos::parameterList("Nonlinear Solver");
   p->set("Nonlinear Solver", "Line Search Based");
   auto& newton = p->sublist("Direction");
@@ -74,7 +75,7 @@ Teuchos::RCP<Teuchos::ParameterList> nonlinear_parameters(const Teuchos::Paramet
   newton.sublist("Newton").set("Forcing Term Method", "Constant");
   newton.sublist("Newton").sublist("Linear Solver").set("Tolerance", 1e-10);
   auto& ls = p->sublist("Line Search");
-  ls.set("Method", "Backtrack");
+  ls.set("Method", line_search ? "Backtrack" : "Full Step");
   ls.sublist("Backtrack").set("Minimum Step", 1e-6);
   ls.sublist("Backtrack").set("Max Iters", 20);
   auto& out = p->sublist("Printing").sublist("Output Information");
@@ -127,7 +128,8 @@ NewtonSolver::NewtonSolver(NonlinearProblem& problem, const YAML::Node& stage,
       from_stage(stage, "preconditioner", file, where), dofs, model.mesh.dimension, ranks);
   if (stage["residual_tolerance"]) tolerance_ = stage["residual_tolerance"].as<double>();
   try {
-    nox_params_ = nonlinear_parameters(from_stage(stage, "nonlinear_solver", file, where));
+    nox_params_ = nonlinear_parameters(from_stage(stage, "nonlinear_solver", file, where),
+                                       problem.residual_norm_is_a_merit());
     Stratimikos::DefaultLinearSolverBuilder builder;
     builder.setParameterList(linear_parameters(plan_));
     lows_factory_ = builder.createLinearSolveStrategy("");

@@ -62,7 +62,10 @@ class NewtonSolver {
 
 /// The default NOX list merged with a stage's map, and the Stratimikos list of a plan (exposed
 /// for tests and docs).
-Teuchos::RCP<Teuchos::ParameterList> nonlinear_parameters(const Teuchos::ParameterList& user);
+/// `line_search`: false gives full Newton steps by default (NonlinearProblem::
+/// residual_norm_is_a_merit); the user's list overrides either.
+Teuchos::RCP<Teuchos::ParameterList> nonlinear_parameters(const Teuchos::ParameterList& user,
+                                                          bool line_search = true);
 Teuchos::RCP<Teuchos::ParameterList> linear_parameters(const LinearSolverPlan& plan);
 
 }  // namespace efg

@@ -33,6 +33,12 @@ class NonlinearProblem {
   /// False when the dofs are not the solid's displacements (shells: five per particle), so the
   /// multigrid's rigid-body modes do not apply: the plan is then the direct solver.
   virtual bool displacement_dofs() const { return true; }
+  /// False when ||r|| is no fit merit function for a backtracking line search, so that Newton
+  /// takes full steps (cutbacks still guard it): shells with finite rotations, whose membrane
+  /// forces are (L/t)^2 stiffer than their bending ones, so that a step that removes a bending
+  /// residual leaves a second-order membrane residual larger than it; Newton's full step
+  /// removes that one next, a line search on ||r|| crawls (docs/shells.md).
+  virtual bool residual_norm_is_a_merit() const { return true; }
 };
 
 }  // namespace efg

@@ -42,6 +42,7 @@ class ShellStaticProblem : public NonlinearProblem {
   bool linear() const override { return !op_.plastic() && !op_.finite_rotations(); }
   const Model& model() const override { return model_; }
   bool displacement_dofs() const override { return false; }
+  bool residual_norm_is_a_merit() const override { return !op_.finite_rotations(); }
 
   /// Accepts the load step converged at d: the J2 layers of the points and of the edge points
   /// evaluated at d become the committed states; with finite rotations the particles' frames

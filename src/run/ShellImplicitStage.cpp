@@ -94,6 +94,7 @@ ShellImplicitSummary run_shell_implicit_stage(const Model& model, const FlatShel
     // change is the step's rotation, taken before commit makes the frames carry it)
     increment.update(1.0, d, -1.0, saved, 0.0);
     problem.commit(d);  // the converged layers become the history; a cut-back step never does
+    summary.residuals.push_back(result.residual_history);
     previous_dt = target - t;
     t = target;
     ++summary.steps;

@@ -1,4 +1,4 @@
-// An implicit stage of flat shells with J2 parts: load steps from the stage's start to its end
+// An implicit stage of flat shells with J2 parts or finite rotations: load steps from the stage's start to its end
 // (loads and supports at each step's time; those without a curve ramp linearly over the first
 // stage, as the solids'), each solved by the NOX Newton of the solids (drivers/NewtonSolver) on
 // drivers/ShellStaticProblem, with the extrapolated predictor and cutbacks of the solids'
@@ -8,6 +8,7 @@
 
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "model/Model.hpp"
 #include "shells/FlatShellOperator.hpp"
@@ -17,6 +18,8 @@ namespace efg {
 struct ShellImplicitSummary {
   long long steps = 0, cutbacks = 0, newton_iterations = 0;
   std::string linear_solver;
+  /// ||r|| before the first and after every Newton iteration of each converged load step
+  std::vector<std::vector<double>> residuals;
 };
 
 /// Runs `stage` from `start` to its end_time (d: owned dofs, in place, the converged state of

@@ -104,6 +104,7 @@ struct StageResult {
   long long steps = 0;  ///< explicit stages: time steps, their dt and energy balance error
   double dt = 0, energy_error = 0;
   long long newton_iterations = -1, cutbacks = 0;  ///< J2 implicit stages (Newton)
+  std::vector<std::vector<double>> residuals;      ///< per converged load step (Newton)
 };
 
 }  // namespace
@@ -264,6 +265,7 @@ RunOutcome run_shell_stages(const CommPtr& comm, const Model& model, const std::
         r.steps = summary.steps;
         r.newton_iterations = summary.newton_iterations;
         r.cutbacks = summary.cutbacks;
+        r.residuals = summary.residuals;
         v.putScalar(0.0);  // a static solution, at rest
         Log::info("stage '" + stage.name + "' done: " + std::to_string(summary.steps) + " steps, " +
                   std::to_string(summary.cutbacks) + " cutbacks, " +
@@ -333,13 +335,21 @@ RunOutcome run_shell_stages(const CommPtr& comm, const Model& model, const std::
              << ", \"seconds\": " << results[s].seconds
              << ", \"strain_energy\": " << results[s].strain_energy
              << ", \"largest_deflection\": " << results[s].largest_deflection;
-      if (results[s].newton_iterations >= 0)
+      if (results[s].newton_iterations >= 0) {
         report << ", \"steps\": " << results[s].steps
                << ", \"newton_iterations\": " << results[s].newton_iterations
-               << ", \"cutbacks\": " << results[s].cutbacks;
-      else if (results[s].steps > 0)
+               << ", \"cutbacks\": " << results[s].cutbacks << ", \"newton_residuals\": [";
+        for (std::size_t k = 0; k < results[s].residuals.size(); ++k) {
+          report << (k ? ", " : "") << "[";
+          for (std::size_t i = 0; i < results[s].residuals[k].size(); ++i)
+            report << (i ? ", " : "") << results[s].residuals[k][i];
+          report << "]";
+        }
+        report << "]";
+      } else if (results[s].steps > 0) {
         report << ", \"steps\": " << results[s].steps << ", \"dt\": " << results[s].dt
                << ", \"energy_balance_error\": " << results[s].energy_error;
+      }
       report << "}";
     }
     report << "\n  ],\n  \"probes\": {";

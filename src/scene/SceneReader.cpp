@@ -193,7 +193,10 @@ class SceneBuilder {
       fail(doc["section"]["dilation"], path + ".section.dilation",
            "a sphere support takes one dilation value, found " +
                std::to_string(out.dilation.size()));
-    if (material->model == "linear_elastic" && out.formulation != Formulation::small_strain) {
+    // (a shell's linear section law in Green-Lagrange strains is the usual small-strain,
+    // large-rotation shell: docs/shells.md "Finite rotations")
+    if (material->model == "linear_elastic" && out.formulation != Formulation::small_strain &&
+        !doc["shell"]) {
       const YAML::Node at = doc["section"] && doc["section"]["formulation"]
                                 ? doc["section"]["formulation"]
                                 : doc["material"];

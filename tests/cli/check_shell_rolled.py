@@ -1,0 +1,113 @@
+#!/usr/bin/env python3
+"""The rolled strip (tests/scenes/shells/strip_rolled.yaml): a cantilever strip, L = 12, t = 0.1,
+E = 1.2e6, nu = 0, end moment m = lambda 2 pi E t^3 / (12 L) per width in 10 load steps.
+
+Exact (the elastica under a constant moment): at load lambda the strip is an arc of curvature
+k = 2 pi lambda / L, the particle at X on the mid-surface goes to
+  (sin(k X) / k, (1 - cos(k X)) / k) in the (x, -z) plane, its rotation about y is k X,
+its moment m_xx = lambda m. Checked at every load step:
+  * positions of every particle within 1 % of L (at lambda = 1: the end back at the clamp);
+  * rotation_y of every particle within 1 % of the end's rotation k L (wrapped into (-pi, pi]);
+  * moment_xx of the particles away from the ends (2 spacings) within 1 % of lambda m;
+  * Newton (the run report's residuals): every step converged within 12 iterations; ||r|| is
+    dominated by the membrane rows, (L/t)^2 stiffer than the bending ones, and rises when an
+    iteration removes a bending residual (its second-order membrane forces); after its last
+    rise every iteration reduces it by 1e3 or more until it is below 1e-8 of the step's largest
+    (the quadratic tail; the orders are printed).
+--levels COARSE.e FINE.e: the same strip on 24 and 96 cells: the end's distance from the clamp
+at the full load falls with refinement (coarse > this > fine).
+usage: check_shell_rolled.py RESULTS.e [--levels COARSE.e FINE.e]
+"""
+import argparse
+import json
+import math
+import sys
+
+import netCDF4
+import numpy as np
+
+L, t, E = 12.0, 0.1, 1.2e6
+m_full = 2 * math.pi * E * t**3 / 12 / L
+
+
+def closure(path):
+    """The end's largest distance from the clamp at the last record, over L."""
+    f = netCDF4.Dataset(path)
+    names = list(netCDF4.chartostring(f.variables["name_nod_var"][:]))
+    X = np.asarray(f.variables["coordx"][:])
+    ux = np.asarray(f.variables["vals_nod_var%d" % (names.index("displacement_x") + 1)][-1])
+    uz = np.asarray(f.variables["vals_nod_var%d" % (names.index("displacement_z") + 1)][-1])
+    end = X > L - 1e-9
+    return np.hypot(X[end] + ux[end], uz[end]).max() / L
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("results")
+    ap.add_argument("--levels", nargs=2)
+    args = ap.parse_args()
+    path = args.results
+    f = netCDF4.Dataset(path)
+    names = list(netCDF4.chartostring(f.variables["name_nod_var"][:]))
+    times = np.asarray(f.variables["time_whole"][:])
+    X = np.asarray(f.variables["coordx"][:])
+
+    def field(name, k):
+        return np.asarray(f.variables["vals_nod_var%d" % (names.index(name) + 1)][k])
+
+    errors = []
+    if len(times) != 11:
+        errors.append("11 records expected (t = 0, 0.1, ..., 1), found %d" % len(times))
+    spacing = L / 48
+    inner = (X > 2 * spacing - 1e-9) & (X < L - 2 * spacing + 1e-9)
+    for k in range(1, len(times)):
+        lam = float(times[k])
+        kappa = 2 * math.pi * lam / L
+        x_exact = np.sin(kappa * X) / kappa
+        z_exact = -(1 - np.cos(kappa * X)) / kappa
+        x = X + field("displacement_x", k)
+        z = field("displacement_z", k)
+        position = np.hypot(x - x_exact, z - z_exact).max() / L
+        angle = field("rotation_y", k) - kappa * X
+        angle = np.abs((angle + math.pi) % (2 * math.pi) - math.pi).max()
+        moment = np.abs(field("moment_xx", k)[inner] - lam * m_full).max() / (lam * m_full)
+        end = np.hypot(x[X > L - 1e-9], z[X > L - 1e-9]).max() / L
+        print("lambda %.1f: positions %.2e L, rotations %.2e rad, moments %.2e, end at %.4f L "
+              "from the clamp" % (lam, position, angle, moment, end))
+        if position > 0.01:
+            errors.append("lambda %.1f: positions off the arc by %.3g L" % (lam, position))
+        if angle > 0.01 * kappa * L:
+            errors.append("lambda %.1f: rotations off by %.3g rad" % (lam, angle))
+        if moment > 0.01:
+            errors.append("lambda %.1f: moments off by %.3g" % (lam, moment))
+    if len(times) == 11 and end > 0.01:
+        errors.append("the strip does not close: its end is %.3g L from the clamp" % end)
+    report = json.load(open(path + ".report.json"))
+    for stage in report["shell_stages"]:
+        for step, r in enumerate(stage["newton_residuals"]):
+            orders = ["%.2f" % (math.log(r[i + 1] / r[i]) / math.log(r[i] / r[i - 1]))
+                      if r[i] != r[i - 1] else "-" for i in range(1, len(r) - 1)]
+            print("step %d: %d Newton iterations, ||r|| %s, orders %s"
+                  % (step + 1, len(r) - 1, " ".join("%.1e" % v for v in r), " ".join(orders)))
+            if len(r) - 1 > 12:
+                errors.append("step %d: %d Newton iterations" % (step + 1, len(r) - 1))
+            floor = 1e-8 * max(r)
+            rise = max([i for i in range(1, len(r)) if r[i] > r[i - 1]], default=0)
+            for i in range(rise + 1, len(r)):
+                if r[i - 1] > floor and r[i] > 1e-3 * r[i - 1]:
+                    errors.append("step %d: Newton iteration %d after the last rise reduced "
+                                  "||r|| only from %.3g to %.3g" % (step + 1, i, r[i - 1], r[i]))
+    if args.levels:
+        coarse, fine = closure(args.levels[0]), closure(args.levels[1])
+        this = closure(path)
+        print("closure at the full load: %.4f L (coarse), %.4f L (this), %.4f L (fine)"
+              % (coarse, this, fine))
+        if not coarse > this > fine:
+            errors.append("the closure error does not fall with refinement")
+    for e in errors:
+        print("FAIL: " + e)
+    sys.exit(1 if errors else 0)
+
+
+if __name__ == "__main__":
+    main()
