@@ -32,3 +32,11 @@ add_test(NAME cli.shell_rolled_check COMMAND /usr/bin/python3
   ${EFG_CLI_TMP}/shell_rolled_96/strip_rolled_96.e)
 set_tests_properties(cli.shell_rolled_check PROPERTIES LABELS cli
   FIXTURES_REQUIRED "shell_rolled_np1;shell_rolled_24;shell_rolled_96")
+# shell_edge_load in a linear stage: the same strip with small rotations, one solve. Beam theory
+# (hand values): the end moment m per width turns the end by m L / (E I) = 2 pi and deflects it
+# by -m L^2 / (2 E I) = -12 pi = -37.69911184 (printed to 10 digits; 1e-8 and 3e-9 here).
+string(REPLACE ", formulation: total_lagrangian" "" linear "${rolled}")
+file(WRITE ${CMAKE_CURRENT_BINARY_DIR}/strip_end_moment_linear.yaml "${linear}")
+efg_cli_test(NAME cli.shell_edge_moment_linear
+  COMMAND "${efg}|run|${CMAKE_CURRENT_BINARY_DIR}/strip_end_moment_linear.yaml|-o|${EFG_CLI_TMP}/shell_edge_moment_linear"
+  EXIT 0 TEXT "probe_tip_ry = 6.2831853|probe_tip_uz = -37.6991118")
