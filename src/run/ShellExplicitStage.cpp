@@ -159,6 +159,11 @@ ShellExplicitSummary run_shell_explicit_stage(const Model& model, const FlatShel
     // The supports' work: their force at t_n over the mean of the steps around it (none for
     // supports held still, whose force is normal to every motion they allow).
     step.update(1.0, d, -1.0, d_old, 0.0);
+    // Finite rotations: every step is accepted, the frames turn by the step's rotations
+    // exp(dt w) and the rotation dofs return to 0 (the velocities, the angular velocity's
+    // components in the particles' frames, stay: a frame turned about w keeps w's components;
+    // the lumped rotary inertia is isotropic, so there is no gyroscopic term; Simo & Wong 1991).
+    if (op.finite_rotations()) op.accept_rotations(d);
     if (moving) {
       step_before.update(1.0, step, 1.0);
       external_work += 0.5 * reproducible_dot(f_support, step_before);

@@ -40,3 +40,23 @@ file(WRITE ${CMAKE_CURRENT_BINARY_DIR}/strip_end_moment_linear.yaml "${linear}")
 efg_cli_test(NAME cli.shell_edge_moment_linear
   COMMAND "${efg}|run|${CMAKE_CURRENT_BINARY_DIR}/strip_end_moment_linear.yaml|-o|${EFG_CLI_TMP}/shell_edge_moment_linear"
   EXIT 0 TEXT "probe_tip_ry = 6.2831853|probe_tip_uz = -37.6991118")
+# Finite rotations in an explicit stage: a strip bent to a half circle by a slowly raised end
+# moment and held; its implicit twin (the stage replaced by Newton load steps): the same state.
+file(READ ${PROJECT_SOURCE_DIR}/tests/scenes/shells/strip_half_roll_explicit.yaml half)
+string(REPLACE "{name: bend, driver: explicit, end_time: rise + 20, output_interval: 0.5}"
+  "{name: bend, driver: implicit, end_time: rise, load_steps: 10}" half_implicit "${half}")
+file(WRITE ${CMAKE_CURRENT_BINARY_DIR}/strip_half_roll_implicit.yaml "${half_implicit}")
+efg_cli_test(NAME cli.shell_half_roll_explicit
+  COMMAND "${efg}|run|tests/scenes/shells/strip_half_roll_explicit.yaml|-o|${EFG_CLI_TMP}/shell_half_roll_explicit"
+  EXIT 0 TEXT "stage 'bend' (shells, explicit) done" FILE ${EFG_CLI_TMP}/shell_half_roll_explicit/strip_half_roll_explicit.e)
+set_tests_properties(cli.shell_half_roll_explicit PROPERTIES FIXTURES_SETUP shell_half_roll_explicit)
+efg_cli_test(NAME cli.shell_half_roll_implicit
+  COMMAND "${efg}|run|${CMAKE_CURRENT_BINARY_DIR}/strip_half_roll_implicit.yaml|-o|${EFG_CLI_TMP}/shell_half_roll_implicit"
+  EXIT 0 TEXT "stage 'bend' done: 10 steps, 0 cutbacks" FILE ${EFG_CLI_TMP}/shell_half_roll_implicit/strip_half_roll_implicit.e)
+set_tests_properties(cli.shell_half_roll_implicit PROPERTIES FIXTURES_SETUP shell_half_roll_implicit)
+add_test(NAME cli.shell_half_roll_check COMMAND /usr/bin/python3
+  ${CMAKE_CURRENT_SOURCE_DIR}/check_shell_rolled.py ${EFG_CLI_TMP}/shell_rolled_np1/strip_rolled.e
+  --quasistatic ${EFG_CLI_TMP}/shell_half_roll_explicit/strip_half_roll_explicit.e
+  ${EFG_CLI_TMP}/shell_half_roll_implicit/strip_half_roll_implicit.e)
+set_tests_properties(cli.shell_half_roll_check PROPERTIES LABELS cli
+  FIXTURES_REQUIRED "shell_rolled_np1;shell_half_roll_explicit;shell_half_roll_implicit")
