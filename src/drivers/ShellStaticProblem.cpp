@@ -19,7 +19,9 @@ ShellStaticProblem::ShellStaticProblem(const Model& model, const FlatShellOperat
 
 void ShellStaticProblem::set_level(const FlatShellOperator::Pressure& pressure,
                                    const std::vector<ShellSupport>& supports,
-                                   const std::function<void(Vector&)>& more_loads) {
+                                   const std::function<void(Vector&)>& more_loads,
+                                   const FlatShellOperator::Pressure& follower) {
+  follower_ = follower;
   f_ext_.putScalar(0.0);
   op_.add_pressure(pressure, f_ext_);
   if (more_loads) more_loads(f_ext_);
@@ -33,6 +35,15 @@ void ShellStaticProblem::residual(const Vector& d_owned, Vector& r_owned) {
   constraints_.zero_constrained(r_owned);
   internal_norm_ = r_owned.norm2();
   r_owned.update(-1.0, f_ext_, 1.0);
+  if (follower_) {
+    Vector f(op_.maps().owned_dofs);
+    f.update(1.0, f_ext_, 0.0);
+    op_.add_follower_pressure(follower_, d_owned, f);
+    constraints_.zero_constrained(f);
+    external_norm_ = f.norm2();
+    f.update(-1.0, f_ext_, 1.0);  // the follower part alone
+    r_owned.update(-1.0, f, 1.0);
+  }
   if (released_) r_owned.update(-remaining_, *released_, 1.0);
   op_.to_overlap(d_owned, d_overlap_);
   constraints_.constrained_residual(d_overlap_, values_, r_owned);
@@ -48,7 +59,7 @@ void ShellStaticProblem::begin_release(const Vector& d0_owned) {
 }
 
 void ShellStaticProblem::jacobian(const Vector& d_owned, FEMatrix& K) {
-  op_.fill_tangent(d_owned, constraints_, K);
+  op_.fill_tangent(d_owned, constraints_, K, follower_ ? &follower_ : nullptr);
 }
 
 void ShellStaticProblem::commit(Vector& d_owned) {

@@ -1,9 +1,10 @@
 // The discrete equilibrium of an implicit shell stage at one load level (the shells' side of
 // drivers/NonlinearProblem, driven by the same NOX Newton as the solids):
-//   r(d) = f_int(d) + f_edge(d) - f_ext
+//   r(d) = f_int(d) + f_edge(d) - f_ext - f_follower(d)
 // with f_int the point-by-point internal force of FlatShellOperator (elastic sections or J2
 // through the thickness), f_edge the transformation conditions' edge traction terms
-// (ShellConstraints; J2 edge points carry their own layers), f_ext the shell pressure, and the
+// (ShellConstraints; J2 edge points carry their own layers), f_ext the dead loads (shell
+// pressure, edge loads), f_follower a follower pressure (finite rotations), and the
 // rows of constrained dofs replaced by their scaled collocation equations s (C d - g). The
 // Jacobian is FlatShellOperator::fill_tangent, the exact derivative of r (tested against central
 // differences).
@@ -26,10 +27,12 @@ class ShellStaticProblem : public NonlinearProblem {
                      const std::vector<ShellSupport>& supports);
 
   /// The loads and prescribed values of a load level: the pressure, further loads added to the
-  /// external force by `more_loads` (edge line loads), and the supports' values.
+  /// external force by `more_loads` (edge line loads), the supports' values, and a follower
+  /// pressure (empty: none), whose force depends on d (residual and tangent).
   void set_level(const FlatShellOperator::Pressure& pressure,
                  const std::vector<ShellSupport>& supports,
-                 const std::function<void(Vector&)>& more_loads = {});
+                 const std::function<void(Vector&)>& more_loads = {},
+                 const FlatShellOperator::Pressure& follower = {});
 
   void residual(const Vector& d_owned, Vector& r_owned) override;
   void jacobian(const Vector& d_owned, FEMatrix& K) override;
@@ -64,6 +67,7 @@ class ShellStaticProblem : public NonlinearProblem {
   std::vector<double> values_;  ///< the supports' values, collocation rows' order
   double external_norm_ = 0, internal_norm_ = 0;
   std::unique_ptr<Vector> released_;  ///< springback: r(d0) on the free rows (null: none)
+  FlatShellOperator::Pressure follower_;  ///< the level's follower pressure (empty: none)
   double remaining_ = 0;
 };
 

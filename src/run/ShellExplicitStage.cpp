@@ -82,10 +82,12 @@ ShellExplicitSummary run_shell_explicit_stage(const Model& model, const FlatShel
   Vector f_ext(map), f_ext_old(map), f_int(map), a(map), v_next(map), d_old(map), step(map),
       f_support(map), step_before(map);
   const ShellEdgeLoads edge_loads(model, op, stage.name);
+  const bool follower = has_follower_pressure(scene, stage.name);
   const auto external_force = [&](double t, Vector& f) {
     f.putScalar(0.0);
     op.add_pressure(shell_pressure_at(model, stage.name, t), f);
     edge_loads.add(t, 1.0, f);
+    if (follower) op.add_follower_pressure(shell_pressure_at(model, stage.name, t, 1.0, true), d, f);
   };
   const auto accelerate = [&](const Vector& f, Vector& acc) {
     op.internal_force(d, f_int);

@@ -27,6 +27,11 @@ ShellImplicitSummary run_shell_implicit_stage(const Model& model, const FlatShel
   const auto edge_loads_at = [&](double time) {
     return [&edge_loads, time, r = ramp(time)](Vector& f) { edge_loads.add(time, r, f); };
   };
+  const bool follower = has_follower_pressure(scene, stage.name);
+  const auto follower_at = [&](double time) {
+    return follower ? shell_pressure_at(model, stage.name, time, ramp(time), true)
+                    : FlatShellOperator::Pressure{};
+  };
   NewtonSolver newton(problem, stage.settings, scene.file, "stage '" + stage.name + "'");
   ShellImplicitSummary summary;
   summary.linear_solver = newton.plan().describe();
@@ -39,7 +44,7 @@ ShellImplicitSummary run_shell_implicit_stage(const Model& model, const FlatShel
     // linearly over the stage, as the solids' springback stages do (docs/implicit.md).
     problem.set_level(shell_pressure_at(model, stage.name, start, ramp(start)),
                       shell_supports_at(scene, stage.name, start, ramp(start)),
-                      edge_loads_at(start));
+                      edge_loads_at(start), follower_at(start));
     problem.begin_release(d);
     Log::info("  stage '" + stage.name + "': springback, releasing the forces out of balance " +
               "at the start over " + std::to_string(steps) + " load step(s)");
@@ -49,7 +54,7 @@ ShellImplicitSummary run_shell_implicit_stage(const Model& model, const FlatShel
     const double target = end - (t + dt) < 1e-12 * span ? end : t + dt;
     problem.set_level(shell_pressure_at(model, stage.name, target, ramp(target)),
                       shell_supports_at(scene, stage.name, target, ramp(target)),
-                      edge_loads_at(target));
+                      edge_loads_at(target), follower_at(target));
     if (springback) problem.set_release(std::max(0.0, (end - target) / span));
     Log::info("  stage '" + stage.name + "' step " + std::to_string(summary.steps + 1) +
               ": t = " + std::to_string(target));

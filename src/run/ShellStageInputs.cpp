@@ -42,13 +42,19 @@ bool shell_supports_move(const Scene& scene, const std::string& stage) {
   return false;
 }
 
+bool has_follower_pressure(const Scene& scene, const std::string& stage) {
+  for (const auto& l : scene.loads)
+    if (l.type == "shell_pressure" && l.follower && l.stages.includes(stage)) return true;
+  return false;
+}
+
 FlatShellOperator::Pressure shell_pressure_at(const Model& model, const std::string& stage,
-                                              double time, double ramp) {
+                                              double time, double ramp, bool follower) {
   const auto& scene = model.scene;
   const auto factor = curve_factor(scene, time, ramp, stage);
   std::vector<std::pair<const LoadSpec*, double>> loads;
   for (const auto& l : scene.loads)
-    if (l.type == "shell_pressure" && l.stages.includes(stage))
+    if (l.type == "shell_pressure" && l.follower == follower && l.stages.includes(stage))
       loads.emplace_back(&l, factor(l.curve));
   return [&model, loads, time](std::size_t part, const double* x) {
     double q = 0;

@@ -23,9 +23,12 @@ std::vector<ShellSupport> shell_supports_at(const Scene& scene, const std::strin
 bool shell_supports_move(const Scene& scene, const std::string& stage);
 
 /// The shell_pressure loads active in `stage`, summed, at `time` (a load without a curve at
-/// `ramp` times its value).
+/// `ramp` times its value): the dead ones, or with `follower` the follower ones.
 FlatShellOperator::Pressure shell_pressure_at(const Model& model, const std::string& stage,
-                                              double time, double ramp = 1.0);
+                                              double time, double ramp = 1.0,
+                                              bool follower = false);
+/// Whether a follower shell_pressure is active in `stage`.
+bool has_follower_pressure(const Scene& scene, const std::string& stage);
 
 /// The shell_edge_load line loads active in a stage: their edge points (the SCNI boundary
 /// quadrature of shells/ShellBoundary.hpp) found once, the loads added at any time.

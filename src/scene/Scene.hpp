@@ -116,6 +116,7 @@ struct LoadSpec {
   std::vector<std::string> parts;
   std::vector<ScalarField> value;  ///< traction, body force, pressure: may vary in x, y, z, t
   bool from_exact = false;  ///< traction or body force from the verification block's exact solution
+  bool follower = false;    ///< shell_pressure: along the deformed normal (finite rotations)
   std::string curve;
   ActiveStages stages;
 };

@@ -291,6 +291,7 @@ class SceneBuilder {
               ? fields(l["value"], doc["value"], path + ".value", varying)
               : std::vector<ScalarField>{field(l["value"], doc["value"], path + ".value", varying)};
     load.from_exact = l["from_exact_solution"] && l["from_exact_solution"].as<bool>();
+    load.follower = l["follower"] && l["follower"].as<bool>();
     if ((load.type == "traction" || load.type == "body_force") &&
         load.from_exact == !load.value.empty())
       fail(doc, path, "expected exactly one of value, from_exact_solution: true");

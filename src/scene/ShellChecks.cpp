@@ -111,6 +111,11 @@ void check_shell_scene(const Scene& s, const BackgroundMesh& mesh) {
            "shells have no exact-solution conditions; give the values");
   }
   for (std::size_t i = 0; i < s.loads.size(); ++i)
+    if (s.loads[i].follower && !finite)
+      fail(s, d["loads"][i]["follower"], "loads[" + std::to_string(i) + "].follower",
+           "a follower pressure needs finite rotations (the shell parts' section.formulation: "
+           "total_lagrangian); with small rotations the deformed normal is +z: expected false");
+  for (std::size_t i = 0; i < s.loads.size(); ++i)
     if (s.loads[i].type != "shell_pressure" && s.loads[i].type != "shell_edge_load")
       fail(s, d["loads"][i]["type"], "loads[" + std::to_string(i) + "].type",
            "shell parts take shell_pressure and shell_edge_load loads in this version");

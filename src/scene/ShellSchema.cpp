@@ -41,6 +41,12 @@ std::vector<Key> shell_pressure_keys() {
                                      "number or an expression of x, y, z, t.",
                                      "stress")
                                     .varying(ExpressionVariables::position_and_time)),
+          optional_key("follower",
+                       boolean("The pressure follows the deformed mid-surface: along its normal "
+                               "f1 x f2, per deformed area (finite rotations only; its load "
+                               "stiffness is in the Newton tangent). false: along +z, per "
+                               "reference area (a dead load)."),
+                       "false"),
           optional_key("curve", string("Name of a curve scaling the load over time; see the "
                                        "stage drivers for what happens without one."))};
 }

@@ -171,7 +171,7 @@ Teuchos::RCP<FlatShellOperator::Matrix> FlatShellOperator::stiffness(
 }
 
 void FlatShellOperator::fill_tangent(const Vector& d_owned, const ShellConstraints& constraints,
-                                     Matrix& K) const {
+                                     Matrix& K, const Pressure* follower) const {
   const auto d_overlap = to_overlap(d_owned);
   K.beginAssembly();
   K.setAllToScalar(0.0);
@@ -203,6 +203,7 @@ void FlatShellOperator::fill_tangent(const Vector& d_owned, const ShellConstrain
         for (std::size_t r = 0; r < width; ++r)
           K.sumIntoLocalValues(cols[r], static_cast<int>(width), Kp.data() + r * width,
                                cols.data());
+        if (follower) add_follower_stiffness(part, p, d, *follower, cols, K);
       }
     }
   }
@@ -211,6 +212,71 @@ void FlatShellOperator::fill_tangent(const Vector& d_owned, const ShellConstrain
   K.beginModify();
   constraints.replace_rows(K);
   K.endModify();
+}
+
+template <class View>
+void FlatShellOperator::surface_tangents(const Point& p, const View& d, Vec3 (&f)[2]) const {
+  f[0] = {1, 0, 0};
+  f[1] = {0, 1, 0};
+  for (std::size_t a = 0; a < p.node.size(); ++a)
+    for (std::size_t c = 0; c < 3; ++c) {
+      const double u = d(static_cast<std::size_t>(p.node[a]) * nd + c, 0);
+      f[0][c] += p.g[2 * a] * u;
+      f[1][c] += p.g[2 * a + 1] * u;
+    }
+}
+
+template <class View>
+void FlatShellOperator::add_follower_stiffness(std::size_t part, const Point& p, const View& d,
+                                               const Pressure& q, const std::vector<int>& cols,
+                                               Matrix& K) const {
+  Vec3 f[2];
+  surface_tangents(p, d, f);
+  const double x[3] = {p.x[0], p.x[1], 0.0};
+  const double load = p.weight * q(part, x);
+  if (load == 0) return;
+  const std::size_t n = p.node.size(), width = n * nd;
+  std::vector<double> row(width);
+  // d(f1 x f2)/du_(J,l) = g_J1 e_l x f2 + f1 x g_J2 e_l; the residual has -f_ext
+  for (std::size_t a = 0; a < n; ++a)
+    for (std::size_t i = 0; i < 3; ++i) {
+      std::fill(row.begin(), row.end(), 0.0);
+      for (std::size_t b = 0; b < n; ++b)
+        for (std::size_t l = 0; l < 3; ++l) {
+          Vec3 e{};
+          e[l] = 1;
+          const Vec3 x1 = {e[1] * f[1][2] - e[2] * f[1][1], e[2] * f[1][0] - e[0] * f[1][2],
+                           e[0] * f[1][1] - e[1] * f[1][0]};  // e_l x f2
+          const Vec3 x2 = {f[0][1] * e[2] - f[0][2] * e[1], f[0][2] * e[0] - f[0][0] * e[2],
+                           f[0][0] * e[1] - f[0][1] * e[0]};  // f1 x e_l
+          row[b * nd + l] = -load * p.phi[a] * (p.g[2 * b] * x1[i] + p.g[2 * b + 1] * x2[i]);
+        }
+      K.sumIntoLocalValues(cols[a * nd + i], static_cast<int>(width), row.data(), cols.data());
+    }
+}
+
+void FlatShellOperator::add_follower_pressure(const Pressure& q, const Vector& d_owned,
+                                              Vector& f_owned) const {
+  const auto d_overlap = to_overlap(d_owned);
+  Vector f_overlap(maps_.overlap_dofs);
+  {
+    const auto d = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
+    auto f = f_overlap.getLocalViewHost(Tpetra::Access::ReadWrite);
+    for (std::size_t part = 0; part < points_.size(); ++part)
+      for (const auto& p : points_[part]) {
+        Vec3 t[2];
+        surface_tangents(p, d, t);
+        const double x[3] = {p.x[0], p.x[1], 0.0};
+        const double load = p.weight * q(part, x);
+        const Vec3 area = {t[0][1] * t[1][2] - t[0][2] * t[1][1],
+                           t[0][2] * t[1][0] - t[0][0] * t[1][2],
+                           t[0][0] * t[1][1] - t[0][1] * t[1][0]};
+        for (std::size_t a = 0; a < p.node.size(); ++a)
+          for (std::size_t c = 0; c < 3; ++c)
+            f(static_cast<std::size_t>(p.node[a]) * nd + c, 0) += load * p.phi[a] * area[c];
+      }
+  }
+  add_overlap(f_overlap, f_owned);
 }
 
 void FlatShellOperator::add_pressure(const Pressure& q, Vector& f_owned) const {

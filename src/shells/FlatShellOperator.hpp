@@ -43,6 +43,8 @@ class FlatShellOperator {
  public:
   using Matrix = Tpetra::FECrsMatrix<>;
   using Vector = Tpetra::Vector<>;
+  /// Pressure (force per area) of part p at x.
+  using Pressure = std::function<double(std::size_t part, const double* x)>;
 
   /// Every part of the 2D model is a shell of its elastic material (E, nu): with parts[].shell
   /// its thickness, thickness points and shear stabilization; otherwise the part's thickness
@@ -70,7 +72,9 @@ class FlatShellOperator {
   /// K(d) = d(f_int + edge terms)/dd with the constrained rows replaced by their collocation
   /// rows, refilled in place (the implicit Newton's Jacobian). J2 parts: the consistent section
   /// tangent (shells/ShellSectionResponse.hpp), the layers' trial states written.
-  void fill_tangent(const Vector& d_owned, const ShellConstraints& constraints, Matrix& K) const;
+  /// With `follower`, the residual's load stiffness -d f_follower/dd is added (nonsymmetric).
+  void fill_tangent(const Vector& d_owned, const ShellConstraints& constraints, Matrix& K,
+                    const Pressure* follower = nullptr) const;
   /// The section law of part p where the particle spacing is h (elastic with its stabilized
   /// shear, or J2 through the thickness).
   ShellSectionLaw section_law(std::size_t part, double h) const {
@@ -88,10 +92,12 @@ class FlatShellOperator {
     if (h.size() != size) h.assign(size, 0.0);
     return h;
   }
-  /// Pressure (force per area along +z) of part p at x.
-  using Pressure = std::function<double(std::size_t part, const double* x)>;
   /// f_(I,w) += sum_L a_L phi_I(X_L) q(X_L) (owned dofs).
   void add_pressure(const Pressure& q, Vector& f_owned) const;
+  /// A follower pressure (finite rotations): f_I += sum_L a_L phi_I(X_L) q(X_L) f1 x f2 on the
+  /// translations, f_a the direct gradients of the mid-surface map at the point (f1 x f2 dA is
+  /// the deformed area vector: the pressure acts per deformed area along the deformed normal).
+  void add_follower_pressure(const Pressure& q, const Vector& d_owned, Vector& f_owned) const;
   /// The physical values u^h(X_J) = sum_I phi_I(X_J) d_I of every owned particle (5 per
   /// particle, in the order of maps().owned_nodes).
   std::vector<double> physical_values(const Vector& d_owned) const;
@@ -185,6 +191,13 @@ class FlatShellOperator {
                                       const FinitePoint* fp = nullptr,
                                       const double* R = nullptr) const;
   Vector to_overlap(const Vector& d_owned) const;
+  /// Adds -d/dd of the point's follower pressure force (cols: the point's overlap dofs).
+  template <class View>
+  void add_follower_stiffness(std::size_t part, const Point& p, const View& d,
+                              const Pressure& q, const std::vector<int>& cols, Matrix& K) const;
+  /// The direct gradients f_1, f_2 of the mid-surface map x = X + u at a point.
+  template <class View>
+  void surface_tangents(const Point& p, const View& d, Vec3 (&f)[2]) const;
   /// f_owned = the sum of the overlap contributions of every rank.
   void export_add(const Vector& f_overlap, Vector& f_owned) const;
   /// The 8 generalized strains of a point at the overlap values d.

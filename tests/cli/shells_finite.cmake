@@ -60,3 +60,22 @@ add_test(NAME cli.shell_half_roll_check COMMAND /usr/bin/python3
   ${EFG_CLI_TMP}/shell_half_roll_implicit/strip_half_roll_implicit.e)
 set_tests_properties(cli.shell_half_roll_check PROPERTIES LABELS cli
   FIXTURES_REQUIRED "shell_rolled_np1;shell_half_roll_explicit;shell_half_roll_implicit")
+# A follower pressure and its dead twin on a cantilever strip, each against the elastica's
+# shooting solution (tests/cli/check_shell_follower.py).
+file(READ ${PROJECT_SOURCE_DIR}/tests/scenes/shells/strip_follower_pressure.yaml follower)
+string(REPLACE ", follower: true" "" dead "${follower}")
+file(WRITE ${CMAKE_CURRENT_BINARY_DIR}/strip_dead_pressure.yaml "${dead}")
+efg_cli_test(NAME cli.shell_follower_pressure
+  COMMAND "${efg}|run|tests/scenes/shells/strip_follower_pressure.yaml|-o|${EFG_CLI_TMP}/shell_follower_pressure"
+  EXIT 0 TEXT "stage 'bend' done: 20 steps, 0 cutbacks" FILE ${EFG_CLI_TMP}/shell_follower_pressure/strip_follower_pressure.e)
+set_tests_properties(cli.shell_follower_pressure PROPERTIES FIXTURES_SETUP shell_follower_pressure)
+efg_cli_test(NAME cli.shell_dead_pressure
+  COMMAND "${efg}|run|${CMAKE_CURRENT_BINARY_DIR}/strip_dead_pressure.yaml|-o|${EFG_CLI_TMP}/shell_dead_pressure"
+  EXIT 0 TEXT "stage 'bend' done: 20 steps, 0 cutbacks" FILE ${EFG_CLI_TMP}/shell_dead_pressure/strip_dead_pressure.e)
+set_tests_properties(cli.shell_dead_pressure PROPERTIES FIXTURES_SETUP shell_dead_pressure)
+add_test(NAME cli.shell_follower_check COMMAND /usr/bin/python3
+  ${CMAKE_CURRENT_SOURCE_DIR}/check_shell_follower.py
+  ${EFG_CLI_TMP}/shell_follower_pressure/strip_follower_pressure.e
+  ${EFG_CLI_TMP}/shell_dead_pressure/strip_dead_pressure.e)
+set_tests_properties(cli.shell_follower_check PROPERTIES LABELS cli
+  FIXTURES_REQUIRED "shell_follower_pressure;shell_dead_pressure")

@@ -91,13 +91,18 @@ TEST(ShellTangent, JacobianIsTheDerivativeOfTheResidualInAPlasticState) {
 // after an accepted step of large rotations (frames turned up to 1 radian, rotation dofs reset)
 // and in a further step (rotation increments up to 0.4), membrane, bending, shear, geometric and
 // edge terms all present.
-void finite_rotation_tangent_check(bool elastic) {
+// With `follower` a follower pressure (x-dependent) loads the plate: its load stiffness too.
+void finite_rotation_tangent_check(bool elastic, bool follower = false) {
   const auto model = j2_plate(true, elastic);
   const FlatShellOperator op(model);
   ASSERT_TRUE(op.finite_rotations());
   ShellStaticProblem problem(model, op, shell_supports_at(model.scene, "press", 1.0));
+  const FlatShellOperator::Pressure none, pressure = [](std::size_t, const double* x) {
+    return 0.3 + 0.2 * x[0] * x[1];
+  };
   problem.set_level([](std::size_t, const double*) { return 0.0; },
-                    shell_supports_at(model.scene, "press", 1.0));
+                    shell_supports_at(model.scene, "press", 1.0), {},
+                    follower ? pressure : none);
   const auto& map = op.maps().owned_dofs;
   Vector d(map), r(map);
   bending(model, op, 0.25, 2e-2, d);
@@ -140,6 +145,10 @@ TEST(ShellTangent, FiniteRotationJacobianIsTheDerivativeOfTheResidualElastic) {
 
 TEST(ShellTangent, FiniteRotationJacobianIsTheDerivativeOfTheResidualPlastic) {
   finite_rotation_tangent_check(false);
+}
+
+TEST(ShellTangent, FiniteRotationJacobianHasTheFollowerPressuresLoadStiffness) {
+  finite_rotation_tangent_check(true, true);
 }
 
 }  // namespace
