@@ -56,22 +56,21 @@ std::vector<double> probe_values(const Model& model, const FlatShellOperator::Ve
     });
     double* out = &local[i * probe_columns];
     double grad_rx[2] = {0, 0}, grad_ry[2] = {0, 0};
-    Vec3 director{};  // finite rotations: sum phi_I d_I
+    std::vector<int> lids;  // finite rotations: the rotation from the reference director
     for (auto k = v.neighbors.offsets[0]; k < v.neighbors.offsets[1]; ++k) {
       const auto node = cloud.mesh_node[static_cast<std::size_t>(v.neighbors.particles[k])];
       const auto lid = static_cast<std::size_t>(
           op.maps().overlap_nodes->getLocalElement(static_cast<GlobalOrdinal>(node)));
       for (std::size_t c = 0; c < nd; ++c) out[c] += v.phi[k] * d(lid * nd + c, 0);
-      if (op.finite_rotations()) {
-        const auto dI = op.node_at(static_cast<int>(lid), nullptr, nullptr, 0.0, d).director.d;
-        for (std::size_t c = 0; c < 3; ++c) director[c] += v.phi[k] * dI[c];
-      }
+      lids.push_back(static_cast<int>(lid));
       for (std::size_t a = 0; a < 2; ++a) {
         grad_rx[a] += v.grad[2 * k + a] * d(lid * nd + shell_rx, 0);
         grad_ry[a] += v.grad[2 * k + a] * d(lid * nd + shell_ry, 0);
       }
     }
-    if (op.finite_rotations()) director_rotation(director, out[shell_rx], out[shell_ry]);
+    if (op.finite_rotations())
+      op.physical_rotation(lids.data(), v.phi.data() + v.neighbors.offsets[0], lids.size(), d,
+                           out[shell_rx], out[shell_ry]);
     if (op.section_law(static_cast<std::size_t>(p), 0.0).j2 || op.finite_rotations()) {
       double nearest = -1;
       for (std::size_t r = 0; r < cloud.owned_count; ++r) {

@@ -156,8 +156,16 @@ class SceneBuilder {
     if (p["formulation"].as<std::string>() == "mixed_up")
       part.formulation = PartFormulation::mixed_up;
     if (const auto& sh = p["shell"]; sh)
+    {
       part.shell = ShellSpec{sh["thickness"].as<double>(), sh["thickness_points"].as<int>(),
-                             sh["shear_stabilization"].as<double>()};
+                             sh["shear_stabilization"].as<double>(),
+                             {}};
+      if (const auto& r = sh["reference"]; r)
+        for (const char* axis : {"x", "y", "z"})
+          part.shell->reference.push_back(field(r[axis], doc["shell"]["reference"][axis],
+                                                path + ".shell.reference." + axis,
+                                                ExpressionVariables::position));
+    }
     const auto* material = s_.find_material(part.material);
     if (!material) {
       std::string names;

@@ -1,6 +1,10 @@
 #include "scene/ShellChecks.hpp"
 
+#include <algorithm>
+#include <array>
+#include <cmath>
 #include <set>
+#include <sstream>
 
 #include "core/Errors.hpp"
 #include "scene/SchemaValidator.hpp"
@@ -11,6 +15,48 @@ namespace {
 [[noreturn]] void fail(const Scene& s, const YAML::Node& at, const std::string& path,
                        const std::string& message) {
   throw InputError(schema::located_message(s.file, at, path, message));
+}
+
+// A curved reference by flattening must be an isometry of the flat mesh (docs/shells.md,
+// "Curved references"): |dX/dx| = |dX/dy| = 1, dX/dx . dX/dy = 0 at every node of the part's
+// blocks, by central differences of step 1e-6 of the mesh's size, within 1e-6.
+void check_isometry(const Scene& s, const BackgroundMesh& mesh, const PartSpec& part,
+                    const YAML::Node& at, const std::string& path) {
+  const auto& map = part.shell->reference;
+  double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
+  for (std::size_t i = 0; i < mesh.coordinates.size(); ++i) {
+    lo[i % 2] = std::min(lo[i % 2], mesh.coordinates[i]);
+    hi[i % 2] = std::max(hi[i % 2], mesh.coordinates[i]);
+  }
+  const double h = 1e-6 * std::hypot(hi[0] - lo[0], hi[1] - lo[1]);
+  const auto tangent = [&](const double* xy, int a) {
+    std::array<double, 3> t{};
+    for (int sign : {1, -1}) {
+      const double p[3] = {xy[0] + (a == 0 ? sign * h : 0.0), xy[1] + (a == 1 ? sign * h : 0.0),
+                           0.0};
+      for (std::size_t c = 0; c < 3; ++c) t[c] += sign * map[c].at(p, 0.0) / (2 * h);
+    }
+    return t;
+  };
+  for (const auto& block : mesh.blocks) {
+    if (std::find(part.blocks.begin(), part.blocks.end(), block.name) == part.blocks.end())
+      continue;
+    for (auto node : block.connectivity) {
+      const double* xy = mesh.coordinates.data() + 2 * static_cast<std::size_t>(node);
+      const auto t1 = tangent(xy, 0), t2 = tangent(xy, 1);
+      const double l1 = std::sqrt(t1[0] * t1[0] + t1[1] * t1[1] + t1[2] * t1[2]),
+                   l2 = std::sqrt(t2[0] * t2[0] + t2[1] * t2[1] + t2[2] * t2[2]),
+                   c = t1[0] * t2[0] + t1[1] * t2[1] + t1[2] * t2[2];
+      if (std::abs(l1 - 1) <= 1e-6 && std::abs(l2 - 1) <= 1e-6 && std::abs(c) <= 1e-6) continue;
+      std::ostringstream o;
+      o.precision(9);
+      o << "the reference map is no isometry at (x, y) = (" << xy[0] << ", " << xy[1]
+        << "): |dX/dx| = " << l1 << ", |dX/dy| = " << l2 << ", dX/dx . dX/dy = " << c
+        << "; expected 1, 1, 0 (x and y arc lengths along orthogonal lines of a developable "
+           "surface)";
+      fail(s, at, path, o.str());
+    }
+  }
 }
 
 // Solid scenes: the shell-only keys have nothing to act on.
@@ -74,6 +120,13 @@ void check_shell_scene(const Scene& s, const BackgroundMesh& mesh) {
       fail(s, pd["section"]["formulation"], path + ".section.formulation",
            "every shell part of a scene has the same kinematics in this version: expected the "
            "formulation of parts[0]");
+    if (part.shell && !part.shell->reference.empty() &&
+        part.section.formulation != Formulation::total_lagrangian)
+      fail(s, pd["shell"]["reference"], path + ".shell.reference",
+           "a curved reference is a finite-rotation shell: expected section.formulation: "
+           "total_lagrangian (a small load step gives the linear response)");
+    if (part.shell && !part.shell->reference.empty())
+      check_isometry(s, mesh, part, pd["shell"]["reference"], path + ".shell.reference");
     if (part.formulation != PartFormulation::displacement)
       fail(s, pd["formulation"], path + ".formulation",
            "a shell has no mixed_up formulation: expected displacement");

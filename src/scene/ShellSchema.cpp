@@ -24,7 +24,21 @@ SpecPtr shell_spec() {
                      "free of shear locking; 0 switches it off.",
                      "-")
                     .at_least(0),
-                "0.1");
+                "0.1")
+      .optional(
+          "reference",
+          map("A curved reference mid-surface by flattening (the global approach): the 2D mesh "
+              "is the surface unrolled, and (X, Y, Z) = (x, y, z) of these expressions of the "
+              "mesh's x, y maps it onto the surface. The map must be an isometry (x and y arc "
+              "lengths along orthogonal lines: a developable surface such as a cylinder or a "
+              "cone, checked at the particles); needs section.formulation: total_lagrangian. "
+              "See docs/shells.md, \"Curved references\".")
+              .required("x", real("X of the surface point.", "length")
+                                 .varying(ExpressionVariables::position))
+              .required("y", real("Y of the surface point.", "length")
+                                 .varying(ExpressionVariables::position))
+              .required("z", real("Z of the surface point.", "length")
+                                 .varying(ExpressionVariables::position)));
 }
 
 std::vector<Key> rotation_keys() {

@@ -80,10 +80,20 @@ void rotate_frame(ShellFrame& frame, double a, double b) {
 }
 
 void director_rotation(const Vec3& d, double& rx, double& ry) {
-  const double sine = std::hypot(d[0], d[1]);
-  const double scale = sine > 0 ? std::atan2(sine, d[2]) / sine : 1.0;
-  rx = -d[1] * scale;  // E3 x d = (-d_y, d_x, 0)
-  ry = d[0] * scale;
+  director_rotation({0, 0, 1}, d, {1, 0, 0}, rx, ry);
+}
+
+void director_rotation(const Vec3& from, const Vec3& to, const Vec3& axis, double& rx,
+                       double& ry) {
+  Vec3 t3 = from, t1 = axis;
+  axpy(1.0 / std::sqrt(dot(t3, t3)) - 1.0, t3, t3);
+  axpy(-dot(t1, t3), t3, t1);
+  axpy(1.0 / std::sqrt(dot(t1, t1)) - 1.0, t1, t1);
+  const Vec3 t2 = cross(t3, t1), w = cross(t3, to);  // |w| = |to| sin(angle)
+  const double sine = std::sqrt(dot(w, w));
+  const double scale = sine > 0 ? std::atan2(sine, dot(t3, to)) / sine : 1.0;
+  rx = scale * dot(w, t1);
+  ry = scale * dot(w, t2);
 }
 
 ShellPointGeometry reference_geometry() {

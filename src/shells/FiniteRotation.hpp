@@ -61,6 +61,10 @@ void rotate_frame(ShellFrame& frame, double a, double b);
 /// The rotation (rx, ry) about x and y that turns the normal E3 into the direction of d: angle
 /// atan2(|E3 x d|, E3 . d) in [0, pi] about E3 x d (the linear shell's rotations for small ones).
 void director_rotation(const Vec3& d, double& rx, double& ry);
+/// The rotation turning the direction of `from` into that of `to` (angle in [0, pi] about
+/// from x to), as components about t1 and t2 of the frame of director `from` whose t1 is
+/// `axis` made orthogonal to it (the flat case: from = E3, axis = E1, as above).
+void director_rotation(const Vec3& from, const Vec3& to, const Vec3& axis, double& rx, double& ry);
 
 /// The point quantities F_a, D_a (smoothed), f_a (direct) and d.
 struct ShellPointGeometry {

@@ -15,6 +15,7 @@
 #include "operators/CouplingGraph.hpp"
 #include "shells/FlatShellPointLaw.hpp"
 #include "shells/ShellConstraints.hpp"
+#include "shells/ShellReference.hpp"
 #include "shells/ShellSpacing.hpp"
 
 namespace efg {
@@ -107,6 +108,49 @@ FlatShellOperator::FlatShellOperator(const Model& model, int thickness_points,
     }
     points_.push_back(std::move(points));
   }
+  if (finite_) reference_frames_ = frames_;
+  build_reference();
+}
+
+void FlatShellOperator::build_reference() {
+  for (const auto& d : model_.parts)
+    if (d.part->shell && !d.part->shell->reference.empty()) curved_ = true;
+  if (!curved_) return;
+  if (!finite_)
+    throw InputError(model_.scene.file +
+                     ": a curved shell reference needs finite rotations (section.formulation: "
+                     "total_lagrangian)");
+  const auto& mesh = model_.mesh;
+  double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
+  for (std::size_t i = 0; i < mesh.coordinates.size(); ++i) {
+    lo[i % 2] = std::min(lo[i % 2], mesh.coordinates[i]);
+    hi[i % 2] = std::max(hi[i % 2], mesh.coordinates[i]);
+  }
+  const double length = std::hypot(hi[0] - lo[0], hi[1] - lo[1]);
+  offset_.assign(frames_.size(), Vec3{});
+  for (const auto& d : model_.parts) {
+    const auto& map = d.part->shell ? d.part->shell->reference : std::vector<ScalarField>{};
+    if (map.empty()) continue;
+    for (auto node : d.cloud.mesh_node) {
+      const auto lid = static_cast<std::size_t>(
+          maps_.overlap_nodes->getLocalElement(static_cast<GlobalOrdinal>(node)));
+      const double* xy = mesh.coordinates.data() + 2 * static_cast<std::size_t>(node);
+      const auto r = shell_reference_at(map, xy, length);
+      offset_[lid] = {r.position[0] - xy[0], r.position[1] - xy[1], r.position[2]};
+      frames_[lid] = reference_frames_[lid] = r.frame;
+    }
+  }
+  // every point's strains at the reference state (d = 0), which its strains are measured from
+  Vector zero(maps_.overlap_dofs);
+  const auto d = zero.getLocalViewHost(Tpetra::Access::ReadOnly);
+  FinitePoint fp;
+  for (auto& part : points_)
+    for (auto& p : part) {
+      finite_point(p, d, fp);
+      double e[shell_strains];
+      finite_rotation_strains(fp.geometry, e);
+      std::copy(e, e + shell_strains, p.reference.begin());
+    }
 }
 
 void FlatShellOperator::strain_rows(const Point& p, std::size_t a, const FinitePoint* fp,
@@ -187,7 +231,7 @@ void FlatShellOperator::fill_tangent(const Vector& d_owned, const ShellConstrain
         SectionTangent S;
         if (finite_) {
           finite_point(p, d, fp);
-          finite_rotation_strains(fp.geometry, e);
+          finite_strains(p, fp, e);
         } else {
           point_strains(p, d, e);
         }
@@ -220,7 +264,8 @@ void FlatShellOperator::surface_tangents(const Point& p, const View& d, Vec3 (&f
   f[1] = {0, 1, 0};
   for (std::size_t a = 0; a < p.node.size(); ++a)
     for (std::size_t c = 0; c < 3; ++c) {
-      const double u = d(static_cast<std::size_t>(p.node[a]) * nd + c, 0);
+      const double u = d(static_cast<std::size_t>(p.node[a]) * nd + c, 0) +
+                       (curved_ ? offset_[static_cast<std::size_t>(p.node[a])][c] : 0.0);
       f[0][c] += p.g[2 * a] * u;
       f[1][c] += p.g[2 * a + 1] * u;
     }
@@ -327,19 +372,17 @@ std::vector<double> FlatShellOperator::physical_values(const Vector& d_owned) co
     for (std::size_t r = 0; r < part.cloud.owned_count; ++r) {
       const auto row = static_cast<std::size_t>(
           owned.getLocalElement(static_cast<GlobalOrdinal>(part.cloud.mesh_node[r])));
-      Vec3 director{};  // finite rotations: the director there, sum phi_I d_I
+      std::vector<int> lids;  // finite rotations: the rotation from the reference director
       for (auto k = rows.offsets[r]; k < rows.offsets[r + 1]; ++k) {
         const auto node = part.cloud.mesh_node[static_cast<std::size_t>(rows.particles[k])];
         const auto lid = static_cast<std::size_t>(overlap.getLocalElement(node));
         for (std::size_t c = 0; c < nd; ++c)
           out[row * nd + c] += rows.values[k] * d(lid * nd + c, 0);
-        if (!finite_) continue;
-        const auto dI = node_director(frames_[lid], d(lid * nd + shell_rx, 0),
-                                      d(lid * nd + shell_ry, 0))
-                            .d;
-        for (std::size_t c = 0; c < 3; ++c) director[c] += rows.values[k] * dI[c];
+        lids.push_back(static_cast<int>(lid));
       }
-      if (finite_) director_rotation(director, out[row * nd + shell_rx], out[row * nd + shell_ry]);
+      if (finite_)
+        physical_rotation(lids.data(), rows.values.data() + rows.offsets[r], lids.size(), d,
+                          out[row * nd + shell_rx], out[row * nd + shell_ry]);
     }
   }
   return out;

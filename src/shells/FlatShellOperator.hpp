@@ -118,6 +118,14 @@ class FlatShellOperator {
   /// Finite rotations (shells/FiniteRotation.hpp): every part's section formulation is
   /// total_lagrangian. The rotation dofs are then the rotation since the last accepted step.
   bool finite_rotations() const { return finite_; }
+  /// A part has a curved reference (parts[].shell.reference, shells/ShellReference.hpp): its
+  /// particles start from the mapped surface (an offset from the flat mesh) with its frames.
+  bool curved() const { return curved_; }
+  /// The rotation (about the reference frame's t1, t2 there) that turns the reference director
+  /// into the current one at a point of shape functions phi over overlap particles `nodes`.
+  template <class View>
+  void physical_rotation(const int* nodes, const double* phi, std::size_t n, const View& d,
+                         double& rx, double& ry) const;
   /// Accepts the rotations of d: every particle's frame is turned by its rotation dofs
   /// (exponential map) and those dofs are set to 0 in d (translations stay totals).
   void accept_rotations(Vector& d_owned) const;
@@ -126,10 +134,13 @@ class FlatShellOperator {
   ShellNodeAtPoint node_at(int node, const double* b, const double* g, double phi,
                            const View& d) const {
     const auto k = static_cast<std::size_t>(node) * shell_dofs_per_node;
+    Vec3 u = {d(k, 0), d(k + 1, 0), d(k + 2, 0)};
+    if (curved_)  // the reference surface's offset from the flat mesh
+      for (std::size_t c = 0; c < 3; ++c) u[c] += offset_[static_cast<std::size_t>(node)][c];
     return {b,
             g,
             phi,
-            {d(k, 0), d(k + 1, 0), d(k + 2, 0)},
+            u,
             node_director(frames_[static_cast<std::size_t>(node)], d(k + shell_rx, 0),
                           d(k + shell_ry, 0))};
   }
@@ -177,11 +188,21 @@ class FlatShellOperator {
     int owned_row = 0;  ///< the particle's index in maps().owned_nodes
     std::vector<int> node;
     std::vector<double> b, g, phi;  // 2, 2, 1 per particle
+    /// finite rotations: the strains of the reference state (0 on a flat reference), which the
+    /// point's strains are measured from
+    std::array<double, shell_strains> reference{};
   };
   /// The kinematics of a point with finite rotations: its particles and point quantities.
   using FinitePoint = FiniteRotationPoint;
   template <class View>
   void finite_point(const Point& p, const View& d, FinitePoint& fp) const;
+  /// The point's strains from fp's kinematics, measured from its reference state.
+  void finite_strains(const Point& p, const FinitePoint& fp, double (&e)[shell_strains]) const {
+    finite_rotation_strains(fp.geometry, e);
+    for (std::size_t i = 0; i < shell_strains; ++i) e[i] -= p.reference[i];
+  }
+  /// Curved references: offsets, frames and the points' reference strains.
+  void build_reference();
   /// B of particle a of a point (finite rotations: of fp's kinematics).
   void strain_rows(const Point& p, std::size_t a, const FinitePoint* fp,
                    double (&B)[shell_strains][shell_dofs_per_node]) const;
@@ -223,13 +244,32 @@ class FlatShellOperator {
   /// per part: j2_state::count doubles per thickness point per integration point
   mutable std::vector<std::vector<double>> committed_, trial_;
   mutable bool elastic_probe_ = false;
-  bool finite_ = false;
+  bool finite_ = false, curved_ = false;
   mutable std::vector<ShellFrame> frames_;  ///< per overlap particle (finite rotations)
+  std::vector<ShellFrame> reference_frames_;  ///< per overlap particle: the frames at the start
+  std::vector<Vec3> offset_;  ///< per overlap particle: reference position - flat mesh position
   mutable std::map<std::string, std::vector<double>> edge_history_;
   static inline std::atomic<long long> instances_{0};
   std::vector<physics::MindlinSection> sections_;
   std::vector<double> thickness_, alpha_;
   std::vector<std::vector<Point>> points_;  ///< per part
 };
+
+template <class View>
+void FlatShellOperator::physical_rotation(const int* nodes, const double* phi, std::size_t n,
+                                          const View& d, double& rx, double& ry) const {
+  Vec3 now{}, then{}, axis{};
+  for (std::size_t k = 0; k < n; ++k) {
+    const auto lid = static_cast<std::size_t>(nodes[k]);
+    const auto dI =
+        node_director(frames_[lid], d(lid * shell_dofs_per_node + shell_rx, 0), d(lid * shell_dofs_per_node + shell_ry, 0)).d;
+    for (std::size_t c = 0; c < 3; ++c) {
+      now[c] += phi[k] * dI[c];
+      then[c] += phi[k] * reference_frames_[lid].t3[c];
+      axis[c] += phi[k] * reference_frames_[lid].t1[c];
+    }
+  }
+  director_rotation(then, now, axis, rx, ry);
+}
 
 }  // namespace efg

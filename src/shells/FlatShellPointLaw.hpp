@@ -25,7 +25,7 @@ void FlatShellOperator::point_strains(const Point& p, const View& d,
   if (finite_) {
     FinitePoint fp;
     finite_point(p, d, fp);
-    return finite_rotation_strains(fp.geometry, e);
+    return finite_strains(p, fp, e);
   }
   for (auto& v : e) v = 0;
   for (std::size_t a = 0; a < p.node.size(); ++a) {

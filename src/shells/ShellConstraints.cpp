@@ -58,6 +58,19 @@ ShellConstraints::ShellConstraints(const Model& model, const FlatShellOperator& 
       throw InputError(model.scene.file + ": shell support: node set '" + s.node_set +
                        "' covers no edge of a shell part");
   }
+  if (op.curved()) {
+    // the edge points' strains at the reference state (d = 0), which theirs are measured from
+    FlatShellOperator::Vector zero(op.maps().overlap_dofs);
+    const auto d = zero.getLocalViewHost(Tpetra::Access::ReadOnly);
+    FiniteRotationPoint fe;
+    for (auto& e : edges_) {
+      double strain[shell_strains];
+      e.reference = {};
+      edge_kinematics(e, d, fe);
+      finite_rotation_strains(fe.geometry, strain);
+      std::copy(strain, strain + shell_strains, e.reference.begin());
+    }
+  }
   for (std::size_t p = 0; p < model.parts.size(); ++p) {
     const auto& part = model.parts[p];
     const auto& section = op.section(p);
@@ -92,19 +105,28 @@ void ShellConstraints::add_couplings(CouplingGraph& graph) const {
 }
 
 template <class View>
+void ShellConstraints::edge_kinematics(const Edge& e, const View& d,
+                                       FiniteRotationPoint& fe) const {
+  // an edge point's gradients are the direct ones (b = g)
+  const auto& p = e.point;
+  fe.nodes.clear();
+  fe.geometry = reference_geometry();
+  for (std::size_t a = 0; a < p.node.size(); ++a) {
+    const double* g = &p.grad[2 * a];
+    fe.nodes.push_back(op_.node_at(e.node[a], g, g, p.phi[a], d));
+    add_to_geometry(fe.nodes.back(), fe.geometry);
+  }
+}
+
+template <class View>
 void ShellConstraints::edge_response(const Edge& e, const View& d, double (&R)[shell_strains],
                                      SectionTangent* S, FiniteRotationPoint* fe) const {
   const auto& p = e.point;
   double strain[shell_strains] = {};
-  if (fe) {  // an edge point's gradients are the direct ones (b = g)
-    fe->nodes.clear();
-    fe->geometry = reference_geometry();
-    for (std::size_t a = 0; a < p.node.size(); ++a) {
-      const double* g = &p.grad[2 * a];
-      fe->nodes.push_back(op_.node_at(e.node[a], g, g, p.phi[a], d));
-      add_to_geometry(fe->nodes.back(), fe->geometry);
-    }
+  if (fe) {
+    edge_kinematics(e, d, *fe);
     finite_rotation_strains(fe->geometry, strain);
+    for (std::size_t i = 0; i < shell_strains; ++i) strain[i] -= e.reference[i];
   }
   for (std::size_t a = 0; !fe && a < p.node.size(); ++a) {
     double B[shell_strains][nd];

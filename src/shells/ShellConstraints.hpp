@@ -94,6 +94,8 @@ class ShellConstraints {
     std::array<bool, shell_dofs_per_node> held{};
     double* committed = nullptr;  ///< J2 parts: the layers' committed states (op's store)
     std::size_t trial = 0;        ///< offset of its trial states in trial_
+    /// finite rotations on a curved reference: the strains of the reference state
+    std::array<double, shell_strains> reference{};
   };
   /// The edge point's strains at d, its resultants R and (when asked) their tangent S.
   /// With finite rotations (FlatShellOperator::finite_rotations) `fe` gets the point's
@@ -101,6 +103,8 @@ class ShellConstraints {
   template <class View>
   void edge_response(const Edge& e, const View& d, double (&R)[shell_strains], SectionTangent* S,
                      FiniteRotationPoint* fe = nullptr) const;
+  template <class View>
+  void edge_kinematics(const Edge& e, const View& d, FiniteRotationPoint& fe) const;
   /// The finite-rotation edge term's force -l phi_I T_c and its derivative (shells/
   /// FiniteRotation.hpp, finite_rotation_edge_reaction): T = t for translations, m . dd_I/dw
   /// for the rotation dofs of particle I.

@@ -1,0 +1,30 @@
+// A curved reference mid-surface by flattening (the seed's "global approach"; docs/shells.md,
+// "Curved references"): the part's 2D mesh is the surface unrolled, parts[].shell.reference maps
+// its (x, y) onto the surface, X = (X(x, y), Y(x, y), Z(x, y)). The shape functions, the SCNI
+// cells and their smoothed gradients stay those of the flat mesh; this is exact geometry when the
+// map is an isometry (x and y arc lengths along orthogonal lines, as the unrolling of a
+// developable surface: cylinders, cones), since then lengths and angles measured in (x, y) are
+// those on the surface and the Green-Lagrange strains in (x, y) are the physical ones. The map's
+// tangents come from central differences of the expressions.
+#pragma once
+
+#include <vector>
+
+#include "scene/Scene.hpp"
+#include "shells/FiniteRotation.hpp"
+
+namespace efg {
+
+/// The reference point of the surface over (x, y): its position and frame (t1 = dX/dx, t2 =
+/// dX/dy, t3 = t1 x t2, the director).
+struct ShellReferencePoint {
+  Vec3 position{};
+  ShellFrame frame;
+};
+
+/// `length`: the mesh's size (the difference step is 1e-6 of it). The scene's check has made
+/// sure that the map is an isometry at the particles (scene/ShellChecks).
+ShellReferencePoint shell_reference_at(const std::vector<ScalarField>& map, const double* xy,
+                                       double length);
+
+}  // namespace efg
