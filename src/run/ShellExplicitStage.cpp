@@ -81,7 +81,7 @@ ShellExplicitSummary run_shell_explicit_stage(const Model& model, const FlatShel
   const auto map = mass.getMap();
   Vector f_ext(map), f_ext_old(map), f_int(map), a(map), v_next(map), d_old(map), step(map),
       f_support(map), step_before(map);
-  const ShellEdgeLoads edge_loads(model, op, stage.name);
+  const ShellLineAndPointLoads edge_loads(model, op, stage.name);
   const bool follower = has_follower_pressure(scene, stage.name);
   const auto external_force = [&](double t, Vector& f) {
     f.putScalar(0.0);

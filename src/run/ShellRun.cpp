@@ -277,7 +277,7 @@ RunOutcome run_shell_stages(const CommPtr& comm, const Model& model, const std::
       const auto K = op.stiffness(constraints);
       FlatShellOperator::Vector f(op.maps().owned_dofs);
       op.add_pressure(shell_pressure_at(model, stage.name, r.time), f);
-      ShellEdgeLoads(model, op, stage.name).add(r.time, 1.0, f);
+      ShellLineAndPointLoads(model, op, stage.name).add(r.time, 1.0, f);
       constraints.set_values(f);
       const auto lu = make_direct_preconditioner(Teuchos::ParameterList());
       lu->set_map(op.maps().owned_dofs);

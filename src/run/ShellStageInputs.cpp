@@ -1,7 +1,9 @@
 #include "run/ShellStageInputs.hpp"
 
 #include "core/Errors.hpp"
+#include "discretization/ShapeFunctions.hpp"
 #include "model/Curves.hpp"
+#include "model/PointOwner.hpp"
 
 namespace efg {
 namespace {
@@ -67,7 +69,7 @@ FlatShellOperator::Pressure shell_pressure_at(const Model& model, const std::str
   };
 }
 
-ShellEdgeLoads::ShellEdgeLoads(const Model& model, const FlatShellOperator& op,
+ShellLineAndPointLoads::ShellLineAndPointLoads(const Model& model, const FlatShellOperator& op,
                                const std::string& stage)
     : model_(model), op_(op), stage_(stage) {
   for (const auto& l : model.scene.loads) {
@@ -78,10 +80,27 @@ ShellEdgeLoads::ShellEdgeLoads(const Model& model, const FlatShellOperator& op,
       throw InputError(model.scene.file + ": load '" + l.name + "': node set '" + l.set +
                        "' covers no edge of a shell part");
   }
+  for (const auto& l : model.scene.loads) {
+    if (l.type != "shell_point_load" || !l.stages.includes(stage)) continue;
+    PointLoad p{&l, {}, {}};
+    const int part = evaluating_part(model, l.point.data());
+    if (part >= 0) {
+      const auto& cloud = model.parts[static_cast<std::size_t>(part)].cloud;
+      const auto v = evaluate_shape_functions(cloud, l.point.data(), 1, false, [&](std::size_t) {
+        return "load '" + l.name + "' (shell_point_load)";
+      });
+      for (auto k = v.neighbors.offsets[0]; k < v.neighbors.offsets[1]; ++k) {
+        const auto node = cloud.mesh_node[static_cast<std::size_t>(v.neighbors.particles[k])];
+        p.node.push_back(op.maps().overlap_nodes->getLocalElement(static_cast<GlobalOrdinal>(node)));
+        p.phi.push_back(v.phi[k]);
+      }
+    }
+    points_.push_back(std::move(p));
+  }
 }
 
-void ShellEdgeLoads::add(double time, double ramp, FlatShellOperator::Vector& f_owned) const {
-  if (loads_.empty()) return;
+void ShellLineAndPointLoads::add(double time, double ramp, FlatShellOperator::Vector& f_owned) const {
+  if (empty()) return;
   const auto factor = curve_factor(model_.scene, time, ramp, stage_);
   FlatShellOperator::Vector f_overlap(op_.maps().overlap_dofs);
   {
@@ -99,6 +118,15 @@ void ShellEdgeLoads::add(double time, double ramp, FlatShellOperator::Vector& f_
           for (std::size_t c = 0; c < nd; ++c) f(lid * nd + c, 0) += p.length * p.phi[a] * q[c];
         }
       }
+    }
+    for (const auto& p : points_) {
+      if (p.node.empty()) continue;
+      const double scale = factor(p.load->curve);
+      double q[nd];
+      for (std::size_t c = 0; c < nd; ++c) q[c] = scale * p.load->value[c].at(p.load->point.data(), time);
+      for (std::size_t a = 0; a < p.node.size(); ++a)
+        for (std::size_t c = 0; c < nd; ++c)
+          f(static_cast<std::size_t>(p.node[a]) * nd + c, 0) += p.phi[a] * q[c];
     }
   }
   op_.add_overlap(f_overlap, f_owned);

@@ -30,22 +30,31 @@ FlatShellOperator::Pressure shell_pressure_at(const Model& model, const std::str
 /// Whether a follower shell_pressure is active in `stage`.
 bool has_follower_pressure(const Scene& scene, const std::string& stage);
 
-/// The shell_edge_load line loads active in a stage: their edge points (the SCNI boundary
-/// quadrature of shells/ShellBoundary.hpp) found once, the loads added at any time.
-class ShellEdgeLoads {
+/// The shell_edge_load line loads and shell_point_load point loads active in a stage: their
+/// edge points (the SCNI boundary quadrature of shells/ShellBoundary.hpp) and the points' shape
+/// functions (on the rank that evaluates each point, model/PointOwner) found once, the loads
+/// added at any time.
+class ShellLineAndPointLoads {
  public:
-  ShellEdgeLoads(const Model& model, const FlatShellOperator& op, const std::string& stage);
-  /// f_(I,c) += sum_e l_e phi_I(X_e) s q_c(X_e, t) (owned dofs), s the load's curve factor at
-  /// `time` (without a curve: `ramp`). Components: forces along x, y, z, moments about the
-  /// rotation dofs' axes.
+  ShellLineAndPointLoads(const Model& model, const FlatShellOperator& op, const std::string& stage);
+  /// f_(I,c) += sum_e l_e phi_I(X_e) s q_c(X_e, t) for the line loads and phi_I(X_P) s Q_c(t)
+  /// for the point loads (owned dofs), s the load's curve factor at `time` (without a curve:
+  /// `ramp`). Components: forces along x, y, z, moments about the rotation dofs' axes.
   void add(double time, double ramp, FlatShellOperator::Vector& f_owned) const;
-  bool empty() const { return loads_.empty(); }
+  bool empty() const { return loads_.empty() && points_.empty(); }
 
  private:
   const Model& model_;
   const FlatShellOperator& op_;
   std::string stage_;
   std::vector<std::pair<const LoadSpec*, std::vector<ShellEdgePoint>>> loads_;
+  struct PointLoad {
+    const LoadSpec* load;
+    std::vector<int> node;  ///< overlap particles reaching the point (this rank: empty unless
+                            ///< it evaluates the point)
+    std::vector<double> phi;
+  };
+  std::vector<PointLoad> points_;
 };
 
 }  // namespace efg

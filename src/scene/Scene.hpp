@@ -120,6 +120,7 @@ struct LoadSpec {
   std::vector<ScalarField> value;  ///< traction, body force, pressure: may vary in x, y, z, t
   bool from_exact = false;  ///< traction or body force from the verification block's exact solution
   bool follower = false;    ///< shell_pressure: along the deformed normal (finite rotations)
+  std::array<double, 3> point{0, 0, 0};  ///< shell_point_load: where it acts
   std::string curve;
   ActiveStages stages;
 };

@@ -116,7 +116,7 @@ class Checker {
         require_nodes(ld["node_set"], path + ".node_set", load.set);
       }
       if (load.type != "pressure" && load.type != "shell_pressure" &&
-          load.type != "shell_edge_load" && !load.from_exact)
+          load.type != "shell_edge_load" && load.type != "shell_point_load" && !load.from_exact)
         require_dimension(ld["value"], path + ".value", load.value.size());
     }
     for (std::size_t i = 0; i < s_.rigid_walls.size(); ++i) {

@@ -300,6 +300,9 @@ class SceneBuilder {
               : std::vector<ScalarField>{field(l["value"], doc["value"], path + ".value", varying)};
     load.from_exact = l["from_exact_solution"] && l["from_exact_solution"].as<bool>();
     load.follower = l["follower"] && l["follower"].as<bool>();
+    if (l["point"])
+      for (std::size_t k = 0; k < l["point"].size() && k < 3; ++k)
+        load.point[k] = l["point"][k].as<double>();
     if ((load.type == "traction" || load.type == "body_force") &&
         load.from_exact == !load.value.empty())
       fail(doc, path, "expected exactly one of value, from_exact_solution: true");

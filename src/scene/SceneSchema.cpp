@@ -208,7 +208,7 @@ SpecPtr load_spec() {
       .required("name", string("Load name, unique."))
       .required("type", choice("Kind of load.", {"traction", "pressure", "nodal_force",
                                                  "body_force", "shell_pressure",
-                                                 "shell_edge_load"}))
+                                                 "shell_edge_load", "shell_point_load"}))
       .optional("stages", string_list("Stages the load acts in (names of stages); every stage "
                                       "when omitted.")
                               .items(1, 1000))
@@ -247,7 +247,8 @@ SpecPtr load_spec() {
                                  .varying(ExpressionVariables::position_and_time)),
                 exact, curve})
       .variant("shell_pressure", shell_pressure_keys())
-      .variant("shell_edge_load", shell_edge_load_keys());
+      .variant("shell_edge_load", shell_edge_load_keys())
+      .variant("shell_point_load", shell_point_load_keys());
 }
 
 SpecPtr initial_condition_spec() {

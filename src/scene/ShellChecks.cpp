@@ -77,7 +77,8 @@ void check_solid_scene(const Scene& s) {
            "resultants (forces and moments per unit length) are shell fields, and no part of "
            "this scene is a shell; expected stress or strain");
   for (std::size_t i = 0; i < s.loads.size(); ++i)
-    if (s.loads[i].type == "shell_pressure" || s.loads[i].type == "shell_edge_load")
+    if (s.loads[i].type == "shell_pressure" || s.loads[i].type == "shell_edge_load" ||
+        s.loads[i].type == "shell_point_load")
       fail(s, d["loads"][i]["type"], "loads[" + std::to_string(i) + "].type",
            s.loads[i].type +
                " loads shell parts, and no part of this scene is a shell; expected pressure, "
@@ -169,9 +170,11 @@ void check_shell_scene(const Scene& s, const BackgroundMesh& mesh) {
            "a follower pressure needs finite rotations (the shell parts' section.formulation: "
            "total_lagrangian); with small rotations the deformed normal is +z: expected false");
   for (std::size_t i = 0; i < s.loads.size(); ++i)
-    if (s.loads[i].type != "shell_pressure" && s.loads[i].type != "shell_edge_load")
+    if (s.loads[i].type != "shell_pressure" && s.loads[i].type != "shell_edge_load" &&
+        s.loads[i].type != "shell_point_load")
       fail(s, d["loads"][i]["type"], "loads[" + std::to_string(i) + "].type",
-           "shell parts take shell_pressure and shell_edge_load loads in this version");
+           "shell parts take shell_pressure, shell_edge_load and shell_point_load loads in this "
+           "version");
   const std::pair<bool, const char*> unsupported[] = {
       {!s.initial_conditions.empty(), "initial_conditions"},
       {s.initial_state.has_value(), "initial_state"},

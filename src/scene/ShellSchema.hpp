@@ -15,5 +15,7 @@ std::vector<schema::Key> rotation_keys();
 std::vector<schema::Key> shell_pressure_keys();
 /// The keys of loads of type shell_edge_load (line forces and moments on an edge).
 std::vector<schema::Key> shell_edge_load_keys();
+/// The keys of loads of type shell_point_load (a force and moment at a point).
+std::vector<schema::Key> shell_point_load_keys();
 
 }  // namespace efg

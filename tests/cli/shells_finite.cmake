@@ -80,7 +80,7 @@ add_test(NAME cli.shell_follower_check COMMAND /usr/bin/python3
 set_tests_properties(cli.shell_follower_check PROPERTIES LABELS cli
   FIXTURES_REQUIRED "shell_follower_pressure;shell_dead_pressure")
 # Curved references: the Scordelis-Lo roof on four levels against 0.3024
-# (tests/cli/check_shell_scordelis.py), 1 vs 2 ranks on 16 x 16 (1e-6: Newton ends at the
+# (tests/cli/check_shell_obstacle.py), 1 vs 2 ranks on 16 x 16 (1e-6: Newton ends at the
 # round-off floor of the internal force, 2e-6 of the residual's start under the load scaled by
 # 1e-4; the displacements agree to 3e-11, the twisting moment on the symmetry line to 1.6e-7).
 file(READ ${PROJECT_SOURCE_DIR}/tests/scenes/shells/scordelis_lo.yaml roof)
@@ -96,7 +96,7 @@ foreach(cells 8 12 16 24)
   list(APPEND roof_results ${dir}/scordelis_lo_${cells}.e)
 endforeach()
 add_test(NAME cli.shell_scordelis_check COMMAND /usr/bin/python3
-  ${CMAKE_CURRENT_SOURCE_DIR}/check_shell_scordelis.py ${roof_results})
+  ${CMAKE_CURRENT_SOURCE_DIR}/check_shell_obstacle.py roof ${roof_results})
 set_tests_properties(cli.shell_scordelis_check PROPERTIES LABELS cli
   FIXTURES_REQUIRED "shell_scordelis_8;shell_scordelis_12;shell_scordelis_16;shell_scordelis_24")
 foreach(ranks 1 2)
@@ -108,3 +108,20 @@ foreach(ranks 1 2)
   set_tests_properties(cli.shell_scordelis_np${ranks} PROPERTIES FIXTURES_SETUP shell_scordelis_np${ranks})
 endforeach()
 efg_shell_same_on_ranks(shell_scordelis scordelis_lo.e 1e-6 displacement_x displacement_z)
+# The pinched cylinder on four levels against 1.8248e-5 (a point load, shell_point_load).
+file(READ ${PROJECT_SOURCE_DIR}/tests/scenes/shells/pinched_cylinder.yaml pinched)
+set(pinched_results "")
+foreach(cells 8 16 24 32)
+  string(REPLACE "cells: [16, 16]" "cells: [${cells}, ${cells}]" level "${pinched}")
+  file(WRITE ${CMAKE_CURRENT_BINARY_DIR}/pinched_cylinder_${cells}.yaml "${level}")
+  set(dir ${EFG_CLI_TMP}/shell_pinched_${cells})
+  efg_cli_test(NAME cli.shell_pinched_${cells}
+    COMMAND "${efg}|run|${CMAKE_CURRENT_BINARY_DIR}/pinched_cylinder_${cells}.yaml|-o|${dir}"
+    EXIT 0 TEXT "stage 'load' done: 1 steps, 0 cutbacks" FILE ${dir}/pinched_cylinder_${cells}.e)
+  set_tests_properties(cli.shell_pinched_${cells} PROPERTIES FIXTURES_SETUP shell_pinched_${cells})
+  list(APPEND pinched_results ${dir}/pinched_cylinder_${cells}.e)
+endforeach()
+add_test(NAME cli.shell_pinched_check COMMAND /usr/bin/python3
+  ${CMAKE_CURRENT_SOURCE_DIR}/check_shell_obstacle.py pinched ${pinched_results})
+set_tests_properties(cli.shell_pinched_check PROPERTIES LABELS cli
+  FIXTURES_REQUIRED "shell_pinched_8;shell_pinched_16;shell_pinched_24;shell_pinched_32")
