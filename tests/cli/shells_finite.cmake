@@ -125,3 +125,13 @@ add_test(NAME cli.shell_pinched_check COMMAND /usr/bin/python3
   ${CMAKE_CURRENT_SOURCE_DIR}/check_shell_obstacle.py pinched ${pinched_results})
 set_tests_properties(cli.shell_pinched_check PROPERTIES LABELS cli
   FIXTURES_REQUIRED "shell_pinched_8;shell_pinched_16;shell_pinched_24;shell_pinched_32")
+# 1 vs 2 ranks on 16 x 16: the point load applied by the rank that evaluates its point.
+foreach(ranks 1 2)
+  efg_launcher(launcher ${ranks})
+  set(dir ${EFG_CLI_TMP}/shell_pinched_np${ranks})
+  efg_cli_test(NAME cli.shell_pinched_np${ranks}
+    COMMAND "${launcher}|run|tests/scenes/shells/pinched_cylinder.yaml|-o|${dir}"
+    EXIT 0 TEXT "stage 'load' done" FILE ${dir}/history.csv RANKS ${ranks})
+  set_tests_properties(cli.shell_pinched_np${ranks} PROPERTIES FIXTURES_SETUP shell_pinched_np${ranks})
+endforeach()
+efg_shell_same_on_ranks(shell_pinched pinched_cylinder.e 1e-9 displacement_x displacement_z)
