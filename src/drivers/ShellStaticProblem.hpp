@@ -66,7 +66,7 @@ class ShellStaticProblem : public NonlinearProblem {
   Vector f_ext_, d_overlap_;
   std::vector<double> values_;  ///< the supports' values, collocation rows' order
   double external_norm_ = 0, internal_norm_ = 0;
-  std::unique_ptr<Vector> released_;  ///< springback: r(d0) on the free rows (null: none)
+  std::unique_ptr<Vector> released_;      ///< springback: r(d0) on the free rows (null: none)
   FlatShellOperator::Pressure follower_;  ///< the level's follower pressure (empty: none)
   double remaining_ = 0;
 };

@@ -87,7 +87,8 @@ ShellExplicitSummary run_shell_explicit_stage(const Model& model, const FlatShel
     f.putScalar(0.0);
     op.add_pressure(shell_pressure_at(model, stage.name, t), f);
     edge_loads.add(t, 1.0, f);
-    if (follower) op.add_follower_pressure(shell_pressure_at(model, stage.name, t, 1.0, true), d, f);
+    if (follower)
+      op.add_follower_pressure(shell_pressure_at(model, stage.name, t, 1.0, true), d, f);
   };
   const auto accelerate = [&](const Vector& f, Vector& acc) {
     op.internal_force(d, f_int);

@@ -178,8 +178,7 @@ RunOutcome run_shell_stages(const CommPtr& comm, const Model& model, const std::
                     const std::vector<double>& forces) {
     const auto values = op.physical_values(d);
     // (J2 parts' probes read the points' resultants too)
-    const bool plastic_probes =
-        (op.plastic() || op.finite_rotations()) && !scene.probes.empty();
+    const bool plastic_probes = (op.plastic() || op.finite_rotations()) && !scene.probes.empty();
     std::vector<double> resultants;
     if (with_resultants || plastic_probes) resultants = op.resultants(d);
     const auto stresses = with_stress ? op.surface_stresses(d) : std::vector<double>{};

@@ -70,7 +70,7 @@ FlatShellOperator::Pressure shell_pressure_at(const Model& model, const std::str
 }
 
 ShellLineAndPointLoads::ShellLineAndPointLoads(const Model& model, const FlatShellOperator& op,
-                               const std::string& stage)
+                                               const std::string& stage)
     : model_(model), op_(op), stage_(stage) {
   for (const auto& l : model.scene.loads) {
     if (l.type != "shell_edge_load" || !l.stages.includes(stage)) continue;
@@ -91,7 +91,8 @@ ShellLineAndPointLoads::ShellLineAndPointLoads(const Model& model, const FlatShe
       });
       for (auto k = v.neighbors.offsets[0]; k < v.neighbors.offsets[1]; ++k) {
         const auto node = cloud.mesh_node[static_cast<std::size_t>(v.neighbors.particles[k])];
-        p.node.push_back(op.maps().overlap_nodes->getLocalElement(static_cast<GlobalOrdinal>(node)));
+        p.node.push_back(
+            op.maps().overlap_nodes->getLocalElement(static_cast<GlobalOrdinal>(node)));
         p.phi.push_back(v.phi[k]);
       }
     }
@@ -99,7 +100,8 @@ ShellLineAndPointLoads::ShellLineAndPointLoads(const Model& model, const FlatShe
   }
 }
 
-void ShellLineAndPointLoads::add(double time, double ramp, FlatShellOperator::Vector& f_owned) const {
+void ShellLineAndPointLoads::add(double time, double ramp,
+                                 FlatShellOperator::Vector& f_owned) const {
   if (empty()) return;
   const auto factor = curve_factor(model_.scene, time, ramp, stage_);
   FlatShellOperator::Vector f_overlap(op_.maps().overlap_dofs);
@@ -123,7 +125,8 @@ void ShellLineAndPointLoads::add(double time, double ramp, FlatShellOperator::Ve
       if (p.node.empty()) continue;
       const double scale = factor(p.load->curve);
       double q[nd];
-      for (std::size_t c = 0; c < nd; ++c) q[c] = scale * p.load->value[c].at(p.load->point.data(), time);
+      for (std::size_t c = 0; c < nd; ++c)
+        q[c] = scale * p.load->value[c].at(p.load->point.data(), time);
       for (std::size_t a = 0; a < p.node.size(); ++a)
         for (std::size_t c = 0; c < nd; ++c)
           f(static_cast<std::size_t>(p.node[a]) * nd + c, 0) += p.phi[a] * q[c];

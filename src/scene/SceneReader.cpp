@@ -155,9 +155,9 @@ class SceneBuilder {
     part.plane_stress = p["plane"].as<std::string>() == "stress";
     if (p["formulation"].as<std::string>() == "mixed_up")
       part.formulation = PartFormulation::mixed_up;
-    if (const auto& sh = p["shell"]; sh)
-    {
-      part.shell = ShellSpec{sh["thickness"].as<double>(), sh["thickness_points"].as<int>(),
+    if (const auto& sh = p["shell"]; sh) {
+      part.shell = ShellSpec{sh["thickness"].as<double>(),
+                             sh["thickness_points"].as<int>(),
                              sh["shear_stabilization"].as<double>(),
                              {}};
       if (const auto& r = sh["reference"]; r)

@@ -206,9 +206,9 @@ SpecPtr load_spec() {
                             "false");
   return map("An external load. Keys after type depend on the type.")
       .required("name", string("Load name, unique."))
-      .required("type", choice("Kind of load.", {"traction", "pressure", "nodal_force",
-                                                 "body_force", "shell_pressure",
-                                                 "shell_edge_load", "shell_point_load"}))
+      .required("type",
+                choice("Kind of load.", {"traction", "pressure", "nodal_force", "body_force",
+                                         "shell_pressure", "shell_edge_load", "shell_point_load"}))
       .optional("stages", string_list("Stages the load acts in (names of stages); every stage "
                                       "when omitted.")
                               .items(1, 1000))

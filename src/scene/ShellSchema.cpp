@@ -33,10 +33,12 @@ SpecPtr shell_spec() {
               "lengths along orthogonal lines: a developable surface such as a cylinder or a "
               "cone, checked at the particles); needs section.formulation: total_lagrangian. "
               "See docs/shells.md, \"Curved references\".")
-              .required("x", real("X of the surface point.", "length")
-                                 .varying(ExpressionVariables::position))
-              .required("y", real("Y of the surface point.", "length")
-                                 .varying(ExpressionVariables::position))
+              .required(
+                  "x",
+                  real("X of the surface point.", "length").varying(ExpressionVariables::position))
+              .required(
+                  "y",
+                  real("Y of the surface point.", "length").varying(ExpressionVariables::position))
               .required("z", real("Z of the surface point.", "length")
                                  .varying(ExpressionVariables::position)));
 }
@@ -66,21 +68,21 @@ std::vector<Key> shell_pressure_keys() {
 }
 
 std::vector<Key> shell_point_load_keys() {
-  return {required_key("point",
-                       real_list("Where the load acts on the mid-surface (x, y of the 2D mesh: "
-                                 "on a curved reference, of the unrolled surface).",
-                                 "length")
-                           .items(2, 2)),
-          required_key(
-              "value",
-              real_list("Force along x, y, z and moment about the rotation dofs' axes at the "
-                        "point, applied as f_I = phi_I(point) value; each a number or an "
-                        "expression of t.",
-                        "force")
-                  .items(5, 5)
-                  .varying(ExpressionVariables::position_and_time)),
-          optional_key("curve", string("Name of a curve scaling the load over time; see the "
-                                       "stage drivers for what happens without one."))};
+  return {
+      required_key("point",
+                   real_list("Where the load acts on the mid-surface (x, y of the 2D mesh: "
+                             "on a curved reference, of the unrolled surface).",
+                             "length")
+                       .items(2, 2)),
+      required_key("value",
+                   real_list("Force along x, y, z and moment about the rotation dofs' axes at the "
+                             "point, applied as f_I = phi_I(point) value; each a number or an "
+                             "expression of t.",
+                             "force")
+                       .items(5, 5)
+                       .varying(ExpressionVariables::position_and_time)),
+      optional_key("curve", string("Name of a curve scaling the load over time; see the "
+                                   "stage drivers for what happens without one."))};
 }
 
 std::vector<Key> shell_edge_load_keys() {

@@ -7,7 +7,9 @@
 namespace efg {
 namespace {
 
-double dot(const Vec3& x, const Vec3& y) { return x[0] * y[0] + x[1] * y[1] + x[2] * y[2]; }
+double dot(const Vec3& x, const Vec3& y) {
+  return x[0] * y[0] + x[1] * y[1] + x[2] * y[2];
+}
 
 Vec3 cross(const Vec3& x, const Vec3& y) {
   return {x[1] * y[2] - x[2] * y[1], x[2] * y[0] - x[0] * y[2], x[0] * y[1] - x[1] * y[0]};
@@ -83,8 +85,7 @@ void director_rotation(const Vec3& d, double& rx, double& ry) {
   director_rotation({0, 0, 1}, d, {1, 0, 0}, rx, ry);
 }
 
-void director_rotation(const Vec3& from, const Vec3& to, const Vec3& axis, double& rx,
-                       double& ry) {
+void director_rotation(const Vec3& from, const Vec3& to, const Vec3& axis, double& rx, double& ry) {
   Vec3 t3 = from, t1 = axis;
   axpy(1.0 / std::sqrt(dot(t3, t3)) - 1.0, t3, t3);
   axpy(-dot(t1, t3), t3, t1);
@@ -208,10 +209,10 @@ void finite_rotation_edge_reaction_change(const ShellPointGeometry& G,
   const double n0 = normal[0], n1 = normal[1];
   const double* g = n.g;
   if (c < shell_rx) {  // dF_a = g_a e_c
-    dt[static_cast<std::size_t>(c)] += n0 * (R[0] * g[0] + R[2] * g[1]) +
-                                       n1 * (R[1] * g[1] + R[2] * g[0]);
-    dm[static_cast<std::size_t>(c)] += n0 * (R[3] * g[0] + R[5] * g[1]) +
-                                       n1 * (R[4] * g[1] + R[5] * g[0]);
+    dt[static_cast<std::size_t>(c)] +=
+        n0 * (R[0] * g[0] + R[2] * g[1]) + n1 * (R[1] * g[1] + R[2] * g[0]);
+    dm[static_cast<std::size_t>(c)] +=
+        n0 * (R[3] * g[0] + R[5] * g[1]) + n1 * (R[4] * g[1] + R[5] * g[0]);
     return;
   }
   // dD_a = g_a T, dd = phi T

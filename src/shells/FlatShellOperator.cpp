@@ -193,7 +193,8 @@ std::vector<double> FlatShellOperator::point_stiffness(const Point& p, const Sec
     for (std::size_t b = 0; b < n; ++b) {
       finite_rotation_geometric(fp->geometry, resultants, fp->nodes[a], fp->nodes[b], a == b, G);
       for (std::size_t c = 0; c < nd; ++c)
-        for (std::size_t e = 0; e < nd; ++e) K[(a * nd + c) * cols + b * nd + e] += p.weight * G[c][e];
+        for (std::size_t e = 0; e < nd; ++e)
+          K[(a * nd + c) * cols + b * nd + e] += p.weight * G[c][e];
     }
   return K;
 }

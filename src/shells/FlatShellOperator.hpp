@@ -137,10 +137,7 @@ class FlatShellOperator {
     Vec3 u = {d(k, 0), d(k + 1, 0), d(k + 2, 0)};
     if (curved_)  // the reference surface's offset from the flat mesh
       for (std::size_t c = 0; c < 3; ++c) u[c] += offset_[static_cast<std::size_t>(node)][c];
-    return {b,
-            g,
-            phi,
-            u,
+    return {b, g, phi, u,
             node_director(frames_[static_cast<std::size_t>(node)], d(k + shell_rx, 0),
                           d(k + shell_ry, 0))};
   }
@@ -214,8 +211,8 @@ class FlatShellOperator {
   Vector to_overlap(const Vector& d_owned) const;
   /// Adds -d/dd of the point's follower pressure force (cols: the point's overlap dofs).
   template <class View>
-  void add_follower_stiffness(std::size_t part, const Point& p, const View& d,
-                              const Pressure& q, const std::vector<int>& cols, Matrix& K) const;
+  void add_follower_stiffness(std::size_t part, const Point& p, const View& d, const Pressure& q,
+                              const std::vector<int>& cols, Matrix& K) const;
   /// The direct gradients f_1, f_2 of the mid-surface map x = X + u at a point.
   template <class View>
   void surface_tangents(const Point& p, const View& d, Vec3 (&f)[2]) const;
@@ -245,7 +242,7 @@ class FlatShellOperator {
   mutable std::vector<std::vector<double>> committed_, trial_;
   mutable bool elastic_probe_ = false;
   bool finite_ = false, curved_ = false;
-  mutable std::vector<ShellFrame> frames_;  ///< per overlap particle (finite rotations)
+  mutable std::vector<ShellFrame> frames_;    ///< per overlap particle (finite rotations)
   std::vector<ShellFrame> reference_frames_;  ///< per overlap particle: the frames at the start
   std::vector<Vec3> offset_;  ///< per overlap particle: reference position - flat mesh position
   mutable std::map<std::string, std::vector<double>> edge_history_;
@@ -261,8 +258,9 @@ void FlatShellOperator::physical_rotation(const int* nodes, const double* phi, s
   Vec3 now{}, then{}, axis{};
   for (std::size_t k = 0; k < n; ++k) {
     const auto lid = static_cast<std::size_t>(nodes[k]);
-    const auto dI =
-        node_director(frames_[lid], d(lid * shell_dofs_per_node + shell_rx, 0), d(lid * shell_dofs_per_node + shell_ry, 0)).d;
+    const auto dI = node_director(frames_[lid], d(lid * shell_dofs_per_node + shell_rx, 0),
+                                  d(lid * shell_dofs_per_node + shell_ry, 0))
+                        .d;
     for (std::size_t c = 0; c < 3; ++c) {
       now[c] += phi[k] * dI[c];
       then[c] += phi[k] * reference_frames_[lid].t3[c];

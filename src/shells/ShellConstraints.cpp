@@ -9,7 +9,9 @@
 namespace efg {
 namespace {
 constexpr int nd = shell_dofs_per_node;
-double dot3(const Vec3& x, const Vec3& y) { return x[0] * y[0] + x[1] * y[1] + x[2] * y[2]; }
+double dot3(const Vec3& x, const Vec3& y) {
+  return x[0] * y[0] + x[1] * y[1] + x[2] * y[2];
+}
 }  // namespace
 
 ShellConstraints::ShellConstraints(const Model& model, const FlatShellOperator& op,

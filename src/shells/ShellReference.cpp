@@ -2,7 +2,6 @@
 
 #include <cmath>
 
-
 namespace efg {
 namespace {
 
@@ -11,7 +10,9 @@ Vec3 evaluate(const std::vector<ScalarField>& map, double x, double y) {
   return {map[0].at(p, 0.0), map[1].at(p, 0.0), map[2].at(p, 0.0)};
 }
 
-double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+double dot(const Vec3& a, const Vec3& b) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
 
 }  // namespace
 

@@ -15,7 +15,9 @@ namespace {
 constexpr int nd = shell_dofs_per_node;
 constexpr double pi = 3.14159265358979323846;
 
-double dot(const Vec3& x, const Vec3& y) { return x[0] * y[0] + x[1] * y[1] + x[2] * y[2]; }
+double dot(const Vec3& x, const Vec3& y) {
+  return x[0] * y[0] + x[1] * y[1] + x[2] * y[2];
+}
 
 // A frame turned away from the reference (two accepted rotations).
 ShellFrame turned_frame() {
@@ -83,15 +85,15 @@ struct ThreePoint {
   std::vector<double> phi = {0.3, 0.5, 0.2};
   std::vector<ShellFrame> frames = {ShellFrame{}, turned_frame(), ShellFrame{}};
   std::vector<double> q = {0.1, -0.2, 0.3,  0.2,  -0.4, -0.1, 0.05, 0.2,
-                           0.6, 1.3, 0.15, -0.1, -0.2, 0.4,  -0.7};
+                           0.6, 1.3,  0.15, -0.1, -0.2, 0.4,  -0.7};
 
   FiniteRotationPoint point(const std::vector<double>& dofs) const {
     FiniteRotationPoint p;
     p.geometry = reference_geometry();
     for (std::size_t a = 0; a < 3; ++a) {
       const double* x = &dofs[a * nd];
-      p.nodes.push_back({&b[2 * a], &g[2 * a], phi[a], {x[0], x[1], x[2]},
-                         node_director(frames[a], x[3], x[4])});
+      p.nodes.push_back(
+          {&b[2 * a], &g[2 * a], phi[a], {x[0], x[1], x[2]}, node_director(frames[a], x[3], x[4])});
       add_to_geometry(p.nodes.back(), p.geometry);
     }
     return p;
@@ -155,7 +157,8 @@ TEST(FiniteRotation, EdgeReactionChangeIsItsDerivative) {
   t.b = t.g;
   double C[shell_strains][shell_strains];
   for (int i = 0; i < shell_strains; ++i)
-    for (int j = 0; j < shell_strains; ++j) C[i][j] = (i == j ? 2.0 : 0.0) + 0.1 * std::sin(i + 3 * j);
+    for (int j = 0; j < shell_strains; ++j)
+      C[i][j] = (i == j ? 2.0 : 0.0) + 0.1 * std::sin(i + 3 * j);
   const double normal[2] = {0.6, -0.8};
   const auto reaction = [&](const std::vector<double>& dofs, Vec3& tr, Vec3& m) {
     const auto p = t.point(dofs);
