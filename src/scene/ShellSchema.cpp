@@ -5,11 +5,11 @@ namespace efg {
 using namespace schema;
 
 SpecPtr shell_spec() {
-  return map("The part is a Reissner-Mindlin shell whose mid-surface is the part's mesh: today a "
-             "flat shell in the x-y plane of a 2D mesh, small strain, linear elastic or J2 "
-             "through the thickness (implicit stages by Newton), implicit and explicit stages; "
-             "five dofs per particle (u, v, w and the rotations about x and y). See "
-             "docs/shells.md.")
+  return map("The part is a Reissner-Mindlin shell whose mid-surface is the part's 2D mesh, flat "
+             "in the x-y plane or mapped onto a developable surface (reference), small strain, "
+             "small or finite rotations (section.formulation), linear elastic or J2 through the "
+             "thickness, implicit and explicit stages; five dofs per particle (u, v, w and two "
+             "rotations). See docs/shells.md.")
       .required("thickness", real("Shell thickness.", "length").above(0))
       .optional("thickness_points",
                 integer("Gauss points through the thickness (2 integrate an elastic section "
