@@ -22,6 +22,7 @@
 #include "run/ShellImplicitStage.hpp"
 #include "run/ShellStageInputs.hpp"
 #include "shells/ShellConstraints.hpp"
+#include "shells/ShellReference.hpp"
 #include "solvers/MatrixPreconditioner.hpp"
 
 namespace efg {
@@ -167,7 +168,9 @@ RunOutcome run_shell_stages(const CommPtr& comm, const Model& model, const std::
   // Per condition, its place among those active in the stage being run (-1: not active there):
   // the stage's support forces come 5 per active condition, in the scene's order.
   std::vector<int> place_in_stage(scene.boundary_conditions.size(), -1);
-  ResultsOutput output(comm, path, model.mesh, model.maps.owned_nodes, layout,
+  // curved references: the results show the curved surface (a 3D mesh of the mapped nodes)
+  const auto shown = op.curved() ? shell_reference_mesh(model) : BackgroundMesh{};
+  ResultsOutput output(comm, path, op.curved() ? shown : model.mesh, model.maps.owned_nodes, layout,
                        scene.title.empty() ? scene.name : scene.title);
   const auto volume = lumped_nodal_volumes(model.mesh);
   std::vector<std::vector<double>> history;

@@ -1,5 +1,6 @@
 #include "shells/ShellReference.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace efg {
@@ -39,6 +40,33 @@ ShellReferencePoint shell_reference_at(const std::vector<ScalarField>& map, cons
   r.frame.t2 = {t3[1] * t[0][2] - t3[2] * t[0][1], t3[2] * t[0][0] - t3[0] * t[0][2],
                 t3[0] * t[0][1] - t3[1] * t[0][0]};
   return r;
+}
+
+BackgroundMesh shell_reference_mesh(const Model& model) {
+  const auto& flat = model.mesh;
+  BackgroundMesh shown;
+  shown.dimension = 3;
+  shown.blocks = flat.blocks;
+  shown.node_sets = flat.node_sets;
+  shown.source = flat.source;
+  const std::size_t nodes = flat.node_count();
+  shown.coordinates.assign(3 * nodes, 0.0);
+  for (std::size_t n = 0; n < nodes; ++n)
+    for (std::size_t c = 0; c < 2; ++c) shown.coordinates[3 * n + c] = flat.coordinates[2 * n + c];
+  for (const auto& part : model.scene.parts) {
+    if (!part.shell || part.shell->reference.empty()) continue;
+    for (const auto& block : flat.blocks) {
+      if (std::find(part.blocks.begin(), part.blocks.end(), block.name) == part.blocks.end())
+        continue;
+      for (auto node : block.connectivity) {
+        const auto n = static_cast<std::size_t>(node);
+        const double p[3] = {flat.coordinates[2 * n], flat.coordinates[2 * n + 1], 0.0};
+        for (std::size_t c = 0; c < 3; ++c)
+          shown.coordinates[3 * n + c] = part.shell->reference[c].at(p, 0.0);
+      }
+    }
+  }
+  return shown;
 }
 
 }  // namespace efg

@@ -10,6 +10,7 @@
 
 #include <vector>
 
+#include "model/Model.hpp"
 #include "scene/Scene.hpp"
 #include "shells/FiniteRotation.hpp"
 
@@ -26,5 +27,11 @@ struct ShellReferencePoint {
 /// sure that the map is an isometry at the particles (scene/ShellChecks).
 ShellReferencePoint shell_reference_at(const std::vector<ScalarField>& map, const double* xy,
                                        double length);
+
+/// The mesh as the results show it when a part has a curved reference: 3D, the nodes of such
+/// parts at their mapped positions (the others at (x, y, 0)), without side sets (edges of 2D
+/// cells; shells use node sets). ParaView then shows the curved surface, and the displacements
+/// (from the reference) warp it.
+BackgroundMesh shell_reference_mesh(const Model& model);
 
 }  // namespace efg

@@ -6,7 +6,8 @@ against its reference value; the table of error and run time per level is printe
 roof: the Scordelis-Lo roof (tests/scenes/shells/scordelis_lo.yaml) on 8, 12, 16 and 24 cells
 per side: the vertical displacement at the middle of the free edge, scaled back from the load
 factor 1e-4, against 0.3024 (MacNeal & Harder 1985). Checked: within 2 % on 16 x 16 and 1 % on
-24 x 24, the error falling from 12 to 16 to 24.
+24 x 24, the error falling from 12 to 16 to 24; the results show the curved roof (a 3D Exodus
+mesh, every node on the cylinder x^2 + (z + R)^2 = R^2 to 1e-9 R).
 pinched: the pinched cylinder (tests/scenes/shells/pinched_cylinder.yaml) on 8, 16, 24 and 32
 cells per side: the radial displacement under the load against 1.8248e-5 (Belytschko et al.
 1985). Checked: within 3 % on 24 x 24 and 32 x 32, the error falling from 8 to 16 to 24 to 32.
@@ -14,6 +15,9 @@ usage: check_shell_obstacle.py roof|pinched LEVEL1.e LEVEL2.e LEVEL3.e LEVEL4.e
 """
 import json
 import sys
+
+import netCDF4
+import numpy as np
 
 CASES = {
     # probe column, sign and scale to the reference's, reference, levels, bounds per level
@@ -39,6 +43,16 @@ def main():
         [abs(err[c]) for c in levels]
     if any(a <= b for a, b in zip(falling, falling[1:])):
         errors.append("the error does not fall with refinement")
+    if sys.argv[1] == "roof":
+        f = netCDF4.Dataset(sys.argv[2])
+        x, z = np.asarray(f.variables["coordx"][:]), np.asarray(f.variables["coordz"][:]) \
+            if "coordz" in f.variables else np.zeros(1)
+        R = 25.0
+        off = np.abs(np.hypot(x, z + R) - R).max() / R if len(z) == len(x) else 1.0
+        print("results mesh: %dD, nodes off the cylinder by %.1e R"
+              % (f.dimensions["num_dim"].size, off))
+        if f.dimensions["num_dim"].size != 3 or off > 1e-9:
+            errors.append("the results do not show the curved roof")
     for e in errors:
         print("FAIL: " + e)
     sys.exit(1 if errors else 0)
