@@ -60,6 +60,25 @@ TEST(FiniteRotation, DirectorIsTheExponentialMapAndItsDerivativesAreExact) {
     }
 }
 
+TEST(FiniteRotation, PhysicalRotationRecoversTheRotationVectorInTheFrame) {
+  // The output rotation (director_rotation) of a director turned by w = a t1 + b t2 from any
+  // frame is (a, b) itself while |w| < pi (the exponential map's inverse on the director).
+  const ShellFrame frames[] = {ShellFrame{}, turned_frame()};
+  const double at[][2] = {{0.3, -0.2}, {-1.1, 2.0}, {1e-7, 3e-8}, {2.2, 1.9}};
+  for (const auto& f : frames)
+    for (const auto& w : at) {
+      double rx = 0, ry = 0;
+      director_rotation(f.t3, node_director(f, w[0], w[1]).d, f.t1, rx, ry);
+      EXPECT_NEAR(rx, w[0], 1e-12);
+      EXPECT_NEAR(ry, w[1], 1e-12);
+    }
+  // the flat form: E3 turned by 0.4 about x gives rx = 0.4
+  double rx = 0, ry = 0;
+  director_rotation(node_director(ShellFrame{}, 0.4, 0.0).d, rx, ry);
+  EXPECT_NEAR(rx, 0.4, 1e-14);
+  EXPECT_NEAR(ry, 0.0, 1e-14);
+}
+
 TEST(FiniteRotation, FrameUpdateCarriesTheDirectorAndStaysOrthonormal) {
   ShellFrame f = turned_frame();
   const auto expected = node_director(f, -0.8, 2.9).d;
