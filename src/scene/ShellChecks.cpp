@@ -8,6 +8,7 @@
 
 #include "core/Errors.hpp"
 #include "scene/SchemaValidator.hpp"
+#include "scene/ShellReferenceMap.hpp"
 
 namespace efg {
 namespace {
@@ -23,27 +24,14 @@ namespace {
 void check_isometry(const Scene& s, const BackgroundMesh& mesh, const PartSpec& part,
                     const YAML::Node& at, const std::string& path) {
   const auto& map = part.shell->reference;
-  double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
-  for (std::size_t i = 0; i < mesh.coordinates.size(); ++i) {
-    lo[i % 2] = std::min(lo[i % 2], mesh.coordinates[i]);
-    hi[i % 2] = std::max(hi[i % 2], mesh.coordinates[i]);
-  }
-  const double h = 1e-6 * std::hypot(hi[0] - lo[0], hi[1] - lo[1]);
-  const auto tangent = [&](const double* xy, int a) {
-    std::array<double, 3> t{};
-    for (int sign : {1, -1}) {
-      const double p[3] = {xy[0] + (a == 0 ? sign * h : 0.0), xy[1] + (a == 1 ? sign * h : 0.0),
-                           0.0};
-      for (std::size_t c = 0; c < 3; ++c) t[c] += sign * map[c].at(p, 0.0) / (2 * h);
-    }
-    return t;
-  };
+  const double h = shell_map_step(mesh);
   for (const auto& block : mesh.blocks) {
     if (std::find(part.blocks.begin(), part.blocks.end(), block.name) == part.blocks.end())
       continue;
     for (auto node : block.connectivity) {
       const double* xy = mesh.coordinates.data() + 2 * static_cast<std::size_t>(node);
-      const auto t1 = tangent(xy, 0), t2 = tangent(xy, 1);
+      const auto point = shell_map_point(map, xy, h);
+      const auto &t1 = point.tangent[0], &t2 = point.tangent[1];
       const double l1 = std::sqrt(t1[0] * t1[0] + t1[1] * t1[1] + t1[2] * t1[2]),
                    l2 = std::sqrt(t2[0] * t2[0] + t2[1] * t2[1] + t2[2] * t2[2]),
                    c = t1[0] * t2[0] + t1[1] * t2[1] + t1[2] * t2[2];

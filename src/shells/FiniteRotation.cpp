@@ -7,14 +7,6 @@
 namespace efg {
 namespace {
 
-double dot(const Vec3& x, const Vec3& y) {
-  return x[0] * y[0] + x[1] * y[1] + x[2] * y[2];
-}
-
-Vec3 cross(const Vec3& x, const Vec3& y) {
-  return {x[1] * y[2] - x[2] * y[1], x[2] * y[0] - x[0] * y[2], x[0] * y[1] - x[1] * y[0]};
-}
-
 void axpy(double s, const Vec3& x, Vec3& y) {
   for (int i = 0; i < 3; ++i) y[static_cast<std::size_t>(i)] += s * x[static_cast<std::size_t>(i)];
 }
@@ -79,10 +71,6 @@ void rotate_frame(ShellFrame& frame, double a, double b) {
   axpy(-dot(t1, t3), t3, t1);
   axpy(1.0 / std::sqrt(dot(t1, t1)) - 1.0, t1, t1);
   frame = {t1, cross(t3, t1), t3};
-}
-
-void director_rotation(const Vec3& d, double& rx, double& ry) {
-  director_rotation({0, 0, 1}, d, {1, 0, 0}, rx, ry);
 }
 
 void director_rotation(const Vec3& from, const Vec3& to, const Vec3& axis, double& rx, double& ry) {

@@ -41,6 +41,13 @@ namespace efg {
 
 using Vec3 = std::array<double, 3>;
 
+inline double dot(const Vec3& x, const Vec3& y) {
+  return x[0] * y[0] + x[1] * y[1] + x[2] * y[2];
+}
+inline Vec3 cross(const Vec3& x, const Vec3& y) {
+  return {x[1] * y[2] - x[2] * y[1], x[2] * y[0] - x[0] * y[2], x[0] * y[1] - x[1] * y[0]};
+}
+
 /// A particle's orthonormal frame: t3 the director, t1 and t2 the axes of its rotation dofs.
 struct ShellFrame {
   Vec3 t1{1, 0, 0}, t2{0, 1, 0}, t3{0, 0, 1};
@@ -58,12 +65,10 @@ NodeDirector node_director(const ShellFrame& frame, double a, double b);
 /// frame <- exp(a t1 + b t2) frame: the accepted rotation made the frame's own.
 void rotate_frame(ShellFrame& frame, double a, double b);
 
-/// The rotation (rx, ry) about x and y that turns the normal E3 into the direction of d: angle
-/// atan2(|E3 x d|, E3 . d) in [0, pi] about E3 x d (the linear shell's rotations for small ones).
-void director_rotation(const Vec3& d, double& rx, double& ry);
 /// The rotation turning the direction of `from` into that of `to` (angle in [0, pi] about
 /// from x to), as components about t1 and t2 of the frame of director `from` whose t1 is
-/// `axis` made orthogonal to it (the flat case: from = E3, axis = E1, as above).
+/// `axis` made orthogonal to it (the flat case: from = E3, axis = E1, the rotations about x and
+/// y of the linear shell for small ones).
 void director_rotation(const Vec3& from, const Vec3& to, const Vec3& axis, double& rx, double& ry);
 
 /// The point quantities F_a, D_a (smoothed), f_a (direct) and d.

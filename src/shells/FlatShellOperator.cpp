@@ -13,6 +13,7 @@
 #include "discretization/ShapeFunctions.hpp"
 #include "model/MaterialLaws.hpp"
 #include "operators/CouplingGraph.hpp"
+#include "scene/ShellReferenceMap.hpp"
 #include "shells/FlatShellPointLaw.hpp"
 #include "shells/ShellConstraints.hpp"
 #include "shells/ShellReference.hpp"
@@ -121,12 +122,7 @@ void FlatShellOperator::build_reference() {
                      ": a curved shell reference needs finite rotations (section.formulation: "
                      "total_lagrangian)");
   const auto& mesh = model_.mesh;
-  double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
-  for (std::size_t i = 0; i < mesh.coordinates.size(); ++i) {
-    lo[i % 2] = std::min(lo[i % 2], mesh.coordinates[i]);
-    hi[i % 2] = std::max(hi[i % 2], mesh.coordinates[i]);
-  }
-  const double length = std::hypot(hi[0] - lo[0], hi[1] - lo[1]);
+  const double step = shell_map_step(mesh);
   offset_.assign(frames_.size(), Vec3{});
   for (const auto& d : model_.parts) {
     const auto& map = d.part->shell ? d.part->shell->reference : std::vector<ScalarField>{};
@@ -135,7 +131,7 @@ void FlatShellOperator::build_reference() {
       const auto lid = static_cast<std::size_t>(
           maps_.overlap_nodes->getLocalElement(static_cast<GlobalOrdinal>(node)));
       const double* xy = mesh.coordinates.data() + 2 * static_cast<std::size_t>(node);
-      const auto r = shell_reference_at(map, xy, length);
+      const auto r = shell_reference_at(map, xy, step);
       offset_[lid] = {r.position[0] - xy[0], r.position[1] - xy[1], r.position[2]};
       frames_[lid] = reference_frames_[lid] = r.frame;
     }
@@ -291,10 +287,7 @@ void FlatShellOperator::add_follower_stiffness(std::size_t part, const Point& p,
         for (std::size_t l = 0; l < 3; ++l) {
           Vec3 e{};
           e[l] = 1;
-          const Vec3 x1 = {e[1] * f[1][2] - e[2] * f[1][1], e[2] * f[1][0] - e[0] * f[1][2],
-                           e[0] * f[1][1] - e[1] * f[1][0]};  // e_l x f2
-          const Vec3 x2 = {f[0][1] * e[2] - f[0][2] * e[1], f[0][2] * e[0] - f[0][0] * e[2],
-                           f[0][0] * e[1] - f[0][1] * e[0]};  // f1 x e_l
+          const Vec3 x1 = cross(e, f[1]), x2 = cross(f[0], e);  // e_l x f2, f1 x e_l
           row[b * nd + l] = -load * p.phi[a] * (p.g[2 * b] * x1[i] + p.g[2 * b + 1] * x2[i]);
         }
       K.sumIntoLocalValues(cols[a * nd + i], static_cast<int>(width), row.data(), cols.data());
@@ -314,9 +307,7 @@ void FlatShellOperator::add_follower_pressure(const Pressure& q, const Vector& d
         surface_tangents(p, d, t);
         const double x[3] = {p.x[0], p.x[1], 0.0};
         const double load = p.weight * q(part, x);
-        const Vec3 area = {t[0][1] * t[1][2] - t[0][2] * t[1][1],
-                           t[0][2] * t[1][0] - t[0][0] * t[1][2],
-                           t[0][0] * t[1][1] - t[0][1] * t[1][0]};
+        const Vec3 area = cross(t[0], t[1]);
         for (std::size_t a = 0; a < p.node.size(); ++a)
           for (std::size_t c = 0; c < 3; ++c)
             f(static_cast<std::size_t>(p.node[a]) * nd + c, 0) += load * p.phi[a] * area[c];

@@ -226,10 +226,10 @@ class FlatShellOperator {
   void point_resultants(std::size_t part, const Point& p, const View& d, double (&e)[shell_strains],
                         double (&R)[shell_strains]) const;
 
-  /// N, M, Q of a point of a J2 part: the layers' trial states written to trial_.
-  template <class View>
-  void plastic_resultants(std::size_t part, std::size_t q, const Point& p, const View& d,
-                          double (&e)[shell_strains], double (&R)[shell_strains]) const;
+  /// N, M, Q of a point of part `part` at its strains e (J2 parts: the layers' trial states
+  /// written to trial_; while the elastic probe is on, elastic from the committed states).
+  void strain_resultants(std::size_t part, const Point& p, const double (&e)[shell_strains],
+                         double (&R)[shell_strains]) const;
 
   const Model& model_;
   DofMaps maps_;

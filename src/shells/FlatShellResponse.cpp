@@ -20,6 +20,37 @@ constexpr int nd = shell_dofs_per_node;
 
 }  // namespace
 
+void FlatShellOperator::strain_resultants(std::size_t part, const Point& p,
+                                          const double (&e)[shell_strains],
+                                          double (&R)[shell_strains]) const {
+  if (j2_[part]) {
+    const auto q = static_cast<std::size_t>(&p - points_[part].data());
+    const auto law = elastic_probe_ ? physics::without_yield(*j2_[part]) : *j2_[part];
+    const std::size_t block = static_cast<std::size_t>(layers_[part]) * physics::j2_state::count;
+    double N[3], M[3];
+    physics::j2_section_resultants(law, thickness_[part], layers_[part], {e[0], e[1], e[2]},
+                                   {e[3], e[4], e[5]}, committed_[part].data() + q * block,
+                                   trial_[part].data() + q * block, 0.0, N, M);
+    const double shear = section_at(part, p.spacing).shear;
+    for (int i = 0; i < 3; ++i) {
+      R[i] = N[i];
+      R[3 + i] = M[i];
+    }
+    R[6] = shear * e[6];
+    R[7] = shear * e[7];
+    return;
+  }
+  double N[3], M[3], Q[2];
+  physics::mindlin_resultants(section_at(part, p.spacing), {e[0], e[1], e[2]}, {e[3], e[4], e[5]},
+                              {e[6], e[7]}, N, M, Q);
+  for (int i = 0; i < 3; ++i) {
+    R[i] = N[i];
+    R[3 + i] = M[i];
+  }
+  R[6] = Q[0];
+  R[7] = Q[1];
+}
+
 std::vector<double> FlatShellOperator::resultants(const Vector& d_owned) const {
   const auto d_overlap = to_overlap(d_owned);
   const auto d = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
@@ -77,8 +108,13 @@ void FlatShellOperator::internal_force(const Vector& d_owned, Vector& f_owned,
     for (std::size_t part = 0; part < points_.size(); ++part)
       for (const auto& p : points_[part]) {
         double e[shell_strains], R[shell_strains];
-        point_resultants(part, p, d, e, R);
-        if (finite_) finite_point(p, d, fp);  // (point_resultants built it too: cheap, local)
+        if (finite_) {  // the point's kinematics once: for its strains and its rows
+          finite_point(p, d, fp);
+          finite_strains(p, fp, e);
+          strain_resultants(part, p, e, R);
+        } else {
+          point_resultants(part, p, d, e, R);
+        }
         for (std::size_t a = 0; a < p.node.size(); ++a) {
           double B[shell_strains][nd];
           strain_rows(p, a, finite_ ? &fp : nullptr, B);

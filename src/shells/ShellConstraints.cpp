@@ -9,9 +9,6 @@
 namespace efg {
 namespace {
 constexpr int nd = shell_dofs_per_node;
-double dot3(const Vec3& x, const Vec3& y) {
-  return x[0] * y[0] + x[1] * y[1] + x[2] * y[2];
-}
 }  // namespace
 
 ShellConstraints::ShellConstraints(const Model& model, const FlatShellOperator& op,
@@ -155,7 +152,7 @@ void ShellConstraints::add_finite_edge_forces(const Edge& e, const View& d, Forc
     for (int c = 0; c < nd; ++c) {
       if (!e.held[static_cast<std::size_t>(c)]) continue;
       const double T = c < shell_rx ? t[static_cast<std::size_t>(c)]
-                                    : dot3(m, fe.nodes[a].director.T[c - shell_rx]);
+                                    : dot(m, fe.nodes[a].director.T[c - shell_rx]);
       f(static_cast<std::size_t>(e.node[a] * nd + c), 0) -= p.length * p.phi[a] * T;
     }
 }
@@ -199,10 +196,10 @@ void ShellConstraints::add_finite_edge_terms(const Edge& e, const View& d,
           continue;
         }
         const auto& director = fe.nodes[a].director;
-        double v = dot3(dm[k], director.T[c - shell_rx]);
+        double v = dot(dm[k], director.T[c - shell_rx]);
         const int column = static_cast<int>(k % nd);
         if (k / nd == a && column >= shell_rx)  // the row's own director turning
-          v += dot3(m, director.S[c - shell_rx][column - shell_rx]);
+          v += dot(m, director.S[c - shell_rx][column - shell_rx]);
         vals[k] = scale * v;
       }
       K.sumIntoLocalValues(e.node[a] * nd + c, static_cast<int>(width), vals.data(), cols.data());

@@ -23,10 +23,10 @@ struct ShellReferencePoint {
   ShellFrame frame;
 };
 
-/// `length`: the mesh's size (the difference step is 1e-6 of it). The scene's check has made
-/// sure that the map is an isometry at the particles (scene/ShellChecks).
+/// `step`: the central differences' (scene/ShellReferenceMap shell_map_step). The scene's check
+/// has made sure that the map is an isometry at the particles (scene/ShellChecks).
 ShellReferencePoint shell_reference_at(const std::vector<ScalarField>& map, const double* xy,
-                                       double length);
+                                       double step);
 
 /// The mesh as the results show it when a part has a curved reference: 3D, the nodes of such
 /// parts at their mapped positions (the others at (x, y, 0)), without side sets (edges of 2D
