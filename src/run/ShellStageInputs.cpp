@@ -4,6 +4,7 @@
 #include "discretization/ShapeFunctions.hpp"
 #include "model/Curves.hpp"
 #include "model/PointOwner.hpp"
+#include "shells/ShellReference.hpp"
 
 namespace efg {
 namespace {
@@ -75,7 +76,10 @@ ShellLineAndPointLoads::ShellLineAndPointLoads(const Model& model, const FlatShe
   for (const auto& l : model.scene.loads) {
     if (l.type != "shell_edge_load" || !l.stages.includes(stage)) continue;
     long long sides = 0;
-    loads_.emplace_back(&l, shell_edge_points(model, l.set, &sides));
+    auto points = shell_edge_points(model, l.set, &sides);
+    for (auto& p : points)  // per unit length of the surface (a curved reference's map)
+      p.length *= edge_stretch(model, p.part, p.x.data(), p.normal.data());
+    loads_.emplace_back(&l, std::move(points));
     if (sides == 0)
       throw InputError(model.scene.file + ": load '" + l.name + "': node set '" + l.set +
                        "' covers no edge of a shell part");

@@ -136,22 +136,33 @@ void FlatShellOperator::build_reference() {
       frames_[lid] = reference_frames_[lid] = r.frame;
     }
   }
-  // every point's strains at the reference state (d = 0), which its strains are measured from
+  // every point's strains at the reference state (d = 0), which its strains are measured from;
+  // the metric of a non-isometric map turns them into the surface frame's, and the weights
+  // (mesh areas) into surface areas (shells/ShellMetric.hpp)
   Vector zero(maps_.overlap_dofs);
   const auto d = zero.getLocalViewHost(Tpetra::Access::ReadOnly);
   FinitePoint fp;
-  for (auto& part : points_)
-    for (auto& p : part) {
+  for (std::size_t part = 0; part < points_.size(); ++part)
+    for (auto& p : points_[part]) {
       finite_point(p, d, fp);
       double e[shell_strains];
       finite_rotation_strains(fp.geometry, e);
       std::copy(e, e + shell_strains, p.reference.begin());
+      const auto r = part_reference_at(model_, part, p.x.data());
+      if (!r) continue;
+      p.metric = r->metric;
+      p.weight *= r->metric.area;
+      p.spacing *= std::sqrt(r->metric.area);  // the particle spacing on the surface
     }
 }
 
 void FlatShellOperator::strain_rows(const Point& p, std::size_t a, const FinitePoint* fp,
                                     double (&B)[shell_strains][nd]) const {
-  if (fp) return finite_rotation_rows(fp->geometry, fp->nodes[a], B);
+  if (fp) {
+    finite_rotation_rows(fp->geometry, fp->nodes[a], B);
+    if (curved_) rows_to_surface(p.metric, B);
+    return;
+  }
   plate_strain_rows({p.b[2 * a], p.b[2 * a + 1]}, {p.g[2 * a], p.g[2 * a + 1]}, p.phi[a], B);
 }
 
@@ -183,8 +194,10 @@ std::vector<double> FlatShellOperator::point_stiffness(const Point& p, const Sec
           K[(a * nd + c) * cols + b * nd + e] = p.weight * v;
         }
   if (!fp) return K;
+  // the geometric block of the mesh-coordinate strains takes their conjugate resultants
   double resultants[shell_strains], G[nd][nd];
   std::copy(R, R + shell_strains, resultants);
+  if (curved_) resultants_to_mesh(p.metric, R, 1.0, resultants);
   for (std::size_t a = 0; a < n; ++a)
     for (std::size_t b = 0; b < n; ++b) {
       finite_rotation_geometric(fp->geometry, resultants, fp->nodes[a], fp->nodes[b], a == b, G);
@@ -275,7 +288,7 @@ void FlatShellOperator::add_follower_stiffness(std::size_t part, const Point& p,
   Vec3 f[2];
   surface_tangents(p, d, f);
   const double x[3] = {p.x[0], p.x[1], 0.0};
-  const double load = p.weight * q(part, x);
+  const double load = p.weight / p.metric.area * q(part, x);  // f1 x f2: per unit mesh area
   if (load == 0) return;
   const std::size_t n = p.node.size(), width = n * nd;
   std::vector<double> row(width);
@@ -306,7 +319,7 @@ void FlatShellOperator::add_follower_pressure(const Pressure& q, const Vector& d
         Vec3 t[2];
         surface_tangents(p, d, t);
         const double x[3] = {p.x[0], p.x[1], 0.0};
-        const double load = p.weight * q(part, x);
+        const double load = p.weight / p.metric.area * q(part, x);  // per unit mesh area
         const Vec3 area = cross(t[0], t[1]);
         for (std::size_t a = 0; a < p.node.size(); ++a)
           for (std::size_t c = 0; c < 3; ++c)

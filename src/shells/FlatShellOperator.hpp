@@ -33,6 +33,7 @@
 #include "parallel/DofMaps.hpp"
 #include "shells/FiniteRotation.hpp"
 #include "shells/PlateStrains.hpp"
+#include "shells/ShellMetric.hpp"
 #include "shells/ShellSectionResponse.hpp"
 
 namespace efg {
@@ -188,15 +189,19 @@ class FlatShellOperator {
     /// finite rotations: the strains of the reference state (0 on a flat reference), which the
     /// point's strains are measured from
     std::array<double, shell_strains> reference{};
+    /// curved references: the strains' metric (the weight is then the surface area)
+    ShellMetric metric;
   };
   /// The kinematics of a point with finite rotations: its particles and point quantities.
   using FinitePoint = FiniteRotationPoint;
   template <class View>
   void finite_point(const Point& p, const View& d, FinitePoint& fp) const;
-  /// The point's strains from fp's kinematics, measured from its reference state.
+  /// The point's strains from fp's kinematics, measured from its reference state, in the
+  /// surface's frame.
   void finite_strains(const Point& p, const FinitePoint& fp, double (&e)[shell_strains]) const {
     finite_rotation_strains(fp.geometry, e);
     for (std::size_t i = 0; i < shell_strains; ++i) e[i] -= p.reference[i];
+    if (curved_) strains_to_surface(p.metric, e);
   }
   /// Curved references: offsets, frames and the points' reference strains.
   void build_reference();

@@ -5,6 +5,7 @@
 #include <map>
 
 #include "core/Errors.hpp"
+#include "shells/ShellReference.hpp"
 
 namespace efg {
 namespace {
@@ -53,9 +54,11 @@ ShellConstraints::ShellConstraints(const Model& model, const FlatShellOperator& 
       edge.point = std::move(p);
       edges_.push_back(edge);
     }
-    if (sides == 0)
+    // A set covering no edge (a pin, a corner) holds its particles by collocation alone: a
+    // point support carries a point reaction, with no edge traction to integrate.
+    if (sides == 0 && set->nodes.empty())
       throw InputError(model.scene.file + ": shell support: node set '" + s.node_set +
-                       "' covers no edge of a shell part");
+                       "' is empty");
   }
   if (op.curved()) {
     // the edge points' strains at the reference state (d = 0), which theirs are measured from
@@ -68,6 +71,10 @@ ShellConstraints::ShellConstraints(const Model& model, const FlatShellOperator& 
       edge_kinematics(e, d, fe);
       finite_rotation_strains(fe.geometry, strain);
       std::copy(strain, strain + shell_strains, e.reference.begin());
+      if (const auto r = part_reference_at(model, e.point.part, e.point.x.data())) {
+        e.metric = r->metric;
+        e.point.spacing *= std::sqrt(r->metric.area);  // the particle spacing on the surface
+      }
     }
   }
   for (std::size_t p = 0; p < model.parts.size(); ++p) {
@@ -126,6 +133,7 @@ void ShellConstraints::edge_response(const Edge& e, const View& d, double (&R)[s
     edge_kinematics(e, d, *fe);
     finite_rotation_strains(fe->geometry, strain);
     for (std::size_t i = 0; i < shell_strains; ++i) strain[i] -= e.reference[i];
+    if (op_.curved()) strains_to_surface(e.metric, strain);
   }
   for (std::size_t a = 0; !fe && a < p.node.size(); ++a) {
     double B[shell_strains][nd];
@@ -140,12 +148,18 @@ void ShellConstraints::edge_response(const Edge& e, const View& d, double (&R)[s
                          e.committed ? trial_.data() + e.trial : nullptr, R, S);
 }
 
+void ShellConstraints::to_mesh(const Edge& e, const double* R, double (&out)[shell_strains]) const {
+  if (op_.curved()) return resultants_to_mesh(e.metric, R, e.metric.area, out);
+  std::copy(R, R + shell_strains, out);
+}
+
 template <class View, class Force>
 void ShellConstraints::add_finite_edge_forces(const Edge& e, const View& d, Force& f) const {
   const auto& p = e.point;
   FiniteRotationPoint fe;
-  double R[shell_strains];
-  edge_response(e, d, R, nullptr, &fe);
+  double surface[shell_strains], R[shell_strains];
+  edge_response(e, d, surface, nullptr, &fe);
+  to_mesh(e, surface, R);
   Vec3 t, m;
   finite_rotation_edge_reaction(fe.geometry, R, {p.normal[0], p.normal[1]}, t, m);
   for (std::size_t a = 0; a < p.node.size(); ++a)
@@ -163,9 +177,10 @@ void ShellConstraints::add_finite_edge_terms(const Edge& e, const View& d,
   const auto& p = e.point;
   const std::size_t n = p.node.size(), width = n * nd;
   FiniteRotationPoint fe;
-  double R[shell_strains];
+  double surface[shell_strains], R[shell_strains];
   SectionTangent S;
-  edge_response(e, d, R, &S, &fe);
+  edge_response(e, d, surface, &S, &fe);
+  to_mesh(e, surface, R);
   const double normal[2] = {p.normal[0], p.normal[1]};
   Vec3 t, m;
   finite_rotation_edge_reaction(fe.geometry, R, normal, t, m);
@@ -175,12 +190,14 @@ void ShellConstraints::add_finite_edge_terms(const Edge& e, const View& d,
   for (std::size_t b = 0; b < n; ++b) {
     double B[shell_strains][nd], SB[shell_strains][nd];
     finite_rotation_rows(fe.geometry, fe.nodes[b], B);
+    if (op_.curved()) rows_to_surface(e.metric, B);
     tangent_rows(S, B, SB);
     for (int c = 0; c < nd; ++c) {
       const auto k = b * nd + static_cast<std::size_t>(c);
       cols[k] = e.node[b] * nd + c;
-      double dR[shell_strains];
-      for (int r = 0; r < shell_strains; ++r) dR[r] = SB[r][c];
+      double dS[shell_strains], dR[shell_strains];
+      for (int r = 0; r < shell_strains; ++r) dS[r] = SB[r][c];
+      to_mesh(e, dS, dR);
       finite_rotation_edge_reaction_change(fe.geometry, R, dR, normal, fe.nodes[b], c, dt[k],
                                            dm[k]);
     }

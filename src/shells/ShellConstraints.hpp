@@ -26,6 +26,7 @@
 #include "operators/CouplingGraph.hpp"
 #include "shells/FlatShellOperator.hpp"
 #include "shells/ShellBoundary.hpp"
+#include "shells/ShellMetric.hpp"
 
 namespace efg {
 
@@ -94,9 +95,14 @@ class ShellConstraints {
     std::array<bool, shell_dofs_per_node> held{};
     double* committed = nullptr;  ///< J2 parts: the layers' committed states (op's store)
     std::size_t trial = 0;        ///< offset of its trial states in trial_
-    /// finite rotations on a curved reference: the strains of the reference state
+    /// finite rotations on a curved reference: the strains of the reference state and their
+    /// metric (the reactions are per unit mesh length, shells/ShellMetric.hpp)
     std::array<double, shell_strains> reference{};
+    ShellMetric metric;
   };
+  /// The resultants conjugate to the mesh-coordinate strains per unit mesh area (curved
+  /// references; R itself otherwise).
+  void to_mesh(const Edge& e, const double* R, double (&out)[shell_strains]) const;
   /// The edge point's strains at d, its resultants R and (when asked) their tangent S.
   /// With finite rotations (FlatShellOperator::finite_rotations) `fe` gets the point's
   /// kinematics (required then).

@@ -19,7 +19,26 @@ ShellReferencePoint shell_reference_at(const std::vector<ScalarField>& map, cons
   const double n3 = std::sqrt(dot(t3, t3));
   for (auto& v : t3) v /= n3;
   r.frame = {t1, cross(t3, t1), t3};
+  r.tangent[0] = point.tangent[0];
+  r.tangent[1] = point.tangent[1];
+  r.metric = shell_metric(r.tangent, r.frame);
   return r;
+}
+
+std::optional<ShellReferencePoint> part_reference_at(const Model& model, std::size_t part,
+                                                     const double* xy) {
+  const auto& spec = *model.parts.at(part).part;
+  if (!spec.shell || spec.shell->reference.empty()) return std::nullopt;
+  return shell_reference_at(spec.shell->reference, xy, shell_map_step(model.mesh));
+}
+
+double edge_stretch(const Model& model, std::size_t part, const double* xy, const double* normal) {
+  const auto r = part_reference_at(model, part, xy);
+  if (!r) return 1.0;
+  Vec3 along{};
+  for (std::size_t c = 0; c < 3; ++c)
+    along[c] = -normal[1] * r->tangent[0][c] + normal[0] * r->tangent[1][c];
+  return std::sqrt(dot(along, along));
 }
 
 BackgroundMesh shell_reference_mesh(const Model& model) {

@@ -8,25 +8,40 @@
 // tangents come from central differences of the expressions.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "model/Model.hpp"
 #include "scene/Scene.hpp"
 #include "shells/FiniteRotation.hpp"
+#include "shells/ShellMetric.hpp"
 
 namespace efg {
 
-/// The reference point of the surface over (x, y): its position and frame (t1 = dX/dx, t2 =
-/// dX/dy, t3 = t1 x t2, the director).
+/// The reference point of the surface over (x, y): its position, the map's tangents A1 = dX/dx,
+/// A2 = dX/dy, its frame (t1 along A1, t3 = A1 x A2 / |A1 x A2| the director, t2 = t3 x t1) and
+/// the metric of the strains (shells/ShellMetric.hpp; the identity for an isometry).
 struct ShellReferencePoint {
   Vec3 position{};
+  Vec3 tangent[2]{};
   ShellFrame frame;
+  ShellMetric metric;
 };
 
 /// `step`: the central differences' (scene/ShellReferenceMap shell_map_step). The scene's check
-/// has made sure that the map is an isometry at the particles (scene/ShellChecks).
+/// has made sure that the map is regular at the particles (scene/ShellChecks).
 ShellReferencePoint shell_reference_at(const std::vector<ScalarField>& map, const double* xy,
                                        double step);
+
+/// The reference point over (x, y) of model part `part` when it has a curved reference (an
+/// empty optional for a flat part).
+std::optional<ShellReferencePoint> part_reference_at(const Model& model, std::size_t part,
+                                                     const double* xy);
+
+/// The surface length per unit mesh length along the direction (-n_y, n_x) of an edge of
+/// outward normal n at (x, y) of part `part` (1 for a flat part): edge loads are per unit
+/// length of the surface.
+double edge_stretch(const Model& model, std::size_t part, const double* xy, const double* normal);
 
 /// The mesh as the results show it when a part has a curved reference: 3D, the nodes of such
 /// parts at their mapped positions (the others at (x, y, 0)), without side sets (edges of 2D
