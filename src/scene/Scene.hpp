@@ -58,8 +58,8 @@ struct ShellSpec {
   double thickness = 1.0;
   int thickness_points = 2;          ///< Gauss points through the thickness
   double shear_stabilization = 0.1;  ///< alpha of k_s G t t^2 / (t^2 + alpha h^2)
-  /// The reference mid-surface X(x, y), Y, Z as expressions of the mesh's (x, y) (an isometric
-  /// map of a developable surface); empty: the flat mesh itself.
+  /// The reference mid-surface X(x, y), Y, Z as expressions of the mesh's (x, y) (a regular
+  /// map); empty: the flat mesh itself.
   std::vector<ScalarField> reference;
 };
 

@@ -1,6 +1,6 @@
 // Evaluation of a shell's reference map (parts[].shell.reference: X(x, y), Y, Z as expressions of
 // the mesh's x, y; docs/shells.md "Curved references"): the mapped point and its tangents by
-// central differences. Shared by the scene's isometry check (scene/ShellChecks) and the shells'
+// central differences. Shared by the scene's regularity check (scene/ShellChecks) and the shells'
 // reference frames (shells/ShellReference), so both see the same tangents.
 #pragma once
 

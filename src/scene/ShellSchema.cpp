@@ -27,12 +27,12 @@ SpecPtr shell_spec() {
                 "0.1")
       .optional(
           "reference",
-          map("A curved reference mid-surface by flattening (the global approach): the 2D mesh "
-              "is the surface unrolled, and (X, Y, Z) = (x, y, z) of these expressions of the "
-              "mesh's x, y maps it onto the surface. The map must be an isometry (x and y arc "
-              "lengths along orthogonal lines: a developable surface such as a cylinder or a "
-              "cone, checked at the particles); needs section.formulation: total_lagrangian. "
-              "See docs/shells.md, \"Curved references\".")
+          map("A curved reference mid-surface over a chart (the global approach): (X, Y, Z) = "
+              "(x, y, z) of these expressions of the mesh's x, y maps the 2D mesh onto the "
+              "surface (a cylinder unrolled, a sphere over latitude and longitude). The map must "
+              "be regular (independent tangents, checked at the particles); the strains are "
+              "measured on the surface through its metric; needs section.formulation: "
+              "total_lagrangian. See docs/shells.md, \"Curved references\".")
               .required(
                   "x",
                   real("X of the surface point.", "length").varying(ExpressionVariables::position))

@@ -1,11 +1,10 @@
-// A curved reference mid-surface by flattening (the seed's "global approach"; docs/shells.md,
-// "Curved references"): the part's 2D mesh is the surface unrolled, parts[].shell.reference maps
-// its (x, y) onto the surface, X = (X(x, y), Y(x, y), Z(x, y)). The shape functions, the SCNI
-// cells and their smoothed gradients stay those of the flat mesh; this is exact geometry when the
-// map is an isometry (x and y arc lengths along orthogonal lines, as the unrolling of a
-// developable surface: cylinders, cones), since then lengths and angles measured in (x, y) are
-// those on the surface and the Green-Lagrange strains in (x, y) are the physical ones. The map's
-// tangents come from central differences of the expressions.
+// A curved reference mid-surface over a chart (the seed's "global approach"; docs/shells.md,
+// "Curved references"): parts[].shell.reference maps the part's 2D mesh (x, y) onto the surface,
+// X = (X(x, y), Y(x, y), Z(x, y)). The shape functions, the SCNI cells and their smoothed
+// gradients stay those of the flat mesh; the strains in (x, y) are turned into the surface
+// frame's by the metric of the map (shells/ShellMetric.hpp; the identity when the map is an
+// isometry, the unrolling of a developable surface). The map's tangents come from central
+// differences of the expressions.
 #pragma once
 
 #include <optional>
