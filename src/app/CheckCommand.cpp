@@ -31,7 +31,7 @@ std::string mesh_summary(const BackgroundMesh& mesh) {
 }  // namespace
 
 void check_command(const CommPtr& comm, const CommandLine& cl) {
-  const auto scene = load_scene(comm, cl.scene);
+  auto scene = load_scene(comm, cl.scene);
   const auto mesh = load_mesh(comm, scene);
   check_run_inputs(comm, scene, mesh, cl.output_dir);
   if (!scene.stages.empty()) check_model_setup(comm, build_model(comm, scene));
@@ -43,7 +43,7 @@ void check_command(const CommPtr& comm, const CommandLine& cl) {
 }
 
 void mesh_command(const CommPtr& comm, const CommandLine& cl) {
-  const auto scene = load_scene(comm, cl.scene);
+  auto scene = load_scene(comm, cl.scene);
   const auto mesh = load_mesh(comm, scene);
   if (comm->getRank() == 0) {
     ExodusWriter writer(cl.mesh_output, mesh, OutputLayout{}, "efg mesh of " + cl.scene);

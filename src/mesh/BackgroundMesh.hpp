@@ -44,6 +44,10 @@ struct BackgroundMesh {
   std::vector<NodeSet> node_sets;
   std::vector<SideSet> side_sets;
   std::string source;  ///< file name or generator description, for messages
+  /// A shell surface read as a 3D mesh of 2D cells (SHELL4, QUAD4, TRI3; mesh/SurfaceChart.hpp):
+  /// its nodes' 3D positions, 3 per node, while `coordinates` hold their 2D chart coordinates
+  /// (dimension 2). Empty for every other mesh.
+  std::vector<double> surface;
 
   std::size_t node_count() const {
     return coordinates.size() / static_cast<std::size_t>(dimension);

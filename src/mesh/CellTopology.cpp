@@ -104,8 +104,10 @@ std::string cell_scene_name(CellType type) {
 std::optional<CellType> cell_type_from_exodus_name(const std::string& name) {
   std::string n;
   for (char c : name) n += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-  if (n == "QUAD" || n == "QUAD4") return CellType::quad4;
-  if (n == "TRI" || n == "TRI3" || n == "TRIANGLE") return CellType::tri3;
+  // shell cells (SHELL4, TRISHELL3) are the surface cells of a 3D shell mesh
+  if (n == "QUAD" || n == "QUAD4" || n == "SHELL" || n == "SHELL4") return CellType::quad4;
+  if (n == "TRI" || n == "TRI3" || n == "TRIANGLE" || n == "TRISHELL" || n == "TRISHELL3")
+    return CellType::tri3;
   if (n == "HEX" || n == "HEX8") return CellType::hex8;
   if (n == "TET" || n == "TET4" || n == "TETRA" || n == "TETRA4") return CellType::tet4;
   if (n == "WEDGE" || n == "WEDGE6") return CellType::wedge6;

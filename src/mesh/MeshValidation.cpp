@@ -57,7 +57,10 @@ void validate_mesh(const BackgroundMesh& mesh) {
   for (const auto& block : mesh.blocks) {
     if (cell_dimension(block.type) != mesh.dimension)
       fail(mesh, "block '" + block.name + "' holds " + cell_scene_name(block.type) +
-                     " cells in a " + std::to_string(mesh.dimension) + "D mesh");
+                     " cells in a " + std::to_string(mesh.dimension) + "D mesh" +
+                     (mesh.dimension == 3 ? " (surface cells in 3D are a shell surface: make the "
+                                            "parts shells, parts[].shell)"
+                                          : ""));
     const auto npc = static_cast<std::size_t>(cell_node_count(block.type));
     if (block.connectivity.size() % npc != 0)
       fail(mesh, "block '" + block.name + "' has a truncated connectivity array");

@@ -9,6 +9,7 @@
 #include "io/ExodusReader.hpp"
 #include "mesh/MeshGenerator.hpp"
 #include "mesh/MeshValidation.hpp"
+#include "mesh/SurfaceChart.hpp"
 #include "model/GradedMaterials.hpp"
 #include "parallel/Collective.hpp"
 #include "parallel/MeshBroadcast.hpp"
@@ -16,6 +17,7 @@
 #include "scene/SceneMeshChecks.hpp"
 #include "scene/SceneNodeSets.hpp"
 #include "scene/SceneReader.hpp"
+#include "scene/ShellSurfacePoints.hpp"
 #include "scene/SchemaValidator.hpp"
 
 namespace efg {
@@ -28,12 +30,14 @@ Scene load_scene(const CommPtr& comm, const std::string& scene_file) {
   return parse_scene(std::string(text.begin(), text.end()), scene_file);
 }
 
-BackgroundMesh load_mesh(const CommPtr& comm, const Scene& scene) {
+BackgroundMesh load_mesh(const CommPtr& comm, Scene& scene) {
   auto mesh = load_on_root_and_broadcast(comm, [&] {
     try {
       auto m =
           scene.generator ? generate_mesh(*scene.generator) : read_exodus_mesh(scene.mesh_file);
       for (const auto& block : scene.more_blocks) append_generated(m, block);
+      // a shell surface in 3D: the shells work on its chart (mesh/SurfaceChart.hpp)
+      if (scene.has_shells() && is_surface_mesh(m)) chart_surface_mesh(m);
       validate_mesh(m);
       return m;
     } catch (const InputError& e) {
@@ -43,6 +47,7 @@ BackgroundMesh load_mesh(const CommPtr& comm, const Scene& scene) {
                                                std::string("mesh.") + key, e.what()));
     }
   });
+  chart_shell_points(scene, mesh);
   add_scene_node_sets(scene, mesh);
   check_scene_against_mesh(scene, mesh);
   return mesh;

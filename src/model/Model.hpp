@@ -22,7 +22,9 @@ struct Model {
 /// Reads the scene (rank 0 reads the file), loads or generates the mesh (rank 0) and checks them
 /// against each other; throws InputError on every rank when anything is wrong.
 Scene load_scene(const CommPtr& comm, const std::string& scene_file);
-BackgroundMesh load_mesh(const CommPtr& comm, const Scene& scene);
+/// (On a shell surface read in 3D the scene's 3D probe and point-load points are projected onto
+/// its chart: scene/ShellSurfacePoints.hpp.)
+BackgroundMesh load_mesh(const CommPtr& comm, Scene& scene);
 
 /// load_scene + load_mesh + partition + discretization of every part + maps (one displacement
 /// dof per dimension). A numerical failure on any rank stops every rank.

@@ -62,6 +62,7 @@ std::vector<char> serialize(const BackgroundMesh& mesh) {
   w.pod(mesh.dimension);
   w.str(mesh.source);
   w.vec(mesh.coordinates);
+  w.vec(mesh.surface);
   w.pod(static_cast<std::uint64_t>(mesh.blocks.size()));
   for (const auto& b : mesh.blocks) {
     w.str(b.name);
@@ -91,6 +92,7 @@ BackgroundMesh deserialize(const std::vector<char>& bytes) {
   mesh.dimension = r.pod<int>();
   mesh.source = r.str();
   mesh.coordinates = r.vec<double>();
+  mesh.surface = r.vec<double>();
   mesh.blocks.resize(r.pod<std::uint64_t>());
   for (auto& b : mesh.blocks) {
     b.name = r.str();

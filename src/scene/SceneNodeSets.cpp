@@ -21,7 +21,10 @@ void read_node_set_input(Scene& scene) {
 }
 
 void add_scene_node_sets(const Scene& scene, BackgroundMesh& mesh) {
-  const auto dim = static_cast<std::size_t>(mesh.dimension);
+  // a shell surface read in 3D: boxes in 3D, around its nodes' 3D positions
+  const bool surface = !mesh.surface.empty();
+  const auto dim = surface ? std::size_t{3} : static_cast<std::size_t>(mesh.dimension);
+  const auto& positions = surface ? mesh.surface : mesh.coordinates;
   std::int64_t next_id = 0;
   for (const auto& ns : mesh.node_sets) next_id = std::max(next_id, ns.id);
   for (std::size_t i = 0; i < scene.node_sets.size(); ++i) {
@@ -66,7 +69,7 @@ void add_scene_node_sets(const Scene& scene, BackgroundMesh& mesh) {
     for (auto n : candidates) {
       bool inside = true;
       for (std::size_t k = 0; k < dim; ++k) {
-        const double x = mesh.coordinates[static_cast<std::size_t>(n) * dim + k];
+        const double x = positions[static_cast<std::size_t>(n) * dim + k];
         inside = inside && x >= spec.lower[k] && x <= spec.upper[k];
       }
       if (inside) made.nodes.push_back(n);

@@ -93,9 +93,17 @@ void check_shell_scene(const Scene& s, const BackgroundMesh& mesh) {
            "every part a shell (parts[].shell) or none");
     if (mesh.dimension != 2)
       fail(s, pd["shell"], path + ".shell",
-           "shells need a 2D mesh of their mid-surface in this version (flat shells in the x-y "
-           "plane); this mesh is " +
-               std::to_string(mesh.dimension) + "D (shell blocks of 3D meshes are not read yet)");
+           "shells need a mesh of their mid-surface: 2D, or a surface in 3D (SHELL4, TRISHELL3, "
+           "QUAD4 or TRI3 cells only); this mesh is " +
+               std::to_string(mesh.dimension) + "D with solid cells");
+    if (!mesh.surface.empty() && !part.shell->reference.empty())
+      fail(s, pd["shell"]["reference"], path + ".shell.reference",
+           "the mesh is a shell surface in 3D already (its nodes are the reference): a "
+           "reference map is for 2D meshes; expected no reference");
+    if (!mesh.surface.empty() && part.section.formulation != Formulation::total_lagrangian)
+      fail(s, pd["section"], path + ".section",
+           "a shell surface read in 3D is a curved reference, a finite-rotation shell: expected "
+           "section.formulation: total_lagrangian (a small load step gives the linear response)");
     const auto& material = *s.find_material(part.material);
     if (material.model != "linear_elastic" && material.model != "j2_plasticity")
       fail(s, pd["material"], path + ".material",

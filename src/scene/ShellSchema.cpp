@@ -71,9 +71,10 @@ std::vector<Key> shell_point_load_keys() {
   return {
       required_key("point",
                    real_list("Where the load acts on the mid-surface (x, y of the 2D mesh: "
-                             "on a curved reference, of the unrolled surface).",
+                             "on a curved reference, of the unrolled surface; on a shell "
+                             "surface read in 3D, x, y, z, projected onto its chart).",
                              "length")
-                       .items(2, 2)),
+                       .items(2, 3)),
       required_key("value",
                    real_list("Force along x, y, z and moment about the rotation dofs' axes at the "
                              "point, applied as f_I = phi_I(point) value; each a number or an "

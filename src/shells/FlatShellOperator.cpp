@@ -114,8 +114,8 @@ FlatShellOperator::FlatShellOperator(const Model& model, int thickness_points,
 }
 
 void FlatShellOperator::build_reference() {
-  for (const auto& d : model_.parts)
-    if (d.part->shell && !d.part->shell->reference.empty()) curved_ = true;
+  for (std::size_t part = 0; part < model_.parts.size(); ++part)
+    curved_ = curved_ || curved_part(model_, part);
   if (!curved_) return;
   if (!finite_)
     throw InputError(model_.scene.file +
@@ -124,13 +124,25 @@ void FlatShellOperator::build_reference() {
   const auto& mesh = model_.mesh;
   const double step = shell_map_step(mesh);
   offset_.assign(frames_.size(), Vec3{});
+  // a shell surface read in 3D: its nodes' positions and the mesh's frames (the same on every
+  // rank; a ghost particle's MLS fit would miss the neighbours beyond the ghost layer)
+  auto surface_frames =
+      mesh.surface.empty() ? std::vector<ShellFrame>{} : surface_node_frames(mesh);
+  if (!surface_frames.empty()) align_frames_to_supports(model_, surface_frames);
   for (const auto& d : model_.parts) {
     const auto& map = d.part->shell ? d.part->shell->reference : std::vector<ScalarField>{};
-    if (map.empty()) continue;
+    if (map.empty() && surface_frames.empty()) continue;
     for (auto node : d.cloud.mesh_node) {
+      const auto n = static_cast<std::size_t>(node);
       const auto lid = static_cast<std::size_t>(
           maps_.overlap_nodes->getLocalElement(static_cast<GlobalOrdinal>(node)));
-      const double* xy = mesh.coordinates.data() + 2 * static_cast<std::size_t>(node);
+      const double* xy = mesh.coordinates.data() + 2 * n;
+      if (!surface_frames.empty()) {
+        const double* P = mesh.surface.data() + 3 * n;
+        offset_[lid] = {P[0] - xy[0], P[1] - xy[1], P[2]};
+        frames_[lid] = reference_frames_[lid] = surface_frames[n];
+        continue;
+      }
       const auto r = shell_reference_at(map, xy, step);
       offset_[lid] = {r.position[0] - xy[0], r.position[1] - xy[1], r.position[2]};
       frames_[lid] = reference_frames_[lid] = r.frame;

@@ -32,10 +32,30 @@ struct ShellReferencePoint {
 ShellReferencePoint shell_reference_at(const std::vector<ScalarField>& map, const double* xy,
                                        double step);
 
+/// Whether model part `part` has a curved reference: a reference map, or the mesh is a shell
+/// surface read in 3D (its chart, mesh/SurfaceChart.hpp).
+bool curved_part(const Model& model, std::size_t part);
+
 /// The reference point over (x, y) of model part `part` when it has a curved reference (an
-/// empty optional for a flat part).
+/// empty optional for a flat part). A surface read in 3D is the MLS fit of its nodes' 3D
+/// positions P_I over the chart, X = sum phi_I(x, y) P_I, its tangents the fit's direct
+/// gradients (the part's shape functions: the surface the particles' generalized positions
+/// describe).
 std::optional<ShellReferencePoint> part_reference_at(const Model& model, std::size_t part,
                                                      const double* xy);
+
+/// The frames of the nodes of a shell surface read in 3D, from the mesh alone (the same on every
+/// rank): per node the area-weighted mean over its cells' triangles of the tangents dX/dx,
+/// dX/dy of the linear map from chart to surface, then t1 along dX/dx, t3 along dX/dx x dX/dy
+/// (as shell_reference_at). One per mesh node (identity frames for nodes of no cell).
+std::vector<ShellFrame> surface_node_frames(const BackgroundMesh& mesh);
+
+/// On a shell surface read in 3D a support's rotation components are about its edge: the frames
+/// of the nodes of every boundary condition holding rx or ry turn about their director until t1
+/// lies along the node set's edges there (the mean direction of the covered cell sides at the
+/// node, projected on the tangent plane), t2 = t3 x t1 the edge's normal in the surface. A later
+/// condition wins on shared nodes, as for the values.
+void align_frames_to_supports(const Model& model, std::vector<ShellFrame>& frames);
 
 /// The surface length per unit mesh length along the direction (-n_y, n_x) of an edge of
 /// outward normal n at (x, y) of part `part` (1 for a flat part): edge loads are per unit

@@ -1,0 +1,115 @@
+#include "mesh/SurfaceChart.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "core/Errors.hpp"
+
+namespace efg {
+namespace {
+
+using V3 = std::array<double, 3>;
+
+V3 minus(const double* a, const double* b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+V3 cross3(const V3& a, const V3& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+double dot3(const V3& a, const V3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+V3 unit(V3 a) {
+  const double l = std::sqrt(dot3(a, a));
+  for (auto& v : a) v /= l;
+  return a;
+}
+
+/// The 3D positions of a surface mesh, before or after charting.
+const std::vector<double>& positions(const BackgroundMesh& mesh) {
+  return mesh.surface.empty() ? mesh.coordinates : mesh.surface;
+}
+
+/// Calls f(cell, corner a, b, c) for the triangles of every cell (a quad as (0 1 2), (0 2 3)).
+template <class F>
+void for_each_triangle(const BackgroundMesh& mesh, F&& f) {
+  std::size_t cell = 0;
+  for (const auto& block : mesh.blocks) {
+    const auto n = static_cast<std::size_t>(cell_node_count(block.type));
+    for (std::size_t c = 0; c < block.cell_count(); ++c, ++cell) {
+      const auto* k = &block.connectivity[c * n];
+      f(cell, block, k[0], k[1], k[2]);
+      if (n == 4) f(cell, block, k[0], k[2], k[3]);
+    }
+  }
+}
+
+}  // namespace
+
+bool is_surface_mesh(const BackgroundMesh& mesh) {
+  if (mesh.dimension != 3 || mesh.blocks.empty()) return false;
+  for (const auto& block : mesh.blocks)
+    if (block.type != CellType::quad4 && block.type != CellType::tri3) return false;
+  return true;
+}
+
+SurfaceProjection surface_projection(const BackgroundMesh& mesh) {
+  const auto& x = positions(mesh);
+  SurfaceProjection p;
+  V3 normal{};
+  for_each_triangle(mesh, [&](std::size_t, const ElementBlock&, LocalIndex a, LocalIndex b,
+                              LocalIndex c) {
+    const double* xa = &x[3 * static_cast<std::size_t>(a)];
+    const auto n = cross3(minus(&x[3 * static_cast<std::size_t>(b)], xa),
+                          minus(&x[3 * static_cast<std::size_t>(c)], xa));
+    for (std::size_t k = 0; k < 3; ++k) normal[k] += n[k];  // twice the area-weighted normal
+  });
+  p.normal = unit(normal);
+  const std::size_t nodes = x.size() / 3;
+  for (std::size_t i = 0; i < nodes; ++i)
+    for (std::size_t k = 0; k < 3; ++k) p.origin[k] += x[3 * i + k] / static_cast<double>(nodes);
+  // x along the global x axis projected, unless that is within 25 degrees of the normal
+  V3 axis = std::abs(p.normal[0]) < std::cos(25.0 * M_PI / 180.0) ? V3{1, 0, 0} : V3{0, 1, 0};
+  const double along = dot3(axis, p.normal);
+  for (std::size_t k = 0; k < 3; ++k) axis[k] -= along * p.normal[k];
+  p.e1 = unit(axis);
+  p.e2 = cross3(p.normal, p.e1);
+  return p;
+}
+
+std::array<double, 2> chart_coordinates(const SurfaceProjection& p, const double* X) {
+  const V3 d = minus(X, p.origin.data());
+  return {dot3(d, p.e1), dot3(d, p.e2)};
+}
+
+void chart_surface_mesh(BackgroundMesh& mesh) {
+  const auto p = surface_projection(mesh);
+  const double steepest = std::cos(80.0 * M_PI / 180.0);
+  for_each_triangle(mesh, [&](std::size_t cell, const ElementBlock& block, LocalIndex a,
+                              LocalIndex b, LocalIndex c) {
+    const double* x = mesh.coordinates.data();
+    const double* xa = x + 3 * static_cast<std::size_t>(a);
+    const auto n = cross3(minus(x + 3 * static_cast<std::size_t>(b), xa),
+                          minus(x + 3 * static_cast<std::size_t>(c), xa));
+    const double cosine = dot3(n, p.normal) / std::sqrt(dot3(n, n));
+    if (cosine > steepest) return;
+    std::ostringstream o;
+    o.precision(4);
+    o << "shell surface: cell " << cell + 1 << " (block '" << block.name
+      << "') turns its normal by " << std::acos(std::max(-1.0, std::min(1.0, cosine))) * 180 / M_PI
+      << " degrees from the surface's mean normal (" << p.normal[0] << ", " << p.normal[1] << ", "
+      << p.normal[2]
+      << "); the chart projects the surface onto the plane normal to it and needs every cell "
+         "within 80 degrees (cells oriented alike, no fold): split the surface into parts that "
+         "are, or give it as a 2D mesh with parts[].shell.reference";
+    throw InputError(o.str());
+  });
+  mesh.surface = mesh.coordinates;
+  const std::size_t nodes = mesh.node_count();
+  std::vector<double> chart(2 * nodes);
+  for (std::size_t i = 0; i < nodes; ++i) {
+    const auto c = chart_coordinates(p, &mesh.surface[3 * i]);
+    chart[2 * i] = c[0];
+    chart[2 * i + 1] = c[1];
+  }
+  mesh.coordinates = std::move(chart);
+  mesh.dimension = 2;
+}
+
+}  // namespace efg

@@ -1,0 +1,38 @@
+// Shell surfaces read as 3D meshes (Exodus SHELL4 / TRISHELL3 blocks, or QUAD4 / TRI3 cells in a
+// 3D file): the shells of src/shells/ work on a 2D chart of their mid-surface (docs/shells.md,
+// "Curved references"), so such a mesh is turned into its chart when it is read. The chart is
+// the orthogonal projection onto the plane through the nodes' centroid normal to the surface's
+// area-weighted mean normal, x along the projection of the global x axis (of y when x is within
+// 25 degrees of the normal): one chart for sheets, panels, roofs and shell segments whose normal
+// stays within 80 degrees of the mean (checked cell by cell: a steeper cell is stretched more
+// than 5.8 times, or the surface folds over itself). The strains' metric of the shells
+// (shells/ShellMetric.hpp) accounts for the projection's stretch; the 3D positions stay in
+// BackgroundMesh::surface.
+#pragma once
+
+#include <array>
+
+#include "mesh/BackgroundMesh.hpp"
+
+namespace efg {
+
+/// Whether `mesh` is a shell surface in 3D: dimension 3 and only 2D cells (quad4, tri3).
+bool is_surface_mesh(const BackgroundMesh& mesh);
+
+struct SurfaceProjection {
+  std::array<double, 3> origin{}, e1{}, e2{}, normal{};
+};
+
+/// The chart's projection of a surface mesh (before or after chart_surface_mesh: from
+/// mesh.surface when set, else from the 3D coordinates).
+SurfaceProjection surface_projection(const BackgroundMesh& mesh);
+
+/// The chart coordinates of a 3D point (its projection onto the chart's plane).
+std::array<double, 2> chart_coordinates(const SurfaceProjection& p, const double* X);
+
+/// Turns a surface mesh into its chart: mesh.surface gets the 3D positions, mesh.coordinates the
+/// chart's 2D ones, dimension 2. Throws InputError naming the cell whose normal turns by 80
+/// degrees or more from the projection direction.
+void chart_surface_mesh(BackgroundMesh& mesh);
+
+}  // namespace efg
