@@ -89,12 +89,13 @@ void chart_surface_mesh(BackgroundMesh& mesh) {
                           minus(x + 3 * static_cast<std::size_t>(c), xa));
     const double cosine = dot3(n, p.normal) / std::sqrt(dot3(n, n));
     if (cosine > steepest) return;
+    const auto shown = [](double v) { return std::abs(v) < 1e-12 ? 0.0 : v; };  // no -1e-17
     std::ostringstream o;
     o.precision(4);
     o << "shell surface: cell " << cell + 1 << " (block '" << block.name
       << "') turns its normal by " << std::acos(std::max(-1.0, std::min(1.0, cosine))) * 180 / M_PI
-      << " degrees from the surface's mean normal (" << p.normal[0] << ", " << p.normal[1] << ", "
-      << p.normal[2]
+      << " degrees from the surface's mean normal (" << shown(p.normal[0]) << ", "
+      << shown(p.normal[1]) << ", " << shown(p.normal[2])
       << "); the chart projects the surface onto the plane normal to it and needs every cell "
          "within 80 degrees (cells oriented alike, no fold): split the surface into parts that "
          "are, or give it as a 2D mesh with parts[].shell.reference";

@@ -1,0 +1,22 @@
+#!/usr/bin/env python3
+"""Writes the small 3D shell surface meshes (SHELL4) that scenes of tests/scenes refer to:
+roof_4.exo, a Scordelis-Lo roof quarter on 4 x 4 cells (node sets crown, free, midspan,
+diaphragm), and half_cylinder_16.exo, a half cylinder on 16 x 2 cells (180 degrees: its edge
+cells' normals turn by 84 degrees from their mean, beyond the projection chart's 80; node sets
+side_a, side_b, end_a, end_b).
+Run once from this folder; the files are committed.
+"""
+import math
+import os
+import sys
+
+here = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(here, "..", "..", "..", "verification", "shell_surface"))
+sys.path.insert(0, os.path.join(here, "..", "..", "..", "verification"))
+from exodus_mesh import write_exodus  # noqa: E402
+from run_surface import grid, roof  # noqa: E402
+
+roof(4, os.path.join(here, "roof_4.exo"))
+coords, conn, e = grid(16, 2, lambda u, v: (math.cos(u * math.pi), 10 * v, math.sin(u * math.pi)))
+write_exodus(os.path.join(here, "half_cylinder_16.exo"), "half cylinder", coords, conn, "SHELL4",
+             {"side_a": e["i0"], "side_b": e["i1"], "end_a": e["j0"], "end_b": e["j1"]})
