@@ -63,10 +63,11 @@ void read_blocks(const exodus::File& f, const std::string& path, std::int64_t nb
             "reading an element block");
     const auto type = cell_type_from_exodus_name(type_name);
     if (!type || cell_node_count(*type) != per_cell)
-      throw InputError("mesh file '" + path + "': block '" + block_names[b] +
-                       "' has element type '" + type_name + "' with " + std::to_string(per_cell) +
-                       " nodes; supported: HEX8, TETRA4, WEDGE6 (3D), QUAD4, TRI3 (2D), SHELL4, TRISHELL3 "
-                       "(shell surfaces in 3D)");
+      throw InputError(
+          "mesh file '" + path + "': block '" + block_names[b] + "' has element type '" +
+          type_name + "' with " + std::to_string(per_cell) +
+          " nodes; supported: HEX8, TETRA4, WEDGE6 (3D), QUAD4, TRI3 (2D), SHELL4, TRISHELL3 "
+          "(shell surfaces in 3D)");
     ElementBlock block;
     block.name = block_names[b];
     block.id = block_ids[b];

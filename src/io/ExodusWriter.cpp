@@ -84,8 +84,8 @@ void ExodusWriter::write_mesh(const BackgroundMesh& mesh, const std::string& tit
     // 2D cells in a 3D mesh are a shell surface: SHELL4 / TRISHELL3, as ParaView and SEACAS read
     // shells
     const bool shell = dim == 3 && cell_dimension(b.type) == 2;
-    const auto type = shell ? (b.type == CellType::quad4 ? "SHELL4" : "TRISHELL3")
-                            : cell_exodus_name(b.type);
+    const auto type =
+        shell ? (b.type == CellType::quad4 ? "SHELL4" : "TRISHELL3") : cell_exodus_name(b.type);
     file_->check(ex_put_block(id, EX_ELEM_BLOCK, b.id, type.c_str(),
                               static_cast<std::int64_t>(b.cell_count()), per, 0, 0, 0),
                  "writing a block");

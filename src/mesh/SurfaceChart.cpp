@@ -10,11 +10,15 @@ namespace {
 
 using V3 = std::array<double, 3>;
 
-V3 minus(const double* a, const double* b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+V3 minus(const double* a, const double* b) {
+  return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+}
 V3 cross3(const V3& a, const V3& b) {
   return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
 }
-double dot3(const V3& a, const V3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+double dot3(const V3& a, const V3& b) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
 V3 unit(V3 a) {
   const double l = std::sqrt(dot3(a, a));
   for (auto& v : a) v /= l;
@@ -53,13 +57,13 @@ SurfaceProjection surface_projection(const BackgroundMesh& mesh) {
   const auto& x = positions(mesh);
   SurfaceProjection p;
   V3 normal{};
-  for_each_triangle(mesh, [&](std::size_t, const ElementBlock&, LocalIndex a, LocalIndex b,
-                              LocalIndex c) {
-    const double* xa = &x[3 * static_cast<std::size_t>(a)];
-    const auto n = cross3(minus(&x[3 * static_cast<std::size_t>(b)], xa),
-                          minus(&x[3 * static_cast<std::size_t>(c)], xa));
-    for (std::size_t k = 0; k < 3; ++k) normal[k] += n[k];  // twice the area-weighted normal
-  });
+  for_each_triangle(
+      mesh, [&](std::size_t, const ElementBlock&, LocalIndex a, LocalIndex b, LocalIndex c) {
+        const double* xa = &x[3 * static_cast<std::size_t>(a)];
+        const auto n = cross3(minus(&x[3 * static_cast<std::size_t>(b)], xa),
+                              minus(&x[3 * static_cast<std::size_t>(c)], xa));
+        for (std::size_t k = 0; k < 3; ++k) normal[k] += n[k];  // twice the area-weighted normal
+      });
   p.normal = unit(normal);
   const std::size_t nodes = x.size() / 3;
   for (std::size_t i = 0; i < nodes; ++i)

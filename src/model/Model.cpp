@@ -17,8 +17,8 @@
 #include "scene/SceneMeshChecks.hpp"
 #include "scene/SceneNodeSets.hpp"
 #include "scene/SceneReader.hpp"
-#include "scene/ShellSurfacePoints.hpp"
 #include "scene/SchemaValidator.hpp"
+#include "scene/ShellSurfacePoints.hpp"
 
 namespace efg {
 

@@ -128,7 +128,7 @@ RunOutcome run_shell_stages(const CommPtr& comm, const Model& model, const std::
   };
   const bool with_stress = wants("stress"), with_resultants = wants("resultants"),
              with_volume = wants("nodal_volume"), with_rank = wants("owner_rank"),
-             with_plastic = wants("plastic_strain");
+             with_plastic = wants("plastic_strain"), with_thickness = wants("thickness");
   OutputLayout layout;
   for (const char* base : {"displacement_", "rotation_"})
     for (const char* axis : {"x", "y", "z"})
@@ -138,12 +138,13 @@ RunOutcome run_shell_stages(const CommPtr& comm, const Model& model, const std::
       "membrane_force_xx", "membrane_force_yy", "membrane_force_xy", "moment_xx",
       "moment_yy",         "moment_xy",         "shear_force_xz",    "shear_force_yz"};
   if (with_stress)
-    for (const char* side : {"top", "bottom"})
+    for (const char* side : {"top", "middle", "bottom"})
       for (const char* c : {"xx", "yy", "xy"})
         layout.nodal.push_back(std::string("stress_") + side + "_" + c);
   if (with_resultants)
     for (const char* n : resultant_names) layout.nodal.push_back(n);
   if (with_plastic) layout.nodal.push_back("plastic_strain");
+  if (with_thickness) layout.nodal.push_back("thickness");
   if (with_volume) layout.nodal.push_back("nodal_volume");
   if (with_rank) layout.nodal.push_back("owner_rank");
   for (const char* g : {"strain_energy", "kinetic_energy", "external_work"})
@@ -187,6 +188,7 @@ RunOutcome run_shell_stages(const CommPtr& comm, const Model& model, const std::
     const auto stresses = with_stress ? op.surface_stresses(d) : std::vector<double>{};
     // the largest effective plastic strain through the thickness (0 for elastic parts)
     const auto plastic = with_plastic ? op.plastic_strain() : std::vector<double>{};
+    const auto thickness = with_thickness ? op.thickness(d) : std::vector<double>{};
     const auto& owned = model.partition.owned;
     Tpetra::MultiVector<> nodal(model.maps.owned_nodes, layout.nodal.size());
     {
@@ -196,10 +198,11 @@ RunOutcome run_shell_stages(const CommPtr& comm, const Model& model, const std::
         std::size_t column = nd;
         const double* r = resultants.empty() ? nullptr : &resultants[i * shell_strains];
         if (with_stress)
-          for (std::size_t c = 0; c < 6; ++c) out(i, column++) = stresses[i * 6 + c];
+          for (std::size_t c = 0; c < 9; ++c) out(i, column++) = stresses[i * 9 + c];
         if (with_resultants)
           for (std::size_t c = 0; c < shell_strains; ++c) out(i, column++) = r[c];
         if (with_plastic) out(i, column++) = plastic[i];
+        if (with_thickness) out(i, column++) = thickness[i];
         if (with_volume) out(i, column++) = volume[static_cast<std::size_t>(owned[i])];
         if (with_rank) out(i, column++) = model.partition.rank;
       }

@@ -150,7 +150,7 @@ class Checker {
     for (std::size_t i = 0; i < s_.probes.size(); ++i)
       if (m_.surface.empty() || d["probes"][i]["point"].size() != 3)  // 3D: on a surface chart
         require_dimension(d["probes"][i]["point"], "probes[" + std::to_string(i) + "].point",
-                        d["probes"][i]["point"].size());
+                          d["probes"][i]["point"].size());
     if (s_.user_solution) {
       const auto& u = d["verification"]["user_solution"];
       require_dimension(u["displacement"], "verification.user_solution.displacement",

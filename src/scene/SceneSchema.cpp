@@ -315,11 +315,12 @@ SpecPtr output_spec() {
                       "pressure of every background cell of the mixed_up parts (an element "
                       "field; 0 in other cells). Shell parts (docs/shells.md): stress is the top "
                       "and bottom surface stress, resultants the membrane forces, moments and "
-                      "transverse shear forces per unit length.")
+                      "transverse shear forces per unit length, thickness the current thickness "
+                      "t (1 + mean eps_zz) of the plane-stress section.")
               .choices({"displacement", "velocity", "acceleration", "stress", "strain", "von_mises",
                         "pressure", "cell_pressure", "plastic_strain", "eroded", "nodal_volume",
                         "owner_rank", "generalized_displacement", "generalized_velocity",
-                        "material_state", "resultants"}),
+                        "material_state", "resultants", "thickness"}),
           "[displacement, nodal_volume, owner_rank]")
       .optional("history",
                 string("CSV file, beside the results file (relative to its folder), of the global "

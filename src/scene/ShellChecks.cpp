@@ -65,10 +65,11 @@ void check_solid_scene(const Scene& s) {
              "expected x, y or z");
       }
   for (std::size_t i = 0; i < s.output.fields.size(); ++i)
-    if (s.output.fields[i] == "resultants")
+    if (s.output.fields[i] == "resultants" || s.output.fields[i] == "thickness")
       fail(s, d["output"]["fields"][i], "output.fields[" + std::to_string(i) + "]",
-           "resultants (forces and moments per unit length) are shell fields, and no part of "
-           "this scene is a shell; expected stress or strain");
+           s.output.fields[i] +
+               " (of a section: forces and moments per unit length, its thickness) is a shell "
+               "field, and no part of this scene is a shell; expected stress or strain");
   for (std::size_t i = 0; i < s.loads.size(); ++i)
     if (s.loads[i].type == "shell_pressure" || s.loads[i].type == "shell_edge_load" ||
         s.loads[i].type == "shell_point_load")
@@ -192,13 +193,13 @@ void check_shell_scene(const Scene& s, const BackgroundMesh& mesh) {
       const auto node = dot == std::string::npos ? d[k] : d[k.substr(0, dot)][k.substr(dot + 1)];
       fail(s, node, k, "not available with shell parts in this version");
     }
-  const std::set<std::string> written = {"displacement", "nodal_volume", "owner_rank",
-                                         "stress",       "resultants",   "plastic_strain"};
+  const std::set<std::string> written = {"displacement", "nodal_volume",   "owner_rank", "stress",
+                                         "resultants",   "plastic_strain", "thickness"};
   for (std::size_t i = 0; i < s.output.fields.size(); ++i)
     if (!written.count(s.output.fields[i]))
       fail(s, d["output"]["fields"][i], "output.fields[" + std::to_string(i) + "]",
            "shell runs write displacement (x, y, z), rotation (x, y), stress, resultants, "
-           "plastic_strain, nodal_volume and owner_rank; '" +
+           "thickness, plastic_strain, nodal_volume and owner_rank; '" +
                s.output.fields[i] + "' is a solid field");
 }
 

@@ -107,10 +107,18 @@ class FlatShellOperator {
   /// point's strains (smoothed membrane and bending strains, i.e. the means over its nodal cell;
   /// the shear strain at the particle, with the stabilized shear stiffness the solve used).
   std::vector<double> resultants(const Vector& d_owned) const;
-  /// The stresses (xx, yy, xy) on the top and the bottom of every owned particle's section (6 per
-  /// particle, in the order of maps().owned_nodes): elastic parts N / t +- 6 M / t^2 at
-  /// z = +- t / 2; J2 parts the stresses of the outermost Gauss layers (committed states).
+  /// The stresses (xx, yy, xy) on the top, the middle and the bottom of every owned particle's
+  /// section (9 per particle, in the order of maps().owned_nodes): elastic parts N / t + 6 M /
+  /// t^2, N / t, N / t - 6 M / t^2 (z = t / 2, 0, -t / 2); J2 parts the stresses of the
+  /// outermost Gauss layers and of the middle one (the mean of the two middle ones of an even
+  /// rule), committed states.
   std::vector<double> surface_stresses(const Vector& d_owned) const;
+  /// The current thickness t (1 + mean eps_zz) of every owned particle's section (in the order
+  /// of maps().owned_nodes): plane stress sets eps_zz; an elastic section's mean over the
+  /// thickness is -nu / (1 - nu) (eps_xx + eps_yy) of its membrane strains (the bending part is
+  /// odd in z), a J2 section's the Gauss mean of its layers' own eps_zz (committed states;
+  /// isochoric plastic flow thins the sheet).
+  std::vector<double> thickness(const Vector& d_owned) const;
   /// Strain energy 1/2 d^T K d of this rank's points (without constraints); for J2 parts the
   /// internal energy of the committed state (stored + dissipated, through the thickness) and
   /// the elastic shear energy.

@@ -199,22 +199,54 @@ std::vector<double> FlatShellOperator::plastic_strain() const {
   return out;
 }
 
+std::vector<double> FlatShellOperator::thickness(const Vector& d_owned) const {
+  const auto d_overlap = to_overlap(d_owned);
+  const auto d = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
+  std::vector<double> out(maps_.owned_nodes->getNodeNumElements(), 0.0);
+  for (std::size_t part = 0; part < points_.size(); ++part) {
+    const double t = thickness_[part];
+    const auto& material = *model_.scene.find_material(model_.parts[part].part->material);
+    const double nu = material.constants.at("poissons_ratio");
+    const int n = layers_[part];
+    double xi[physics::max_thickness_points], w[physics::max_thickness_points];
+    physics::thickness_rule(n, xi, w);
+    for (std::size_t q = 0; q < points_[part].size(); ++q) {
+      const auto& p = points_[part][q];
+      double mean = 0;  // eps_zz through the thickness
+      if (j2_[part]) {
+        const double* state =
+            committed_[part].data() + q * static_cast<std::size_t>(n) * physics::j2_state::count;
+        for (int k = 0; k < n; ++k)  // Gauss weights on [-1, 1] sum to 2
+          mean +=
+              0.5 * w[k] * state[k * physics::j2_state::count + physics::j2_state::out_of_plane];
+      } else {
+        double e[shell_strains];
+        point_strains(p, d, e);
+        mean = -nu / (1 - nu) * (e[0] + e[1]);
+      }
+      out[static_cast<std::size_t>(p.owned_row)] = t * (1 + mean);
+    }
+  }
+  return out;
+}
+
 std::vector<double> FlatShellOperator::surface_stresses(const Vector& d_owned) const {
   const auto d_overlap = to_overlap(d_owned);
   const auto d = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
-  std::vector<double> out(maps_.owned_nodes->getNodeNumElements() * 6, 0.0);
+  std::vector<double> out(maps_.owned_nodes->getNodeNumElements() * 9, 0.0);
   for (std::size_t part = 0; part < points_.size(); ++part) {
     const double t = thickness_[part];
     for (std::size_t q = 0; q < points_[part].size(); ++q) {
       const auto& p = points_[part][q];
-      double* o = &out[static_cast<std::size_t>(p.owned_row) * 6];
+      double* o = &out[static_cast<std::size_t>(p.owned_row) * 9];
       double e[shell_strains];
       if (!j2_[part]) {
         double R[shell_strains];
         point_resultants(part, p, d, e, R);
         for (std::size_t c = 0; c < 3; ++c) {
           o[c] = R[c] / t + 6 * R[3 + c] / (t * t);
-          o[3 + c] = R[c] / t - 6 * R[3 + c] / (t * t);
+          o[3 + c] = R[c] / t;
+          o[6 + c] = R[c] / t - 6 * R[3 + c] / (t * t);
         }
         continue;
       }
@@ -222,14 +254,21 @@ std::vector<double> FlatShellOperator::surface_stresses(const Vector& d_owned) c
       const int n = layers_[part];
       const double* states =
           committed_[part].data() + q * static_cast<std::size_t>(n) * physics::j2_state::count;
-      double top[3], bottom[3];
-      physics::j2_layer_stress(*j2_[part], t, n, n - 1, {e[0], e[1], e[2]}, {e[3], e[4], e[5]},
-                               states, top);
-      physics::j2_layer_stress(*j2_[part], t, n, 0, {e[0], e[1], e[2]}, {e[3], e[4], e[5]}, states,
-                               bottom);
+      const auto layer = [&](int k, double(&s)[3]) {
+        physics::j2_layer_stress(*j2_[part], t, n, k, {e[0], e[1], e[2]}, {e[3], e[4], e[5]},
+                                 states, s);
+      };
+      // the mid-surface: the middle layer of an odd rule, the mean of the two middle ones of an
+      // even rule (symmetric about z = 0)
+      double top[3], bottom[3], below[3], above[3];
+      layer(n - 1, top);
+      layer(0, bottom);
+      layer((n - 1) / 2, below);
+      layer(n / 2, above);
       for (std::size_t c = 0; c < 3; ++c) {
         o[c] = top[c];
-        o[3 + c] = bottom[c];
+        o[3 + c] = 0.5 * (below[c] + above[c]);
+        o[6 + c] = bottom[c];
       }
     }
   }

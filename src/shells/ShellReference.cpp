@@ -38,7 +38,6 @@ bool curved_part(const Model& model, std::size_t part) {
   return !model.mesh.surface.empty() || (spec.shell && !spec.shell->reference.empty());
 }
 
-
 std::optional<ShellReferencePoint> part_reference_at(const Model& model, std::size_t part,
                                                      const double* xy) {
   const auto& spec = *model.parts.at(part).part;
@@ -122,7 +121,8 @@ void align_frames_to_supports(const Model& model, std::vector<ShellFrame>& frame
                      b = static_cast<std::size_t>(block.connectivity[e * n + (k + 1) % n]);
           if (!in[a] || !in[b]) continue;
           Vec3 side{};
-          for (std::size_t c = 0; c < 3; ++c) side[c] = mesh.surface[3 * b + c] - mesh.surface[3 * a + c];
+          for (std::size_t c = 0; c < 3; ++c)
+            side[c] = mesh.surface[3 * b + c] - mesh.surface[3 * a + c];
           for (auto node : {a, b}) {  // sides met at a node added head to tail
             const double sign = dot(along[node], side) < 0 ? -1.0 : 1.0;
             for (std::size_t c = 0; c < 3; ++c) along[node][c] += sign * side[c];

@@ -59,3 +59,15 @@ add_test(NAME cli.shell_j2_springback_check COMMAND /usr/bin/python3
   ${EFG_CLI_TMP}/shell_j2_springback/strip_j2_springback.e)
 set_tests_properties(cli.shell_j2_springback_check PROPERTIES LABELS cli
   FIXTURES_REQUIRED shell_j2_springback)
+# The thickness output: a J2 strip pulled elastically, then past yield; every particle's
+# thickness against the hand values of uniaxial plane stress (tests/cli/check_shell_thickness.py).
+efg_cli_test(NAME cli.shell_j2_thinning
+  COMMAND "${efg}|run|tests/scenes/shells/strip_j2_thinning.yaml|-o|${EFG_CLI_TMP}/shell_j2_thinning"
+  EXIT 0 TEXT "stage 'plastic' done: 4 steps, 0 cutbacks"
+  FILE ${EFG_CLI_TMP}/shell_j2_thinning/strip_j2_thinning.e)
+set_tests_properties(cli.shell_j2_thinning PROPERTIES FIXTURES_SETUP shell_j2_thinning)
+add_test(NAME cli.shell_j2_thinning_check COMMAND /usr/bin/python3
+  ${CMAKE_CURRENT_SOURCE_DIR}/check_shell_thickness.py
+  ${EFG_CLI_TMP}/shell_j2_thinning/strip_j2_thinning.e)
+set_tests_properties(cli.shell_j2_thinning_check PROPERTIES LABELS cli
+  FIXTURES_REQUIRED shell_j2_thinning)

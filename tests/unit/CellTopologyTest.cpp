@@ -105,7 +105,10 @@ TEST(CellTopology, ExodusNames) {
   for (auto t : {CellType::quad4, CellType::tri3, CellType::hex8, CellType::tet4, CellType::wedge6})
     EXPECT_EQ(cell_type_from_exodus_name(cell_exodus_name(t)), t);
   EXPECT_EQ(cell_type_from_exodus_name("hex"), CellType::hex8);
-  EXPECT_FALSE(cell_type_from_exodus_name("SHELL4").has_value());
+  // shell cells are the surface cells of a 3D shell mesh (mesh/SurfaceChart.hpp)
+  EXPECT_EQ(cell_type_from_exodus_name("SHELL4"), CellType::quad4);
+  EXPECT_EQ(cell_type_from_exodus_name("TRISHELL3"), CellType::tri3);
+  EXPECT_FALSE(cell_type_from_exodus_name("SHELL8").has_value());
   EXPECT_FALSE(cell_type_from_exodus_name("HEX20").has_value());
 }
 

@@ -13,6 +13,7 @@
 #include "io/ExodusWriter.hpp"
 #include "io/NetcdfHeaderCheck.hpp"
 #include "mesh/MeshValidation.hpp"
+#include "mesh/SurfaceChart.hpp"
 #include "support/TestMeshes.hpp"
 
 namespace efg {
@@ -166,20 +167,85 @@ TEST(ExodusReader, TruncatedFilesAreRejected) {
   }
 }
 
-TEST(ExodusReader, RejectsUnsupportedElementTypes) {
-  const auto path = test::scratch_dir("shell") + "/shell.e";
+/// A one-block 3D file of one cell of `type` with `nodes` nodes at x, y, z.
+std::string one_cell_file(const char* name, const char* type, int nodes, const double* x,
+                          const double* y, const double* z) {
+  const auto path = test::scratch_dir(name) + "/" + name + ".e";
   int cpu = 8, io = 8;
   const int id = ex_create(path.c_str(), EX_CLOBBER, &cpu, &io);
-  ASSERT_GE(id, 0);
-  const double x[4] = {0, 1, 1, 0}, y[4] = {0, 0, 1, 1}, z[4] = {0, 0, 0, 0};
-  ASSERT_GE(ex_put_init(id, "shell", 3, 4, 1, 1, 0, 0), 0);
-  ASSERT_GE(ex_put_coord(id, x, y, z), 0);
-  ASSERT_GE(ex_put_block(id, EX_ELEM_BLOCK, 7, "SHELL4", 1, 4, 0, 0, 0), 0);
-  const int conn[4] = {1, 2, 3, 4};
-  ASSERT_GE(ex_put_conn(id, EX_ELEM_BLOCK, 7, conn, nullptr, nullptr), 0);
+  EXPECT_GE(id, 0);
+  EXPECT_GE(ex_put_init(id, name, 3, nodes, 1, 1, 0, 0), 0);
+  EXPECT_GE(ex_put_coord(id, x, y, z), 0);
+  EXPECT_GE(ex_put_block(id, EX_ELEM_BLOCK, 7, type, 1, nodes, 0, 0, 0), 0);
+  std::vector<int> conn;
+  for (int k = 1; k <= nodes; ++k) conn.push_back(k);
+  EXPECT_GE(ex_put_conn(id, EX_ELEM_BLOCK, 7, conn.data(), nullptr, nullptr), 0);
   ex_close(id);
-  const auto error = read_error(path);
-  EXPECT_NE(error.find("element type 'SHELL4'"), std::string::npos) << error;
+  return path;
+}
+
+TEST(ExodusReader, RejectsUnsupportedElementTypes) {
+  const double x[2] = {0, 1}, y[2] = {0, 0}, z[2] = {0, 0};
+  const auto error = read_error(one_cell_file("beam", "BEAM2", 2, x, y, z));
+  EXPECT_NE(error.find("element type 'BEAM2'"), std::string::npos) << error;
+}
+
+// A SHELL4 cell in 3D is a shell surface: read as a quad4 of a 3D mesh, its chart (the
+// projection onto the plane normal to its mean normal) keeps the lengths of a flat cell, tilted
+// here by 30 degrees about x, and the 3D positions stay in BackgroundMesh::surface.
+TEST(ExodusReader, ReadsShellBlocksAsSurfaceCells) {
+  const double c = std::cos(M_PI / 6), s = std::sin(M_PI / 6);
+  const double x[4] = {0, 2, 2, 0}, y[4] = {0, 0, c, c}, z[4] = {0, 0, s, s};
+  auto mesh = read_exodus_mesh(one_cell_file("shell", "SHELL4", 4, x, y, z));
+  ASSERT_EQ(mesh.dimension, 3);
+  ASSERT_EQ(mesh.blocks.at(0).type, CellType::quad4);
+  ASSERT_TRUE(is_surface_mesh(mesh));
+  chart_surface_mesh(mesh);
+  ASSERT_EQ(mesh.dimension, 2);
+  ASSERT_EQ(mesh.surface.size(), 12u);
+  EXPECT_EQ(mesh.surface[3 * 2 + 2], s);
+  const auto& p = mesh.coordinates;
+  const auto length = [&](int a, int b) {
+    return std::hypot(p[2 * b] - p[2 * a], p[2 * b + 1] - p[2 * a + 1]);
+  };
+  EXPECT_NEAR(length(0, 1), 2.0, 1e-14);
+  EXPECT_NEAR(length(1, 2), 1.0, 1e-14);
+  EXPECT_NEAR(length(0, 2), std::sqrt(5.0), 1e-14);
+}
+
+// A surface folding beyond the projection chart (two cells 170 degrees apart, each 85 degrees
+// from their mean normal) is refused with the cell named.
+TEST(ExodusReader, ASurfaceBeyondTheProjectionChartIsRefused) {
+  BackgroundMesh mesh;
+  mesh.dimension = 3;
+  const double a = 170.0 * M_PI / 180;  // the second cell folded back by 170 degrees
+  mesh.coordinates = {0,
+                      0,
+                      0,
+                      1,
+                      0,
+                      0,
+                      1,
+                      1,
+                      0,
+                      0,
+                      1,
+                      0,
+                      0,
+                      1 + std::cos(a),
+                      std::sin(a),
+                      1,
+                      1 + std::cos(a),
+                      std::sin(a)};
+  mesh.blocks.push_back({"block_1", 1, CellType::quad4, {0, 1, 2, 3, 3, 2, 5, 4}});
+  try {
+    chart_surface_mesh(mesh);
+    FAIL() << "a fold was charted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("cell 1 (block 'block_1') turns its normal by 85"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 // A corrupted count in a classic netCDF header is refused before the library allocates what it

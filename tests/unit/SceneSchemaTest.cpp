@@ -6,12 +6,12 @@
 #include <sstream>
 
 #include "core/Errors.hpp"
+#include "model/ExactSolutions.hpp"
 #include "scene/ExactSolutionNames.hpp"
 #include "scene/ParameterListFromYaml.hpp"
 #include "scene/SceneReader.hpp"
 #include "scene/SceneSchema.hpp"
 #include "scene/SchemaMarkdown.hpp"
-#include "model/ExactSolutions.hpp"
 
 namespace efg {
 namespace {
