@@ -45,29 +45,26 @@ add_test(NAME cli.shell_j2_implicit_check COMMAND /usr/bin/python3
                 ${EFG_CLI_TMP}/shell_strip_j2_quasistatic_implicit/strip_j2_quasistatic_implicit.e)
 set_tests_properties(cli.shell_j2_implicit_check PROPERTIES LABELS cli FIXTURES_REQUIRED
   "shell_j2_implicit_np1;shell_j2_implicit_collapse;shell_strip_j2_clamped;shell_strip_elastic_clamped;shell_strip_j2_springback_release;shell_strip_j2_direct_release;shell_strip_j2_quasistatic_explicit;shell_strip_j2_quasistatic_implicit")
+# Runs tests/scenes/shells/<scene>.yaml as cli.<name> (expecting `text`), then checks its results
+# with tests/cli/<check> as cli.<name>_check.
+function(efg_shell_run_and_check name scene text check)
+  set(dir ${EFG_CLI_TMP}/${name})
+  efg_cli_test(NAME cli.${name}
+    COMMAND "${efg}|run|tests/scenes/shells/${scene}.yaml|-o|${dir}"
+    EXIT 0 TEXT "${text}" FILE ${dir}/${scene}.e)
+  set_tests_properties(cli.${name} PROPERTIES FIXTURES_SETUP ${name})
+  add_test(NAME cli.${name}_check
+    COMMAND /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/${check} ${dir}/${scene}.e)
+  set_tests_properties(cli.${name}_check PROPERTIES LABELS cli FIXTURES_REQUIRED ${name})
+endfunction()
 # Springback of a J2 shell (issues 18 and 21): bent explicitly by end rotations to 10 kappa_y,
 # released implicitly (the layers' history handed from the explicit stage to the Newton stage):
 # the curvature springs back by the closed form M / (E' I) (3 %) and by the bent strip's own
 # moment over E' I (1 %).
-efg_cli_test(NAME cli.shell_j2_springback
-  COMMAND "${efg}|run|tests/scenes/shells/strip_j2_springback.yaml|-o|${EFG_CLI_TMP}/shell_j2_springback"
-  EXIT 0 TEXT "stage 'bend' (shells, explicit) done: 32945 steps|stage 'release' done: 1 steps, 0 cutbacks"
-  FILE ${EFG_CLI_TMP}/shell_j2_springback/strip_j2_springback.e)
-set_tests_properties(cli.shell_j2_springback PROPERTIES FIXTURES_SETUP shell_j2_springback)
-add_test(NAME cli.shell_j2_springback_check COMMAND /usr/bin/python3
-  ${CMAKE_CURRENT_SOURCE_DIR}/check_shell_springback.py
-  ${EFG_CLI_TMP}/shell_j2_springback/strip_j2_springback.e)
-set_tests_properties(cli.shell_j2_springback_check PROPERTIES LABELS cli
-  FIXTURES_REQUIRED shell_j2_springback)
+efg_shell_run_and_check(shell_j2_springback strip_j2_springback
+  "stage 'bend' (shells, explicit) done: 32945 steps|stage 'release' done: 1 steps, 0 cutbacks"
+  check_shell_springback.py)
 # The thickness output: a J2 strip pulled elastically, then past yield; every particle's
 # thickness against the hand values of uniaxial plane stress (tests/cli/check_shell_thickness.py).
-efg_cli_test(NAME cli.shell_j2_thinning
-  COMMAND "${efg}|run|tests/scenes/shells/strip_j2_thinning.yaml|-o|${EFG_CLI_TMP}/shell_j2_thinning"
-  EXIT 0 TEXT "stage 'plastic' done: 4 steps, 0 cutbacks"
-  FILE ${EFG_CLI_TMP}/shell_j2_thinning/strip_j2_thinning.e)
-set_tests_properties(cli.shell_j2_thinning PROPERTIES FIXTURES_SETUP shell_j2_thinning)
-add_test(NAME cli.shell_j2_thinning_check COMMAND /usr/bin/python3
-  ${CMAKE_CURRENT_SOURCE_DIR}/check_shell_thickness.py
-  ${EFG_CLI_TMP}/shell_j2_thinning/strip_j2_thinning.e)
-set_tests_properties(cli.shell_j2_thinning_check PROPERTIES LABELS cli
-  FIXTURES_REQUIRED shell_j2_thinning)
+efg_shell_run_and_check(shell_j2_thinning strip_j2_thinning
+  "stage 'plastic' done: 4 steps, 0 cutbacks" check_shell_thickness.py)
