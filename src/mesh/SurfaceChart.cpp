@@ -82,7 +82,16 @@ std::array<double, 2> chart_coordinates(const SurfaceProjection& p, const double
   return {dot3(d, p.e1), dot3(d, p.e2)};
 }
 
-void chart_surface_mesh(BackgroundMesh& mesh) {
+void chart_surface_mesh(BackgroundMesh& mesh, const SurfaceChartMap& chart) {
+  const std::size_t nodes = mesh.node_count();
+  if (chart) {
+    mesh.surface = mesh.coordinates;
+    std::vector<double> coordinates(2 * nodes);
+    for (std::size_t i = 0; i < nodes; ++i) chart(&mesh.surface[3 * i], &coordinates[2 * i]);
+    mesh.coordinates = std::move(coordinates);
+    mesh.dimension = 2;
+    return;
+  }
   const auto p = surface_projection(mesh);
   const double steepest = std::cos(80.0 * M_PI / 180.0);
   for_each_triangle(mesh, [&](std::size_t cell, const ElementBlock& block, LocalIndex a,
@@ -106,14 +115,13 @@ void chart_surface_mesh(BackgroundMesh& mesh) {
     throw InputError(o.str());
   });
   mesh.surface = mesh.coordinates;
-  const std::size_t nodes = mesh.node_count();
-  std::vector<double> chart(2 * nodes);
+  std::vector<double> coordinates(2 * nodes);
   for (std::size_t i = 0; i < nodes; ++i) {
     const auto c = chart_coordinates(p, &mesh.surface[3 * i]);
-    chart[2 * i] = c[0];
-    chart[2 * i + 1] = c[1];
+    coordinates[2 * i] = c[0];
+    coordinates[2 * i + 1] = c[1];
   }
-  mesh.coordinates = std::move(chart);
+  mesh.coordinates = std::move(coordinates);
   mesh.dimension = 2;
 }
 

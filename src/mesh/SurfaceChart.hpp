@@ -5,12 +5,14 @@
 // area-weighted mean normal, x along the projection of the global x axis (of y when x is within
 // 25 degrees of the normal): one chart for sheets, panels, roofs and shell segments whose normal
 // stays within 80 degrees of the mean (checked cell by cell: a steeper cell is stretched more
-// than 5.8 times, or the surface folds over itself). The strains' metric of the shells
+// than 5.8 times, or the surface folds over itself); or the scene's own chart (mesh.chart, e.g.
+// latitude and longitude of a sphere, the angle around a cylinder). The strains' metric of the shells
 // (shells/ShellMetric.hpp) accounts for the projection's stretch; the 3D positions stay in
 // BackgroundMesh::surface.
 #pragma once
 
 #include <array>
+#include <functional>
 
 #include "mesh/BackgroundMesh.hpp"
 
@@ -30,9 +32,13 @@ SurfaceProjection surface_projection(const BackgroundMesh& mesh);
 /// The chart coordinates of a 3D point (its projection onto the chart's plane).
 std::array<double, 2> chart_coordinates(const SurfaceProjection& p, const double* X);
 
+/// A chart given by the user (the scene's mesh.chart): the 2D coordinates of the 3D point X.
+using SurfaceChartMap = std::function<void(const double* X, double* chart)>;
+
 /// Turns a surface mesh into its chart: mesh.surface gets the 3D positions, mesh.coordinates the
-/// chart's 2D ones, dimension 2. Throws InputError naming the cell whose normal turns by 80
-/// degrees or more from the projection direction.
-void chart_surface_mesh(BackgroundMesh& mesh);
+/// chart's 2D ones, dimension 2. The projection chart throws InputError naming the cell whose
+/// normal turns by 80 degrees or more from the projection direction; a given `chart` is taken as
+/// it is (the mesh's validation then refuses cells it inverts or collapses).
+void chart_surface_mesh(BackgroundMesh& mesh, const SurfaceChartMap& chart = {});
 
 }  // namespace efg

@@ -37,7 +37,7 @@ BackgroundMesh load_mesh(const CommPtr& comm, Scene& scene) {
           scene.generator ? generate_mesh(*scene.generator) : read_exodus_mesh(scene.mesh_file);
       for (const auto& block : scene.more_blocks) append_generated(m, block);
       // a shell surface in 3D: the shells work on its chart (mesh/SurfaceChart.hpp)
-      if (scene.has_shells() && is_surface_mesh(m)) chart_surface_mesh(m);
+      if (scene.has_shells() && is_surface_mesh(m)) chart_surface_mesh(m, scene.surface_chart);
       validate_mesh(m);
       return m;
     } catch (const InputError& e) {
@@ -47,6 +47,11 @@ BackgroundMesh load_mesh(const CommPtr& comm, Scene& scene) {
                                                std::string("mesh.") + key, e.what()));
     }
   });
+  if (scene.surface_chart && mesh.surface.empty())
+    throw InputError(schema::located_message(
+        scene.file, scene.document["mesh"]["chart"], "mesh.chart",
+        "a chart is for a shell surface read in 3D (SHELL4 or TRISHELL3 cells, shell parts); "
+        "this mesh is none: expected no chart"));
   chart_shell_points(scene, mesh);
   add_scene_node_sets(scene, mesh);
   check_scene_against_mesh(scene, mesh);

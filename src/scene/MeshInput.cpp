@@ -67,6 +67,13 @@ GeneratorSpec generator_spec(const Scene& s, const YAML::Node& g, const YAML::No
 }
 
 void read_mesh(Scene& s, const YAML::Node& m, const YAML::Node& doc) {
+  if (m["chart"]) {
+    const auto chart =
+        read_fields(s, m["chart"], doc["chart"], "mesh.chart", ExpressionVariables::position);
+    s.surface_chart = [chart](const double* X, double* c) {
+      for (std::size_t k = 0; k < 2; ++k) c[k] = chart[k].at(X, 0.0);
+    };
+  }
   if (m["file"]) {
     const fs::path given = m["file"].as<std::string>();
     const fs::path path = given.is_absolute() ? given : fs::path(s.directory) / given;

@@ -57,6 +57,16 @@ schema::SpecPtr mesh_spec() {
                      "node set all holds every node.",
                      generate_spec("A further generated block.", "")),
                 "[]")
+      .optional("chart",
+                real_list("A shell surface read in 3D (SHELL4 / TRISHELL3 cells): its chart, the "
+                          "2D coordinates the shells work on, as expressions of the surface "
+                          "point's x, y, z (e.g. [R*asin(z/R), R*atan2(y, x)]: latitude and "
+                          "longitude of a sphere as arc lengths; one-to-one on the surface). "
+                          "Default: the projection onto the plane normal to the surface's mean "
+                          "normal, for surfaces within 80 degrees of it (docs/shells.md).",
+                          "length")
+                    .items(2, 2)
+                    .varying(ExpressionVariables::position))
       .exactly_one_of({"file", "generate"});
 }
 

@@ -12,6 +12,7 @@
 
 #include "expressions/Expression.hpp"
 #include "mesh/MeshGenerator.hpp"
+#include "mesh/SurfaceChart.hpp"
 
 namespace efg {
 
@@ -236,6 +237,9 @@ struct Scene {
   std::map<std::string, double> parameters;  ///< named constants (parameters:), usable in values
   std::string mesh_file;                     ///< resolved path, empty when generated
   std::optional<GeneratorSpec> generator;
+  /// mesh.chart: the 2D chart of a shell surface read in 3D, (x, y) of its point X (3 entries);
+  /// empty: the projection chart of mesh/SurfaceChart.hpp.
+  SurfaceChartMap surface_chart;
   std::vector<GeneratorSpec> more_blocks;  ///< mesh.more_blocks: appended, nodes of their own
   std::vector<PartSpec> parts;
   std::vector<MaterialSpec> materials;

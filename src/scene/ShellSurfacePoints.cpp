@@ -8,7 +8,8 @@ void chart_shell_points(Scene& scene, const BackgroundMesh& mesh) {
   if (mesh.surface.empty()) return;
   const auto projection = surface_projection(mesh);
   const auto to_chart = [&](std::array<double, 3>& point) {
-    const auto c = chart_coordinates(projection, point.data());
+    auto c = chart_coordinates(projection, point.data());
+    if (scene.surface_chart) scene.surface_chart(point.data(), c.data());
     point = {c[0], c[1], 0.0};
   };
   const auto& d = scene.document;

@@ -9,7 +9,8 @@
 namespace efg {
 
 /// For a charted surface mesh (mesh.surface set): every probe and shell_point_load point given
-/// with 3 entries becomes its chart coordinates (x, y, 0). Nothing otherwise.
+/// with 3 entries becomes its chart coordinates (x, y, 0) (the scene's mesh.chart, or the
+/// projection). Nothing otherwise.
 void chart_shell_points(Scene& scene, const BackgroundMesh& mesh);
 
 }  // namespace efg

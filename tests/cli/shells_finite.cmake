@@ -156,7 +156,12 @@ add_test(NAME verification.shell_surface_hemisphere
 add_test(NAME verification.shell_surface_ranks
   COMMAND ${efg_run_surface} ${EFG_CLI_TMP}/shell_surface_ranks hemisphere --levels 12
           --check-from 100 --np2 "${efg_mpirun2_words}" --rank-tol 2e-6)
+# The hemisphere's 3D mesh with the chart given (mesh.chart: latitude and longitude as arc
+# lengths): the latitude-longitude convergence of the 2D-chart scene comes back.
+add_test(NAME verification.shell_surface_hemisphere_chart
+  COMMAND ${efg_run_surface} ${EFG_CLI_TMP}/shell_surface_hemisphere_chart hemisphere
+          --levels 12,16,24,32 --chart "R * asin(z / R); R * atan2(y, x)")
 set_tests_properties(verification.shell_surface_roof verification.shell_surface_hemisphere
-  PROPERTIES LABELS verification TIMEOUT 600)
+  verification.shell_surface_hemisphere_chart PROPERTIES LABELS verification TIMEOUT 600)
 set_tests_properties(verification.shell_surface_ranks PROPERTIES LABELS "verification;mpi"
   PROCESSORS 2 TIMEOUT 600)

@@ -17,8 +17,11 @@ within --final-bound, the change from level to level shrinking; the results mesh
 surface (every node on the sphere / cylinder to 1e-12 R). With --np2 each level runs on 2 ranks
 as well and the probes agree to --rank-tol.
 
+--chart "X; Y" gives the scene's mesh.chart (expressions of x, y, z; default: efg's projection).
+
 usage: run_surface.py EFG OUTDIR hemisphere|roof [--levels 12,16,24] [--check-from 16]
                       [--bound 0.02] [--final-bound B] [--np2 MPIRUN] [--rank-tol 1e-7]
+                      [--chart "X; Y"]
 """
 import argparse
 import json
@@ -54,7 +57,7 @@ R_HEMI, TOP = 10.0, 72.0 * math.pi / 180
 R_ROOF, SECTOR, HALF = 25.0, 40.0 * math.pi / 180, 25.0
 
 
-def hemisphere(n, path):
+def hemisphere(n, path, chart=""):
     # i along the meridian from the equator to the hole, j along the parallel from y = 0
     def point(u, v):
         lat, lon = u * TOP, v * math.pi / 2
@@ -67,7 +70,7 @@ def hemisphere(n, path):
     pin = "[%r, %r, %r]" % tuple(c - 1e-6 for c in top), "[%r, %r, %r]" % tuple(c + 1e-6 for c in top)
     return """title: pinched hemisphere (quarter) on a 3D SHELL4 mesh
 parameters: {R: 10.0, F: 1e-4}
-mesh: {file: %s}
+mesh: {file: %s%s}
 node_sets:
   - {name: pin, lower: %s, upper: %s, within: hole}
 parts:
@@ -89,10 +92,10 @@ stages:
   - {name: load, driver: implicit, end_time: 1, load_steps: 1}
 output:
   fields: [displacement]
-""" % ((os.path.basename(path),) + pin)
+""" % ((os.path.basename(path), chart) + pin)
 
 
-def roof(n, path):
+def roof(n, path, chart=""):
     # i around the arc from the crown, j along the axis from mid-span
     def point(u, v):
         theta = u * SECTOR
@@ -103,7 +106,7 @@ def roof(n, path):
     edge = (R_ROOF * math.sin(SECTOR), 0.0, R_ROOF * math.cos(SECTOR) - R_ROOF)
     return """title: Scordelis-Lo roof (quarter) on a 3D SHELL4 mesh
 parameters: {factor: 1e-4}
-mesh: {file: %s}
+mesh: {file: %s%s}
 parts:
   - {name: roof, blocks: [block_1], material: concrete, shell: {thickness: 0.25},
      section: {basis: quadratic, dilation: 2.5, formulation: total_lagrangian}}
@@ -122,7 +125,7 @@ stages:
   - {name: load, driver: implicit, end_time: 1, load_steps: 1}
 output:
   fields: [displacement]
-""" % ((os.path.basename(path),) + edge)
+""" % ((os.path.basename(path), chart) + edge)
 
 
 CASES = {
@@ -159,6 +162,7 @@ def main():
     a.add_argument("--final-bound", type=float)
     a.add_argument("--np2")
     a.add_argument("--rank-tol", type=float, default=1e-7)
+    a.add_argument("--chart")
     args = a.parse_args()
     make, column, scale, reference, distance = CASES[args.case]
     os.makedirs(args.outdir, exist_ok=True)
@@ -166,7 +170,9 @@ def main():
     errors, values = [], []
     for n in levels:
         name = "%s_%d" % (args.case, n)
-        text = make(n, os.path.join(args.outdir, name + ".exo"))
+        chart = "" if not args.chart else ", chart: [%s]" % ", ".join(
+            '"%s"' % e.strip() for e in args.chart.split(";"))
+        text = make(n, os.path.join(args.outdir, name + ".exo"), chart)
         results, report = run(args.efg, args.outdir, text, name)
         value = scale * report["probes"][column]
         values.append(value)
