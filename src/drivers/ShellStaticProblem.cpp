@@ -11,7 +11,10 @@ ShellStaticProblem::ShellStaticProblem(const Model& model, const FlatShellOperat
       constraints_(model, op, supports),
       f_ext_(op.maps().owned_dofs),
       d_overlap_(op.maps().overlap_dofs),
-      values_(constraints_.collocation_values(supports)) {
+      values_(constraints_.collocation_values(supports)),
+      accepted_(values_.size(), 0.0) {
+  for (const auto& [support, component] : constraints_.row_supports())
+    rotation_row_.push_back(component >= shell_rx);
   // The collocation rows' scales come from the tangent's rows at the start (kept afterwards).
   auto K = create_matrix();
   op_.fill_tangent(Vector(op.maps().owned_dofs), constraints_, *K);
@@ -28,6 +31,9 @@ void ShellStaticProblem::set_level(const FlatShellOperator::Pressure& pressure,
   constraints_.zero_constrained(f_ext_);
   external_norm_ = f_ext_.norm2();
   values_ = constraints_.collocation_values(supports);
+  if (op_.finite_rotations())  // the step's rotation (shells/FiniteRotation.hpp)
+    for (std::size_t k = 0; k < values_.size(); ++k)
+      if (rotation_row_[k]) values_[k] -= accepted_[k];
 }
 
 void ShellStaticProblem::residual(const Vector& d_owned, Vector& r_owned) {
@@ -67,7 +73,10 @@ void ShellStaticProblem::commit(Vector& d_owned) {
   residual(d_owned, r);  // every point's and edge point's trial state at d
   op_.commit_state();
   constraints_.commit();
-  if (op_.finite_rotations()) op_.accept_rotations(d_owned);
+  if (!op_.finite_rotations()) return;
+  op_.accept_rotations(d_owned);
+  for (std::size_t k = 0; k < values_.size(); ++k)
+    if (rotation_row_[k]) accepted_[k] += values_[k];
 }
 
 }  // namespace efg

@@ -28,11 +28,19 @@ class ShellStaticProblem : public NonlinearProblem {
 
   /// The loads and prescribed values of a load level: the pressure, further loads added to the
   /// external force by `more_loads` (edge line loads), the supports' values, and a follower
-  /// pressure (empty: none), whose force depends on d (residual and tangent).
+  /// pressure (empty: none), whose force depends on d (residual and tangent). With finite
+  /// rotations a held rotation's row prescribes its change since the last accepted step (the
+  /// rotation dofs are that change, the frames carry the rest): the level's value less the
+  /// accepted one (start_rotations, then every commit).
   void set_level(const FlatShellOperator::Pressure& pressure,
                  const std::vector<ShellSupport>& supports,
                  const std::function<void(Vector&)>& more_loads = {},
                  const FlatShellOperator::Pressure& follower = {});
+
+  /// The supports' rotations the frames carry at the stage's start (finite rotations).
+  void start_rotations(const std::vector<ShellSupport>& supports) {
+    accepted_ = constraints_.collocation_values(supports);
+  }
 
   void residual(const Vector& d_owned, Vector& r_owned) override;
   void jacobian(const Vector& d_owned, FEMatrix& K) override;
@@ -65,6 +73,10 @@ class ShellStaticProblem : public NonlinearProblem {
   ShellConstraints constraints_;
   Vector f_ext_, d_overlap_;
   std::vector<double> values_;  ///< the supports' values, collocation rows' order
+  /// finite rotations: the held rotations' values at the last accepted step (rows' order; the
+  /// translation rows' entries unused) and which rows hold a rotation
+  std::vector<double> accepted_;
+  std::vector<char> rotation_row_;
   double external_norm_ = 0, internal_norm_ = 0;
   std::unique_ptr<Vector> released_;      ///< springback: r(d0) on the free rows (null: none)
   FlatShellOperator::Pressure follower_;  ///< the level's follower pressure (empty: none)

@@ -23,6 +23,7 @@ ShellImplicitSummary run_shell_implicit_stage(const Model& model, const FlatShel
   const double interval = stage.output_interval.value_or(span);
   const auto ramp = [&](double time) { return std::min(1.0, time / first_end); };
   ShellStaticProblem problem(model, op, shell_supports_at(scene, stage.name, end));
+  problem.start_rotations(shell_supports_at(scene, stage.name, start, ramp(start)));
   const ShellLineAndPointLoads edge_loads(model, op, stage.name);
   const auto edge_loads_at = [&](double time) {
     return [&edge_loads, time, r = ramp(time)](Vector& f) { edge_loads.add(time, r, f); };

@@ -153,14 +153,25 @@ void check_shell_scene(const Scene& s, const BackgroundMesh& mesh) {
     if (bc.method != "transformation")
       fail(s, bd["method"], path + ".method",
            "shells enforce their conditions by the transformation method in this version");
+    // With finite rotations a prescribed rotation turns the frames about one of their axes,
+    // which that turn leaves in place, so the steps' rotations add up (docs/shells.md): the
+    // other rotation held at 0, implicit stages only (explicit ones hold rotations at 0).
     for (std::size_t c = 0; finite && c < 2; ++c) {
       const auto& r = bc.rotations[c];
-      if (r && (r->varies() || r->constant != 0)) {
-        const char* key = c == 0 ? "rx" : "ry";
+      if (!r || (!r->varies() && r->constant == 0)) continue;
+      const char* key = c == 0 ? "rx" : "ry";
+      const char* other = c == 0 ? "ry" : "rx";
+      const auto& o = bc.rotations[1 - c];
+      if (!o || o->varies() || o->constant != 0)
         fail(s, bd[key], path + "." + key,
-             "with finite rotations a support holds rotations at 0 in this version (prescribed "
-             "rotations are not built yet): expected 0");
-      }
+             std::string("with finite rotations a prescribed rotation turns about one axis: "
+                         "expected ") +
+                 other + ": 0 in the same condition");
+      for (const auto& stage : s.stages)
+        if (stage.driver == "explicit" && bc.stages.includes(stage.name))
+          fail(s, bd[key], path + "." + key,
+               "with finite rotations explicit stages hold rotations at 0 (stage '" + stage.name +
+                   "'): expected 0, or the condition in implicit stages only (stages)");
     }
     if (bc.from_exact[0] || bc.from_exact[1] || bc.from_exact[2])
       fail(s, bd["from_exact_solution"], path + ".from_exact_solution",

@@ -73,16 +73,50 @@ void rotate_frame(ShellFrame& frame, double a, double b) {
   frame = {t1, cross(t3, t1), t3};
 }
 
-void director_rotation(const Vec3& from, const Vec3& to, const Vec3& axis, double& rx, double& ry) {
-  Vec3 t3 = from, t1 = axis;
-  axpy(1.0 / std::sqrt(dot(t3, t3)) - 1.0, t3, t3);
-  axpy(-dot(t1, t3), t3, t1);
-  axpy(1.0 / std::sqrt(dot(t1, t1)) - 1.0, t1, t1);
-  const Vec3 t2 = cross(t3, t1), w = cross(t3, to);  // |w| = |to| sin(angle)
-  const double sine = std::sqrt(dot(w, w));
-  const double scale = sine > 0 ? std::atan2(sine, dot(t3, to)) / sine : 1.0;
-  rx = scale * dot(w, t1);
-  ry = scale * dot(w, t2);
+namespace {
+
+/// t3 normalized, t1 made orthogonal to it and normalized, t2 = t3 x t1.
+ShellFrame orthonormal(ShellFrame f) {
+  axpy(1.0 / std::sqrt(dot(f.t3, f.t3)) - 1.0, f.t3, f.t3);
+  axpy(-dot(f.t1, f.t3), f.t3, f.t1);
+  axpy(1.0 / std::sqrt(dot(f.t1, f.t1)) - 1.0, f.t1, f.t1);
+  f.t2 = cross(f.t3, f.t1);
+  return f;
+}
+
+}  // namespace
+
+void frame_rotation(const ShellFrame& from, const ShellFrame& now, double& rx, double& ry) {
+  const auto A = orthonormal(from), B = orthonormal(now);
+  // R = sum_i B_i A_i^T maps A's vectors onto B's
+  double R[3][3] = {};
+  for (const auto& [a, b] : {std::pair{A.t1, B.t1}, {A.t2, B.t2}, {A.t3, B.t3}})
+    for (std::size_t j = 0; j < 3; ++j)
+      for (std::size_t k = 0; k < 3; ++k) R[j][k] += b[j] * a[k];
+  const double cosine = std::max(-1.0, std::min(1.0, 0.5 * (R[0][0] + R[1][1] + R[2][2] - 1)));
+  Vec3 w = {R[2][1] - R[1][2], R[0][2] - R[2][0], R[1][0] - R[0][1]};  // 2 sin(angle) axis
+  const double sine = std::sqrt(dot(w, w)) / 2;
+  const double angle = std::atan2(sine, cosine);  // accurate at 0 and at pi, unlike acos
+  if (angle < 0.5 * M_PI) {
+    // w / (2 sin) is the axis; angle / sin -> 1 as the angle vanishes
+    const double scale = sine > 0 ? angle / (2 * sine) : 0.5;
+    for (auto& v : w) v *= scale;
+  } else {
+    // near pi the symmetric part tells the axis: (R + R^T) / 2 - cos I = (1 - cos) n n^T, whose
+    // column of the largest diagonal entry is along n; w's sign (what is left of it) orients it
+    std::size_t k = 0;
+    for (std::size_t j = 1; j < 3; ++j)
+      if (R[j][j] > R[k][k]) k = j;
+    Vec3 n = {0.5 * (R[0][k] + R[k][0]), 0.5 * (R[1][k] + R[k][1]), 0.5 * (R[2][k] + R[k][2])};
+    n[k] = R[k][k] - cosine;
+    const double length = std::sqrt(dot(n, n));
+    for (auto& v : n) v /= length;
+    if (dot(n, w) < 0)
+      for (auto& v : n) v = -v;
+    for (std::size_t j = 0; j < 3; ++j) w[j] = angle * n[j];
+  }
+  rx = dot(w, A.t1);
+  ry = dot(w, A.t2);
 }
 
 ShellPointGeometry reference_geometry() {

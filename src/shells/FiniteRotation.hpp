@@ -65,11 +65,12 @@ NodeDirector node_director(const ShellFrame& frame, double a, double b);
 /// frame <- exp(a t1 + b t2) frame: the accepted rotation made the frame's own.
 void rotate_frame(ShellFrame& frame, double a, double b);
 
-/// The rotation turning the direction of `from` into that of `to` (angle in [0, pi] about
-/// from x to), as components about t1 and t2 of the frame of director `from` whose t1 is
-/// `axis` made orthogonal to it (the flat case: from = E3, axis = E1, the rotations about x and
-/// y of the linear shell for small ones).
-void director_rotation(const Vec3& from, const Vec3& to, const Vec3& axis, double& rx, double& ry);
+/// The rotation R turning frame `from` into frame `now` (each made orthonormal from its t3 and t1
+/// first: interpolated frames), as its rotation vector's components about from's t1 and t2 (the
+/// flat case: the rotations about x and y; a drilling part about t3 is not shown). The rotation
+/// vector is R's logarithm, angle in [0, pi]: its axis is R's fixed direction also at pi, where
+/// the directors alone (antiparallel) would not tell it.
+void frame_rotation(const ShellFrame& from, const ShellFrame& now, double& rx, double& ry);
 
 /// The point quantities F_a, D_a (smoothed), f_a (direct) and d.
 struct ShellPointGeometry {

@@ -130,8 +130,9 @@ class FlatShellOperator {
   /// A part has a curved reference (parts[].shell.reference, shells/ShellReference.hpp): its
   /// particles start from the mapped surface (an offset from the flat mesh) with its frames.
   bool curved() const { return curved_; }
-  /// The rotation (about the reference frame's t1, t2 there) that turns the reference director
-  /// into the current one at a point of shape functions phi over overlap particles `nodes`.
+  /// The rotation (about the reference frame's t1, t2 there) that turns the reference frame into
+  /// the current one at a point of shape functions phi over overlap particles `nodes`
+  /// (shells/FiniteRotation.hpp frame_rotation: well defined up to and at pi).
   template <class View>
   void physical_rotation(const int* nodes, const double* phi, std::size_t n, const View& d,
                          double& rx, double& ry) const;
@@ -268,19 +269,22 @@ class FlatShellOperator {
 template <class View>
 void FlatShellOperator::physical_rotation(const int* nodes, const double* phi, std::size_t n,
                                           const View& d, double& rx, double& ry) const {
-  Vec3 now{}, then{}, axis{};
+  // the interpolated reference and current frames (each particle's frame turned by its
+  // rotation dofs), and the rotation between them
+  ShellFrame then{{}, {}, {}}, now{{}, {}, {}};
   for (std::size_t k = 0; k < n; ++k) {
     const auto lid = static_cast<std::size_t>(nodes[k]);
-    const auto dI = node_director(frames_[lid], d(lid * shell_dofs_per_node + shell_rx, 0),
-                                  d(lid * shell_dofs_per_node + shell_ry, 0))
-                        .d;
+    ShellFrame current = frames_[lid];
+    rotate_frame(current, d(lid * shell_dofs_per_node + shell_rx, 0),
+                 d(lid * shell_dofs_per_node + shell_ry, 0));
     for (std::size_t c = 0; c < 3; ++c) {
-      now[c] += phi[k] * dI[c];
-      then[c] += phi[k] * reference_frames_[lid].t3[c];
-      axis[c] += phi[k] * reference_frames_[lid].t1[c];
+      then.t1[c] += phi[k] * reference_frames_[lid].t1[c];
+      then.t3[c] += phi[k] * reference_frames_[lid].t3[c];
+      now.t1[c] += phi[k] * current.t1[c];
+      now.t3[c] += phi[k] * current.t3[c];
     }
   }
-  director_rotation(then, now, axis, rx, ry);
+  frame_rotation(then, now, rx, ry);
 }
 
 }  // namespace efg
