@@ -28,7 +28,7 @@ NODAL VARIABLES (all) relative 1.e-8 floor 0.0
 	displacement_x	relative 1.e-8 floor 0.015	# scale 14.6
 	displacement_y	absolute 5.e-10			# 2e-4 (zero for nu = 0 up to discretization); noise 3.7e-12
 	displacement_z	relative 1.e-8 floor 0.0086	# scale 8.64
-	rotation_x	absolute 1.e-9			# 0.04; noise 7.3e-12
+	rotation_x	absolute 1.e-9			# 4e-4 (the frames' rotation; 0.04 with the former director-based output near pi); noise below 1e-9
 	rotation_y	relative 1.e-8 floor 0.0031	# scale 3.13
 	membrane_force_xx	relative 1.e-8 floor 2.2	# scale 220
 	membrane_force_yy	relative 1.e-8 floor 0.43	# scale 43
