@@ -57,6 +57,22 @@ R_HEMI, TOP = 10.0, 72.0 * math.pi / 180
 R_ROOF, SECTOR, HALF = 25.0, 40.0 * math.pi / 180, 25.0
 
 
+# What the two scenes share; `rest` holds their node sets, conditions, loads and probes.
+SCENE = """title: {title} on a 3D SHELL4 mesh
+parameters: {parameters}
+mesh: {{file: {mesh}{chart}}}
+parts:
+  - {{name: shell, blocks: [block_1], material: {material}, shell: {{thickness: {thickness}}},
+     section: {{basis: quadratic, dilation: 2.5, formulation: total_lagrangian}}}}
+materials:
+  - {{name: {material}, model: linear_elastic, youngs_modulus: {E}, poissons_ratio: {nu}}}
+{rest}stages:
+  - {{name: load, driver: implicit, end_time: 1, load_steps: 1}}
+output:
+  fields: [displacement]
+"""
+
+
 def hemisphere(n, path, chart=""):
     # i along the meridian from the equator to the hole, j along the parallel from y = 0
     def point(u, v):
@@ -67,17 +83,8 @@ def hemisphere(n, path, chart=""):
     write_exodus(path, "pinched hemisphere quarter", coords, conn, "SHELL4",
                  {"equator": e["i0"], "hole": e["i1"], "lon0": e["j0"], "lon90": e["j1"]})
     top = (R_HEMI * math.cos(TOP), 0.0, R_HEMI * math.sin(TOP))
-    pin = "[%r, %r, %r]" % tuple(c - 1e-6 for c in top), "[%r, %r, %r]" % tuple(c + 1e-6 for c in top)
-    return """title: pinched hemisphere (quarter) on a 3D SHELL4 mesh
-parameters: {R: 10.0, F: 1e-4}
-mesh: {file: %s%s}
-node_sets:
-  - {name: pin, lower: %s, upper: %s, within: hole}
-parts:
-  - {name: hemisphere, blocks: [block_1], material: steel, shell: {thickness: 0.04},
-     section: {basis: quadratic, dilation: 2.5, formulation: total_lagrangian}}
-materials:
-  - {name: steel, model: linear_elastic, youngs_modulus: 6.825e7, poissons_ratio: 0.3}
+    rest = """node_sets:
+  - {name: pin, lower: [%r, %r, %r], upper: [%r, %r, %r], within: hole}
 boundary_conditions:
   # rotations about the support's edge: rx about its tangent (the meridian)
   - {name: symmetry_xz, type: displacement, node_set: lon0, y: 0, rx: 0}
@@ -88,11 +95,10 @@ loads:
   - {name: in, type: shell_point_load, point: [0, R, 0], value: [0, -F, 0, 0, 0]}
 probes:
   - {name: load_point, point: [R, 0, 0]}
-stages:
-  - {name: load, driver: implicit, end_time: 1, load_steps: 1}
-output:
-  fields: [displacement]
-""" % ((os.path.basename(path), chart) + pin)
+""" % (tuple(c - 1e-6 for c in top) + tuple(c + 1e-6 for c in top))
+    return SCENE.format(title="pinched hemisphere (quarter)", parameters="{R: 10.0, F: 1e-4}",
+                        mesh=os.path.basename(path), chart=chart, material="steel",
+                        thickness=0.04, E=6.825e7, nu=0.3, rest=rest)
 
 
 def roof(n, path, chart=""):
@@ -104,15 +110,7 @@ def roof(n, path, chart=""):
     write_exodus(path, "Scordelis-Lo roof quarter", coords, conn, "SHELL4",
                  {"crown": e["i0"], "free": e["i1"], "midspan": e["j0"], "diaphragm": e["j1"]})
     edge = (R_ROOF * math.sin(SECTOR), 0.0, R_ROOF * math.cos(SECTOR) - R_ROOF)
-    return """title: Scordelis-Lo roof (quarter) on a 3D SHELL4 mesh
-parameters: {factor: 1e-4}
-mesh: {file: %s%s}
-parts:
-  - {name: roof, blocks: [block_1], material: concrete, shell: {thickness: 0.25},
-     section: {basis: quadratic, dilation: 2.5, formulation: total_lagrangian}}
-materials:
-  - {name: concrete, model: linear_elastic, youngs_modulus: 4.32e8, poissons_ratio: 0.0}
-boundary_conditions:
+    rest = """boundary_conditions:
   - {name: diaphragm, type: displacement, node_set: diaphragm, x: 0, z: 0}
   # rotations about the support's edge: rx about its tangent
   - {name: symmetry_y, type: displacement, node_set: midspan, y: 0, rx: 0}
@@ -121,11 +119,10 @@ loads:
   - {name: weight, type: shell_pressure, value: -90 * factor}
 probes:
   - {name: free_edge, point: [%r, %r, %r]}
-stages:
-  - {name: load, driver: implicit, end_time: 1, load_steps: 1}
-output:
-  fields: [displacement]
-""" % ((os.path.basename(path), chart) + edge)
+""" % edge
+    return SCENE.format(title="Scordelis-Lo roof (quarter)", parameters="{factor: 1e-4}",
+                        mesh=os.path.basename(path), chart=chart, material="concrete",
+                        thickness=0.25, E=4.32e8, nu=0.0, rest=rest)
 
 
 CASES = {
