@@ -48,6 +48,9 @@ ShellExplicitSummary run_shell_explicit_stage(const Model& model, const FlatShel
   const std::size_t supports = supports_then.size();
   // Supports held still keep their values and do no work: nothing to re-evaluate per step.
   const bool moving = shell_supports_move(scene, stage.name);
+  std::vector<int> row_components;  // per collocation row, the component it holds
+  for (const auto& [support, component] : constraints.row_supports())
+    row_components.push_back(component);
 
   const auto internal_force = [&op](const Vector& x, Vector& f) { op.internal_force(x, f); };
   StableTimeStep stable(internal_force, mass, [&op](bool on) { op.set_elastic_probe(on); });
@@ -106,7 +109,17 @@ ShellExplicitSummary run_shell_explicit_stage(const Model& model, const FlatShel
   // t_(n+1): the predicted d + dt v projected by the multipliers gives the velocity that keeps
   // them; f_support is their force -C^T lambda in the step.
   const auto next_velocity = [&](double dt_mean, double dt_next, double t_next) {
-    if (moving) multipliers.set_values(constraints.collocation_values(supports_at(t_next)));
+    if (moving) {
+      auto g = constraints.collocation_values(supports_at(t_next));
+      // finite rotations: d's rotation dofs are the step's rotation (accepted every step), so a
+      // prescribed rotation's rows hold its change over the step (as in implicit stages)
+      if (op.finite_rotations()) {
+        const auto then = constraints.collocation_values(supports_at(t_next - dt_next));
+        for (std::size_t k = 0; k < g.size(); ++k)
+          if (row_components[k] >= shell_rx) g[k] -= then[k];
+      }
+      multipliers.set_values(g);
+    }
     v_next.update(1.0, v, dt_mean, a, 0.0);
     Tpetra::deep_copy(step, d);
     step.update(dt_next, v_next, 1.0);

@@ -155,7 +155,7 @@ void check_shell_scene(const Scene& s, const BackgroundMesh& mesh) {
            "shells enforce their conditions by the transformation method in this version");
     // With finite rotations a prescribed rotation turns the frames about one of their axes,
     // which that turn leaves in place, so the steps' rotations add up (docs/shells.md): the
-    // other rotation held at 0, implicit stages only (explicit ones hold rotations at 0).
+    // other rotation held at 0.
     for (std::size_t c = 0; finite && c < 2; ++c) {
       const auto& r = bc.rotations[c];
       if (!r || (!r->varies() && r->constant == 0)) continue;
@@ -167,11 +167,6 @@ void check_shell_scene(const Scene& s, const BackgroundMesh& mesh) {
              std::string("with finite rotations a prescribed rotation turns about one axis: "
                          "expected ") +
                  other + ": 0 in the same condition");
-      for (const auto& stage : s.stages)
-        if (stage.driver == "explicit" && bc.stages.includes(stage.name))
-          fail(s, bd[key], path + "." + key,
-               "with finite rotations explicit stages hold rotations at 0 (stage '" + stage.name +
-                   "'): expected 0, or the condition in implicit stages only (stages)");
     }
     if (bc.from_exact[0] || bc.from_exact[1] || bc.from_exact[2])
       fail(s, bd["from_exact_solution"], path + ".from_exact_solution",
