@@ -7,6 +7,7 @@
 #include "core/Log.hpp"
 #include "io/ExodusWriter.hpp"
 #include "mesh/NodalVolume.hpp"
+#include "mesh/SurfaceChart.hpp"
 #include "model/Model.hpp"
 #include "run/RunChecks.hpp"
 #include "scene/SceneEcho.hpp"
@@ -15,10 +16,11 @@
 
 namespace efg {
 namespace {
-std::string mesh_summary(const BackgroundMesh& mesh) {
+std::string mesh_summary(const BackgroundMesh& mesh, bool given_chart) {
   std::ostringstream o;
   o << "# mesh: " << mesh.source << "\n#   " << mesh.dimension << "D, " << mesh.node_count()
     << " nodes, " << mesh.cell_count() << " cells\n";
+  if (!mesh.surface.empty()) o << "#   " << surface_chart_summary(mesh, given_chart) << "\n";
   for (const auto& b : mesh.blocks)
     o << "#   block '" << b.name << "' (id " << b.id << "): " << b.cell_count() << " "
       << cell_scene_name(b.type) << "\n";
@@ -39,7 +41,7 @@ void check_command(const CommPtr& comm, const CommandLine& cl) {
   out << compact_for_echo(scene.resolved);
   Log::info("# " + cl.scene + ": valid. Resolved scene (defaults filled in):");
   Log::info(out.c_str());
-  Log::info(mesh_summary(mesh));
+  Log::info(mesh_summary(mesh, static_cast<bool>(scene.surface_chart)));
 }
 
 void mesh_command(const CommPtr& comm, const CommandLine& cl) {
@@ -49,7 +51,7 @@ void mesh_command(const CommPtr& comm, const CommandLine& cl) {
     ExodusWriter writer(cl.mesh_output, mesh, OutputLayout{}, "efg mesh of " + cl.scene);
     writer.close();
   }
-  Log::info(mesh_summary(mesh));
+  Log::info(mesh_summary(mesh, static_cast<bool>(scene.surface_chart)));
   Log::info("mesh written to " + cl.mesh_output);
 }
 

@@ -1,5 +1,6 @@
 #include "mesh/SurfaceChart.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -75,6 +76,36 @@ SurfaceProjection surface_projection(const BackgroundMesh& mesh) {
   p.e1 = unit(axis);
   p.e2 = cross3(p.normal, p.e1);
   return p;
+}
+
+std::string surface_chart_summary(const BackgroundMesh& mesh, bool given_chart) {
+  double least = 1e300, most = 0;
+  const auto& X = mesh.surface;
+  const auto& c = mesh.coordinates;
+  for_each_triangle(
+      mesh, [&](std::size_t, const ElementBlock&, LocalIndex a, LocalIndex b, LocalIndex d) {
+        const auto i = static_cast<std::size_t>(a), j = static_cast<std::size_t>(b),
+                   k = static_cast<std::size_t>(d);
+        const auto n = cross3(minus(&X[3 * j], &X[3 * i]), minus(&X[3 * k], &X[3 * i]));
+        const double chart = std::abs((c[2 * j] - c[2 * i]) * (c[2 * k + 1] - c[2 * i + 1]) -
+                                      (c[2 * k] - c[2 * i]) * (c[2 * j + 1] - c[2 * i + 1]));
+        const double ratio = std::sqrt(dot3(n, n)) / chart;
+        least = std::min(least, ratio);
+        most = std::max(most, ratio);
+      });
+  std::ostringstream o;
+  o.precision(3);
+  o << "shell surface read in 3D (" << mesh.node_count() << " nodes), charted ";
+  if (given_chart) {
+    o << "by mesh.chart";
+  } else {
+    const auto p = surface_projection(mesh);
+    const auto shown = [](double v) { return std::abs(v) < 1e-12 ? 0.0 : v; };
+    o << "by projection onto the plane normal to (" << shown(p.normal[0]) << ", "
+      << shown(p.normal[1]) << ", " << shown(p.normal[2]) << ")";
+  }
+  o << ": surface area per chart area " << least << " to " << most;
+  return o.str();
 }
 
 std::array<double, 2> chart_coordinates(const SurfaceProjection& p, const double* X) {

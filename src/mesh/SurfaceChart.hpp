@@ -13,6 +13,7 @@
 
 #include <array>
 #include <functional>
+#include <string>
 
 #include "mesh/BackgroundMesh.hpp"
 
@@ -31,6 +32,11 @@ SurfaceProjection surface_projection(const BackgroundMesh& mesh);
 
 /// The chart coordinates of a 3D point (its projection onto the chart's plane).
 std::array<double, 2> chart_coordinates(const SurfaceProjection& p, const double* X);
+
+/// One line on a charted surface mesh for logs: how many nodes, which chart (the projection's
+/// normal, or the scene's), and the range of the surface's area per chart area over its
+/// triangles (the projection's stretch: 1 / cos of a cell's angle to the normal).
+std::string surface_chart_summary(const BackgroundMesh& mesh, bool given_chart);
 
 /// A chart given by the user (the scene's mesh.chart): the 2D coordinates of the 3D point X.
 using SurfaceChartMap = std::function<void(const double* X, double* chart)>;

@@ -16,6 +16,7 @@
 #include "discretization/ShapeFunctions.hpp"
 #include "io/ResultsOutput.hpp"
 #include "mesh/NodalVolume.hpp"
+#include "mesh/SurfaceChart.hpp"
 #include "model/Curves.hpp"
 #include "model/PointOwner.hpp"
 #include "run/ShellExplicitStage.hpp"
@@ -121,6 +122,8 @@ RunOutcome run_shell_stages(const CommPtr& comm, const Model& model, const std::
                             double setup_seconds) {
   const auto started = std::chrono::steady_clock::now();
   const auto& scene = model.scene;
+  if (!model.mesh.surface.empty())
+    Log::info(surface_chart_summary(model.mesh, static_cast<bool>(scene.surface_chart)));
   const FlatShellOperator op(model);
   const auto& fields = scene.output.fields;
   const auto wants = [&](const char* f) {

@@ -191,3 +191,14 @@ add_test(NAME cli.shell_rolled_by_rotation_check COMMAND /usr/bin/python3
   ${EFG_CLI_TMP}/shell_rolled_by_rotation/strip_rolled_by_rotation.e --tail-from-step 2)
 set_tests_properties(cli.shell_rolled_by_rotation_check PROPERTIES LABELS cli
   FIXTURES_REQUIRED shell_rolled_by_rotation)
+
+# The 3D-mesh path from the command line (tests/scenes/shells/roof_surface_4.yaml): `efg check` and
+# `efg run` report the chart; the roof's mean normal tilts by 20 degrees about y, by hand
+# (sin 20, 0, cos 20) = (0.342, 0, 0.940).
+efg_cli_test(NAME cli.shell_surface_check
+  COMMAND "${efg}|check|tests/scenes/shells/roof_surface_4.yaml" EXIT 0
+  TEXT "shell surface read in 3D (25 nodes), charted by projection onto the plane normal to (0.342, 0, 0.94)")
+efg_cli_test(NAME cli.shell_surface_run
+  COMMAND "${efg}|run|tests/scenes/shells/roof_surface_4.yaml|-o|${EFG_CLI_TMP}/shell_surface_run"
+  EXIT 0 TEXT "charted by projection onto the plane normal to (0.342, 0, 0.94)|stage 'load' done: 1 steps"
+  FILE ${EFG_CLI_TMP}/shell_surface_run/roof_surface_4.e)
