@@ -114,44 +114,41 @@ std::array<double, 2> chart_coordinates(const SurfaceProjection& p, const double
 }
 
 void chart_surface_mesh(BackgroundMesh& mesh, const SurfaceChartMap& chart) {
-  const std::size_t nodes = mesh.node_count();
-  if (chart) {
-    mesh.surface = mesh.coordinates;
-    std::vector<double> coordinates(2 * nodes);
-    for (std::size_t i = 0; i < nodes; ++i) chart(&mesh.surface[3 * i], &coordinates[2 * i]);
-    mesh.coordinates = std::move(coordinates);
-    mesh.dimension = 2;
-    return;
+  auto map = chart;
+  if (!map) {  // the projection, once every cell is checked against it
+    const auto p = surface_projection(mesh);
+    const double steepest = std::cos(80.0 * M_PI / 180.0);
+    for_each_triangle(mesh, [&](std::size_t cell, const ElementBlock& block, LocalIndex a,
+                                LocalIndex b, LocalIndex c) {
+      const double* x = mesh.coordinates.data();
+      const double* xa = x + 3 * static_cast<std::size_t>(a);
+      const auto n = cross3(minus(x + 3 * static_cast<std::size_t>(b), xa),
+                            minus(x + 3 * static_cast<std::size_t>(c), xa));
+      const double cosine = dot3(n, p.normal) / std::sqrt(dot3(n, n));
+      if (cosine > steepest) return;
+      const auto shown = [](double v) { return std::abs(v) < 1e-12 ? 0.0 : v; };  // no -1e-17
+      std::ostringstream o;
+      o.precision(4);
+      o << "shell surface: cell " << cell + 1 << " (block '" << block.name
+        << "') turns its normal by "
+        << std::acos(std::max(-1.0, std::min(1.0, cosine))) * 180 / M_PI
+        << " degrees from the surface's mean normal (" << shown(p.normal[0]) << ", "
+        << shown(p.normal[1]) << ", " << shown(p.normal[2])
+        << "); the chart projects the surface onto the plane normal to it and needs every cell "
+           "within 80 degrees (cells oriented alike, no fold): split the surface into parts "
+           "that are, or give it as a 2D mesh with parts[].shell.reference";
+      throw InputError(o.str());
+    });
+    map = [p](const double* X, double* c) {
+      const auto xy = chart_coordinates(p, X);
+      c[0] = xy[0];
+      c[1] = xy[1];
+    };
   }
-  const auto p = surface_projection(mesh);
-  const double steepest = std::cos(80.0 * M_PI / 180.0);
-  for_each_triangle(mesh, [&](std::size_t cell, const ElementBlock& block, LocalIndex a,
-                              LocalIndex b, LocalIndex c) {
-    const double* x = mesh.coordinates.data();
-    const double* xa = x + 3 * static_cast<std::size_t>(a);
-    const auto n = cross3(minus(x + 3 * static_cast<std::size_t>(b), xa),
-                          minus(x + 3 * static_cast<std::size_t>(c), xa));
-    const double cosine = dot3(n, p.normal) / std::sqrt(dot3(n, n));
-    if (cosine > steepest) return;
-    const auto shown = [](double v) { return std::abs(v) < 1e-12 ? 0.0 : v; };  // no -1e-17
-    std::ostringstream o;
-    o.precision(4);
-    o << "shell surface: cell " << cell + 1 << " (block '" << block.name
-      << "') turns its normal by " << std::acos(std::max(-1.0, std::min(1.0, cosine))) * 180 / M_PI
-      << " degrees from the surface's mean normal (" << shown(p.normal[0]) << ", "
-      << shown(p.normal[1]) << ", " << shown(p.normal[2])
-      << "); the chart projects the surface onto the plane normal to it and needs every cell "
-         "within 80 degrees (cells oriented alike, no fold): split the surface into parts that "
-         "are, or give it as a 2D mesh with parts[].shell.reference";
-    throw InputError(o.str());
-  });
+  const std::size_t nodes = mesh.node_count();
   mesh.surface = mesh.coordinates;
   std::vector<double> coordinates(2 * nodes);
-  for (std::size_t i = 0; i < nodes; ++i) {
-    const auto c = chart_coordinates(p, &mesh.surface[3 * i]);
-    coordinates[2 * i] = c[0];
-    coordinates[2 * i + 1] = c[1];
-  }
+  for (std::size_t i = 0; i < nodes; ++i) map(&mesh.surface[3 * i], &coordinates[2 * i]);
   mesh.coordinates = std::move(coordinates);
   mesh.dimension = 2;
 }

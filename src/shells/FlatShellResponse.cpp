@@ -23,32 +23,18 @@ constexpr int nd = shell_dofs_per_node;
 void FlatShellOperator::strain_resultants(std::size_t part, const Point& p,
                                           const double (&e)[shell_strains],
                                           double (&R)[shell_strains]) const {
-  if (j2_[part]) {
-    const auto q = static_cast<std::size_t>(&p - points_[part].data());
-    const auto law = elastic_probe_ ? physics::without_yield(*j2_[part]) : *j2_[part];
-    const std::size_t block = static_cast<std::size_t>(layers_[part]) * physics::j2_state::count;
-    double N[3], M[3];
-    physics::j2_section_resultants(law, thickness_[part], layers_[part], {e[0], e[1], e[2]},
-                                   {e[3], e[4], e[5]}, committed_[part].data() + q * block,
-                                   trial_[part].data() + q * block, 0.0, N, M);
-    const double shear = section_at(part, p.spacing).shear;
-    for (int i = 0; i < 3; ++i) {
-      R[i] = N[i];
-      R[3 + i] = M[i];
-    }
-    R[6] = shear * e[6];
-    R[7] = shear * e[7];
-    return;
+  // the section law of shells/ShellSectionResponse.hpp; while the elastic probe is on, J2
+  // layers answer elastically from their committed states
+  auto law = section_law(part, p.spacing);
+  physics::J2Parameters elastic;
+  if (law.j2 && elastic_probe_) {
+    elastic = physics::without_yield(*law.j2);
+    law.j2 = &elastic;
   }
-  double N[3], M[3], Q[2];
-  physics::mindlin_resultants(section_at(part, p.spacing), {e[0], e[1], e[2]}, {e[3], e[4], e[5]},
-                              {e[6], e[7]}, N, M, Q);
-  for (int i = 0; i < 3; ++i) {
-    R[i] = N[i];
-    R[3 + i] = M[i];
-  }
-  R[6] = Q[0];
-  R[7] = Q[1];
+  const std::size_t block = history_size(part);
+  const auto q = static_cast<std::size_t>(&p - points_[part].data());
+  shell_section_response(law, e, block ? committed_[part].data() + q * block : nullptr,
+                         block ? trial_[part].data() + q * block : nullptr, R);
 }
 
 std::vector<double> FlatShellOperator::resultants(const Vector& d_owned) const {
