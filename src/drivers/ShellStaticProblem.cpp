@@ -31,6 +31,7 @@ void ShellStaticProblem::set_level(const FlatShellOperator::Pressure& pressure,
   constraints_.zero_constrained(f_ext_);
   external_norm_ = f_ext_.norm2();
   values_ = constraints_.collocation_values(supports);
+  constraints_.set_edge_values(supports);
   if (op_.finite_rotations())  // the step's rotation (shells/FiniteRotation.hpp)
     for (std::size_t k = 0; k < values_.size(); ++k)
       if (rotation_row_[k]) values_[k] -= accepted_[k];

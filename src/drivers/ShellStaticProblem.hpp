@@ -4,7 +4,8 @@
 // with f_int the point-by-point internal force of FlatShellOperator (elastic sections or J2
 // through the thickness), f_edge the transformation conditions' edge traction terms
 // (ShellConstraints; J2 edge points carry their own layers), f_ext the dead loads (shell
-// pressure, edge loads), f_follower a follower pressure (finite rotations), and the
+// pressure, edge loads), f_follower a follower pressure (finite rotations), f_edge also the
+// nitsche and penalty supports' boundary terms (small rotations), and the
 // rows of constrained dofs replaced by their scaled collocation equations s (C d - g). The
 // Jacobian is FlatShellOperator::fill_tangent, the exact derivative of r (tested against central
 // differences).

@@ -43,7 +43,7 @@ ShellExplicitSummary run_shell_explicit_stage(const Model& model, const FlatShel
 
   const auto supports_at = [&](double time) { return shell_supports_at(scene, stage.name, time); };
   const auto supports_then = supports_at(start);
-  const ShellConstraints constraints(model, op, supports_then);
+  ShellConstraints constraints(model, op, supports_then);
   ShellMultipliers multipliers(constraints, mass);
   const std::size_t supports = supports_then.size();
   // Supports held still keep their values and do no work: nothing to re-evaluate per step.
@@ -52,7 +52,17 @@ ShellExplicitSummary run_shell_explicit_stage(const Model& model, const FlatShel
   for (const auto& [support, component] : constraints.row_supports())
     row_components.push_back(component);
 
-  const auto internal_force = [&op](const Vector& x, Vector& f) { op.internal_force(x, f); };
+  // Nitsche and penalty supports act as forces -r_w(d) (their stiffness in the stable step, their
+  // work in the supports' work); transformation supports by the multipliers.
+  const bool weak = constraints.weak();
+  Vector r_weak(mass.getMap()), r_weak_old(mass.getMap());
+  const auto internal_force = [&](const Vector& x, Vector& f) {
+    op.internal_force(x, f);
+    if (!weak) return;
+    Vector r(f.getMap());
+    constraints.weak_resistance(x, r);
+    f.update(1.0, r, 1.0);
+  };
   StableTimeStep stable(internal_force, mass, [&op](bool on) { op.set_elastic_probe(on); });
   ShellExplicitSummary summary;
   summary.dt_crit = stable.estimate(d);
@@ -72,7 +82,7 @@ ShellExplicitSummary run_shell_explicit_stage(const Model& model, const FlatShel
     o << "stage '" << stage.name << "' (shells, explicit): stable time step " << summary.dt_crit
       << " (largest frequency " << summary.largest_frequency << " rad/time, rotary inertia "
       << "scaled to the particle spacing), dt = " << dt << ", " << multipliers.count()
-      << " held dofs (Lagrange multipliers)";
+      << " held dofs (Lagrange multipliers)" << (weak ? ", nitsche or penalty supports" : "");
     Log::info(o.str());
   }
   if (op.plastic())
@@ -93,8 +103,14 @@ ShellExplicitSummary run_shell_explicit_stage(const Model& model, const FlatShel
     if (follower)
       op.add_follower_pressure(shell_pressure_at(model, stage.name, t, 1.0, true), d, f);
   };
+  std::vector<double> weak_forces;  // per support and component, at the last accelerate
   const auto accelerate = [&](const Vector& f, Vector& acc) {
     op.internal_force(d, f_int);
+    if (weak) {
+      constraints.weak_resistance(d, r_weak, &weak_forces);
+      f_int.update(1.0, r_weak, 1.0);
+      constraints.commit();  // the J2 edge points' layers, as the points'
+    }
     op.commit_state();  // every explicit step is accepted (J2 layers; nothing for elastic parts)
     acc.update(1.0, f, -1.0, f_int, 0.0);
     acc.elementWiseMultiply(1.0, inv_mass, acc, 0.0);
@@ -138,6 +154,26 @@ ShellExplicitSummary run_shell_explicit_stage(const Model& model, const FlatShel
     Teuchos::reduceAll(*map->getComm(), Teuchos::REDUCE_SUM, 1, &e, &all);
     return all;
   }();
+  // Nitsche supports with beta below the trace inverse estimate make the potential of the shell on
+  // its supports (strain energy + their energy) unbounded below: the motion then grows without
+  // bound while the balance still holds (the supports' work pays for it). That potential is
+  // >= 0 for supports held at 0 and a coercive form (near 0 at worst when they move), so a
+  // clearly negative one stops the stage where it happens.
+  const auto refuse_non_coercive_supports = [&](double strain, double kin) {
+    const double supports_energy = constraints.weak_energy(d), potential = strain + supports_energy;
+    if (potential >= -0.05 * std::max({strain, kin, std::abs(supports_energy)})) return;
+    std::string names;
+    for (const auto& bc : scene.boundary_conditions)
+      if (bc.stages.includes(stage.name) && bc.method == "nitsche")
+        names += (names.empty() ? "'" : ", '") + bc.name + "'";
+    std::ostringstream o;
+    o << "stage '" << stage.name << "' (shells, explicit): the nitsche supports " << names
+      << " are not coercive: strain energy " << strain << " plus their energy " << supports_energy
+      << " is negative (kinetic energy " << kin << ") at step " << summary.steps << ", t = " << t
+      << "; raise their penalty (alpha of beta = alpha s / h, default 100; docs/shells.md, "
+         "\"Essential conditions\")";
+    throw NumericalError(o.str());
+  };
   // The balance error: the worst imbalance of a record over the largest energy of the stage
   // (relative to each record's own energies, the first records of a stage starting at rest
   // would divide the round-off of the first step's work by nearly nothing).
@@ -148,6 +184,7 @@ ShellExplicitSummary run_shell_explicit_stage(const Model& model, const FlatShel
     largest_energy = std::max({largest_energy, kin, strain, std::abs(external_work)});
     worst_imbalance = std::max(worst_imbalance, std::abs(kin + strain - energy0 - external_work));
     summary.energy_error = largest_energy > 0 ? worst_imbalance / largest_energy : 0.0;
+    if (weak && !op.plastic()) refuse_non_coercive_supports(strain, kin);
   };
   // The supports' forces written at a record are their mean since the previous record (the
   // impulse over the time between): a moving support drives the particles next to it at the
@@ -164,7 +201,9 @@ ShellExplicitSummary run_shell_explicit_stage(const Model& model, const FlatShel
       if (last) Tpetra::deep_copy(v, v_n);
       const double kin = kinetic(v_n);
       account(kin);
-      record(t, kin, external_work, multipliers.mean_support_forces(supports, t - since));
+      auto forces = multipliers.mean_support_forces(supports, t - since);
+      for (std::size_t k = 0; k < weak_forces.size(); ++k) forces[k] += weak_forces[k];
+      record(t, kin, external_work, forces);
       since = t;
       next_output += interval;
     }
@@ -200,7 +239,13 @@ ShellExplicitSummary run_shell_explicit_stage(const Model& model, const FlatShel
     Tpetra::deep_copy(f_ext_old, f_ext);
     external_force(t, f_ext);
     external_work += 0.5 * (reproducible_dot(f_ext_old, step) + reproducible_dot(f_ext, step));
+    if (weak) {
+      Tpetra::deep_copy(r_weak_old, r_weak);
+      if (moving) constraints.set_edge_values(supports_at(t));
+    }
     accelerate(f_ext, a);
+    if (weak)  // the supports' force -r_w over the step (trapezoid, as the loads')
+      external_work -= 0.5 * (reproducible_dot(r_weak_old, step) + reproducible_dot(r_weak, step));
   }
   std::ostringstream o;
   o << "stage '" << stage.name << "' (shells, explicit) done: " << summary.steps

@@ -19,6 +19,7 @@
 #include "mesh/SurfaceChart.hpp"
 #include "model/Curves.hpp"
 #include "model/PointOwner.hpp"
+#include "parallel/Collective.hpp"
 #include "run/ShellExplicitStage.hpp"
 #include "run/ShellImplicitStage.hpp"
 #include "run/ShellStageInputs.hpp"
@@ -111,7 +112,10 @@ struct StageResult {
 }  // namespace
 
 void check_shell_setup(const Model& model) {
-  const FlatShellOperator op(model);
+  check_shell_setup(model, FlatShellOperator(model));
+}
+
+void check_shell_setup(const Model& model, const FlatShellOperator& op) {
   for (const auto& stage : model.scene.stages) {
     ShellConstraints(model, op, shell_supports_at(model.scene, stage.name, stage.end_time));
     if (stage.driver == "explicit") op.lumped_mass();  // a mass <= 0 stops the check as the run
@@ -174,6 +178,7 @@ RunOutcome run_shell_stages(const CommPtr& comm, const Model& model, const std::
   std::vector<int> place_in_stage(scene.boundary_conditions.size(), -1);
   // curved references: the results show the curved surface (a 3D mesh of the mapped nodes)
   const auto shown = op.curved() ? shell_reference_mesh(model) : BackgroundMesh{};
+  run_collectively(comm, [&] { check_shell_setup(model, op); });  // no output before its errors
   ResultsOutput output(comm, path, op.curved() ? shown : model.mesh, model.maps.owned_nodes, layout,
                        scene.title.empty() ? scene.name : scene.title);
   const auto volume = lumped_nodal_volumes(model.mesh);

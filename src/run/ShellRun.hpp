@@ -13,11 +13,15 @@
 
 namespace efg {
 
+class FlatShellOperator;
+
 RunOutcome run_shell_stages(const CommPtr& comm, const Model& model, const std::string& path,
                             double setup_seconds = 0);
 
 /// What `efg check` builds of a shell scene: the operator and every stage's constraints (edge
-/// points, collocation rows), so that their errors show before a run.
+/// points, collocation rows), so that their errors show before a run (which checks the same
+/// with its own operator before it opens any output).
 void check_shell_setup(const Model& model);
+void check_shell_setup(const Model& model, const FlatShellOperator& op);
 
 }  // namespace efg

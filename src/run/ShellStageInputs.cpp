@@ -15,10 +15,16 @@ std::vector<ShellSupport> shell_supports_at(const Scene& scene, const std::strin
                                             double time, double ramp) {
   const auto factor = curve_factor(scene, time, ramp, stage);
   std::vector<ShellSupport> out;
-  for (const auto& bc : scene.boundary_conditions) {
+  for (std::size_t i = 0; i < scene.boundary_conditions.size(); ++i) {
+    const auto& bc = scene.boundary_conditions[i];
     if (!bc.stages.includes(stage)) continue;
     ShellSupport s;
     s.node_set = bc.node_set;
+    s.key = "boundary_conditions[" + std::to_string(i) + "]";
+    s.method = bc.method == "nitsche"   ? ShellMethod::nitsche
+               : bc.method == "penalty" ? ShellMethod::penalty
+                                        : ShellMethod::transformation;
+    s.alpha = bc.penalty.value_or(0.0);
     const double scale = factor(bc.curve);
     for (std::size_t c = 0; c < nd; ++c) {
       const auto& field = c < 3 ? bc.components[c] : bc.rotations[c - 3];

@@ -173,12 +173,15 @@ SpecPtr boundary_condition_spec() {
               "Enforcement with non-interpolating shape functions (docs/boundary_conditions.md). "
               "Explicit stages: transformation prescribes the particles' generalized values "
               "(fast, inexact near the boundary); nitsche and penalty act as boundary forces "
-              "(exact stresses, a smaller stable time step).",
+              "(exact stresses, a smaller stable time step). Shells (docs/shells.md, "
+              "\"Essential conditions\"): all three with small rotations, transformation with "
+              "finite "
+              "rotations.",
               {"transformation", "nitsche", "penalty"}),
           "transformation")
       .optional("penalty", real("Factor alpha of the boundary stiffness beta = alpha E / h "
-                                "(nitsche: default 100; penalty: "
-                                "default 1e4).",
+                                "(shells: alpha s / h, s the section's stiffness of the "
+                                "component; nitsche: default 100; penalty: default 1e4).",
                                 "-")
                                .above(0))
       .optional("stages",

@@ -14,7 +14,7 @@ constexpr int nd = shell_dofs_per_node;
 
 ShellConstraints::ShellConstraints(const Model& model, const FlatShellOperator& op,
                                    const std::vector<ShellSupport>& supports)
-    : op_(op) {
+    : op_(op), supports_(supports.size()) {
   const auto& overlap = *op.maps().overlap_nodes;
   const auto lid = [&](LocalIndex node) {
     return overlap.getLocalElement(static_cast<GlobalOrdinal>(node));
@@ -27,7 +27,10 @@ ShellConstraints::ShellConstraints(const Model& model, const FlatShellOperator& 
     if (!set)
       throw InputError(model.scene.file + ": shell support: node set '" + s.node_set +
                        "' is not in the mesh");
+    const bool weak = s.method != ShellMethod::transformation;
+    weak_ = weak_ || weak;
     for (auto node : set->nodes) {
+      if (weak) break;  // held by the edge terms alone: no collocation rows
       const double* x = model.mesh.coordinates.data() + 2 * static_cast<std::size_t>(node);
       for (int c = 0; c < nd; ++c)
         if (s.value[static_cast<std::size_t>(c)])
@@ -35,6 +38,8 @@ ShellConstraints::ShellConstraints(const Model& model, const FlatShellOperator& 
     }
     long long sides = 0;
     Edge edge;
+    edge.method = s.method;
+    edge.support = static_cast<int>(k);
     for (int c = 0; c < nd; ++c)
       edge.held[static_cast<std::size_t>(c)] =
           static_cast<bool>(s.value[static_cast<std::size_t>(c)]);
@@ -52,6 +57,21 @@ ShellConstraints::ShellConstraints(const Model& model, const FlatShellOperator& 
       edge.trial = trial_.size();
       trial_.resize(trial_.size() + n, 0.0);
       edge.point = std::move(p);
+      if (weak) {
+        // beta_c = alpha s_c / h per unit edge length (the solids' alpha E / h for a section)
+        const double alpha = s.alpha > 0 ? s.alpha : s.method == ShellMethod::nitsche ? 100.0 : 1e4;
+        // each component's scale is the stiffness of its own traction: A_11 for N n, the
+        // (stabilized) shear k_s G t for Q . n, D_11 for M n; a membrane scale on w would hold
+        // a thin shell's deflection at every edge point as if rigid (over-constrained: -16 % on
+        // the clamped plate at t/a = 1e-3)
+        const auto section = op.section_at(edge.point.part, edge.point.spacing);
+        for (int c = 0; c < nd; ++c)
+          edge.beta[static_cast<std::size_t>(c)] = alpha *
+                                                   (c == shell_w   ? section.shear
+                                                    : c < shell_rx ? section.membrane[0][0]
+                                                                   : section.bending[0][0]) /
+                                                   edge.point.spacing;
+      }
       edges_.push_back(edge);
     }
     // A set covering no edge (a pin, a corner) holds its particles by collocation alone: a
@@ -59,7 +79,14 @@ ShellConstraints::ShellConstraints(const Model& model, const FlatShellOperator& 
     if (sides == 0 && set->nodes.empty())
       throw InputError(model.scene.file + ": shell support: node set '" + s.node_set +
                        "' is empty");
+    if (weak && sides == 0)
+      throw InputError(model.scene.file + ": " + (s.key.empty() ? "shell support" : s.key) +
+                       ".node_set: node set '" + s.node_set + "' covers no edge, and method " +
+                       (s.method == ShellMethod::nitsche ? "nitsche" : "penalty") +
+                       " holds edges by boundary integrals: expected method transformation for "
+                       "a point support");
   }
+  set_edge_values(supports);
   if (op.curved()) {
     // the edge points' strains at the reference state (d = 0), which theirs are measured from
     FlatShellOperator::Vector zero(op.maps().overlap_dofs);
@@ -229,32 +256,21 @@ void ShellConstraints::add_edge_terms(const FlatShellOperator::Vector& d_overlap
   std::vector<double> T, vals;
   std::vector<int> cols;
   for (const auto& e : edges_) {
-    if (op_.finite_rotations()) {
+    if (op_.finite_rotations()) {  // (transformation only: the scene check)
       add_finite_edge_terms(e, d, K);
+      continue;
+    }
+    if (e.method != ShellMethod::transformation) {
+      add_weak_terms(e, d, K);
       continue;
     }
     const auto& p = e.point;
     const std::size_t n = p.node.size(), width = n * nd;
-    double R[shell_strains];
-    SectionTangent S;
-    edge_response(e, d, R, &S);
-    // T[c][k]: the traction of component c that unit column dof k produces.
-    T.assign(nd * width, 0.0);
+    double traction[nd];
+    linear_traction(e, d, traction, T);
     cols.resize(width);
-    for (std::size_t a = 0; a < n; ++a) {
-      double B[shell_strains][nd], SB[shell_strains][nd];
-      const double g[2] = {p.grad[2 * a], p.grad[2 * a + 1]};
-      plate_strain_rows(g, g, p.phi[a], B);
-      tangent_rows(S, B, SB);
-      for (int c = 0; c < nd; ++c) {
-        const auto k = a * nd + static_cast<std::size_t>(c);
-        cols[k] = e.node[a] * nd + c;
-        double dR[shell_strains], t[nd];
-        for (int r = 0; r < shell_strains; ++r) dR[r] = SB[r][c];
-        edge_traction(dR, p.normal, t);
-        for (int h = 0; h < nd; ++h) T[static_cast<std::size_t>(h) * width + k] = t[h];
-      }
-    }
+    for (std::size_t k = 0; k < width; ++k)
+      cols[k] = e.node[k / nd] * nd + static_cast<int>(k % nd);
     vals.resize(width);
     for (std::size_t a = 0; a < n; ++a)
       for (int c = 0; c < nd; ++c) {
@@ -266,6 +282,30 @@ void ShellConstraints::add_edge_terms(const FlatShellOperator::Vector& d_overlap
   }
 }
 
+void ShellConstraints::linear_traction(const Edge& e, const ReadView& d, double (&traction)[nd],
+                                       std::vector<double>& rows) const {
+  const auto& p = e.point;
+  const std::size_t n = p.node.size(), width = n * nd;
+  double R[shell_strains];
+  SectionTangent S;
+  edge_response(e, d, R, &S);
+  edge_traction(R, p.normal, traction);
+  rows.assign(nd * width, 0.0);
+  for (std::size_t a = 0; a < n; ++a) {
+    double B[shell_strains][nd], SB[shell_strains][nd];
+    const double g[2] = {p.grad[2 * a], p.grad[2 * a + 1]};
+    plate_strain_rows(g, g, p.phi[a], B);
+    tangent_rows(S, B, SB);
+    for (int c = 0; c < nd; ++c) {
+      const auto k = a * nd + static_cast<std::size_t>(c);
+      double dR[shell_strains], t[nd];
+      for (int r = 0; r < shell_strains; ++r) dR[r] = SB[r][c];
+      edge_traction(dR, p.normal, t);
+      for (int h = 0; h < nd; ++h) rows[static_cast<std::size_t>(h) * width + k] = t[h];
+    }
+  }
+}
+
 void ShellConstraints::add_edge_forces(const FlatShellOperator::Vector& d_overlap,
                                        FlatShellOperator::Vector& f_overlap) const {
   const auto d = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
@@ -273,6 +313,10 @@ void ShellConstraints::add_edge_forces(const FlatShellOperator::Vector& d_overla
   for (const auto& e : edges_) {
     if (op_.finite_rotations()) {
       add_finite_edge_forces(e, d, f);
+      continue;
+    }
+    if (e.method != ShellMethod::transformation) {
+      add_weak_forces(e, d, f);
       continue;
     }
     double R[shell_strains], T[nd];
@@ -326,6 +370,11 @@ void ShellConstraints::replace_rows(FlatShellOperator::Matrix& K) const {
 }
 
 void ShellConstraints::set_values(FlatShellOperator::Vector& rhs_owned) const {
+  if (weak_) {  // the weak edges' terms in g: -r_edges(0)
+    FlatShellOperator::Vector r(op_.maps().owned_dofs);
+    weak_resistance(FlatShellOperator::Vector(op_.maps().owned_dofs), r);
+    rhs_owned.update(-1.0, r, 1.0);
+  }
   auto rhs = rhs_owned.getLocalViewHost(Tpetra::Access::ReadWrite);
   for (const auto& r : rows_)
     rhs(static_cast<std::size_t>(r.node * nd + r.component), 0) = r.scale * r.value;

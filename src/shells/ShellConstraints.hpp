@@ -1,5 +1,7 @@
-// Prescribed generalized values of shells (clamped, simply supported and symmetry edges) by the
-// transformation method in its collocation form (Chen, Pan, Wu & Liu 1996) with the boundary
+// Prescribed generalized values of shells (clamped, simply supported and symmetry edges), by one
+// of the solids' three methods per support (docs/shells.md, "Essential conditions").
+//
+// The transformation method in its collocation form (Chen, Pan, Wu & Liu 1996) with the boundary
 // traction term of Wagner & Liu (2000):
 //
 // - with non-interpolating MLS shape functions a particle's dof is not the field's value there,
@@ -13,6 +15,17 @@
 //   edge tractions of component c computed from the resultants (N n, Q . n, M n; see
 //   edge_traction). Without it the method is not consistent: a constant-bending state would not
 //   solve the discrete equations (the patch tests fail).
+//
+// Nitsche and penalty (small rotations; shells/ShellWeakEdges.cpp): no rows are replaced; the
+// held edges add boundary integrals to every row, with the jump j_c = u^h_c(X_e) - g_c(X_e):
+//   nitsche  - integral phi_I T_c(d) - integral T_c(phi_I e_k) j_c + beta_c integral phi_I j_c
+//              (Nitsche 1971; symmetric and consistent: the patch tests hold to round-off),
+//   penalty  beta_c integral phi_I j_c only (symmetric, not consistent: errors fall like
+//              1 / alpha),
+// beta_c = alpha s_c / h with s_c the section's A_11 (translations) or D_11 (rotations) and h the
+// particle spacing at the edge point: the solids' beta = alpha E / h for a section (alpha default
+// 100 for nitsche, 1e4 for penalty). Explicit stages apply these terms as forces (their
+// stiffness in the stable step), implicit ones add them to the residual and the tangent.
 #pragma once
 
 #include <Tpetra_CrsMatrix.hpp>
@@ -21,6 +34,7 @@
 #include <array>
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "operators/CouplingGraph.hpp"
@@ -33,10 +47,18 @@ namespace efg {
 /// The value of one component along a node set, as a function of the reference position.
 using ShellValue = std::function<double(const double* x)>;
 
+/// How a support holds its components (the scene's boundary_conditions[].method).
+enum class ShellMethod { transformation, penalty, nitsche };
+
 struct ShellSupport {
   std::string node_set;
   /// u, v, w, theta_x, theta_y held on the set (an empty function: the component is free).
   std::array<ShellValue, shell_dofs_per_node> value;
+  ShellMethod method = ShellMethod::transformation;
+  /// nitsche and penalty: alpha of beta_c = alpha s_c / h (0: 100 for nitsche, 1e4 for penalty)
+  double alpha = 0;
+  /// where the scene gives it (e.g. "boundary_conditions[1]"), for messages; may be empty
+  std::string key;
 };
 
 class ShellConstraints {
@@ -57,11 +79,32 @@ class ShellConstraints {
                        FlatShellOperator::Vector& f_overlap) const;
   /// The edge points' J2 states of the last evaluation become the committed ones.
   void commit() const;
+
+  /// A support held by nitsche or penalty (on any rank).
+  bool weak() const { return weak_; }
+  /// The values g_c(X_e) of the nitsche and penalty supports' edge points from `supports` (the
+  /// same conditions at another time or load level).
+  void set_edge_values(const std::vector<ShellSupport>& supports);
+  /// r = the nitsche and penalty edge terms alone at d (owned dofs, overwritten): explicit
+  /// stages apply -r as the supports' force. With `support_forces`: that force summed per
+  /// support and component over every rank (5 per support, the constructor's order;
+  /// collective): sum_I -r_(I,c), the total force (rotations: moment) a support applies.
+  void weak_resistance(const FlatShellOperator::Vector& d_owned, FlatShellOperator::Vector& r_owned,
+                       std::vector<double>* support_forces = nullptr) const;
+  /// The energy of the nitsche and penalty terms at d, sum over the edge points of
+  /// l sum_c (-T_c(d) j_c + beta_c j_c^2 / 2) (penalty: the second term), summed over every rank
+  /// (collective): for elastic sections the potential whose gradient is weak_resistance, so
+  /// strain energy + this is the potential of the shell on its supports. Nitsche is coercive
+  /// only for beta above the trace inverse estimate: with beta too small that potential is
+  /// unbounded below, and an explicit stage watches it turn negative (ShellExplicitStage).
+  double weak_energy(const FlatShellOperator::Vector& d_owned) const;
   /// Replaces the rows of this rank's constrained dofs by their collocation rows (modify mode).
   /// The row scales are taken from the first matrix and kept (Newton's residual uses them).
   void replace_rows(FlatShellOperator::Matrix& K) const;
   /// (after replace_rows, whose row scales it uses)
-  /// rhs(J, c) = s_c g_c(X_J) on this rank's constrained dofs (other entries untouched).
+  /// rhs(J, c) = s_c g_c(X_J) on this rank's constrained dofs, and the nitsche and penalty
+  /// edges' loads -r_edges(0) (their terms in g) added to the others (a linear solve's right-hand
+  /// side).
   void set_values(FlatShellOperator::Vector& rhs_owned) const;
   /// r(J, c) = s_c (sum_I phi_I(X_J) d_(I,c) - g) on this rank's constrained dofs, g from
   /// `values` (collocation_values' order); other entries untouched.
@@ -99,7 +142,24 @@ class ShellConstraints {
     /// metric (the reactions are per unit mesh length, shells/ShellMetric.hpp)
     std::array<double, shell_strains> reference{};
     ShellMetric metric;
+    ShellMethod method = ShellMethod::transformation;
+    int support = 0;  ///< index into the constructor's supports
+    /// nitsche and penalty: beta_c per unit length, and the prescribed values g_c(X_e)
+    std::array<double, shell_dofs_per_node> beta{}, g{};
   };
+  using ReadView = decltype(std::declval<const FlatShellOperator::Vector&>().getLocalViewHost(
+      Tpetra::Access::ReadOnly));
+  using WriteView = decltype(std::declval<FlatShellOperator::Vector&>().getLocalViewHost(
+      Tpetra::Access::ReadWrite));
+  /// Small rotations: the edge point's traction T_c(d) (edge_traction of its resultants) and its
+  /// rows, rows[c * width + k] = dT_c / dd_k over the point's dofs k = a * 5 + component (the
+  /// section's tangent: exact for elastic parts).
+  void linear_traction(const Edge& e, const ReadView& d, double (&T)[shell_dofs_per_node],
+                       std::vector<double>& rows) const;
+  /// The nitsche or penalty terms of a weak edge point into f (overlap) and their derivative
+  /// into K (shells/ShellWeakEdges.cpp).
+  void add_weak_forces(const Edge& e, const ReadView& d, WriteView& f) const;
+  void add_weak_terms(const Edge& e, const ReadView& d, FlatShellOperator::Matrix& K) const;
   /// The resultants conjugate to the mesh-coordinate strains per unit mesh area (curved
   /// references; R itself otherwise).
   void to_mesh(const Edge& e, const double* R, double (&out)[shell_strains]) const;
@@ -124,6 +184,8 @@ class ShellConstraints {
   mutable bool scaled_ = false;        ///< the row scales are set
   std::vector<Edge> edges_;            ///< this rank's
   mutable std::vector<double> trial_;  ///< the J2 edge points' trial states
+  std::size_t supports_ = 0;           ///< how many the constructor was given
+  bool weak_ = false;                  ///< a support is held by nitsche or penalty
 };
 
 /// The edge tractions conjugate to (u, v, w, theta_x, theta_y) from the resultants

@@ -9,92 +9,11 @@
 #include <functional>
 #include <sstream>
 
-#include "scene/SceneReader.hpp"
-#include "shells/FlatShellOperator.hpp"
-#include "shells/ShellConstraints.hpp"
-#include "solvers/MatrixPreconditioner.hpp"
+#include "ShellPlateFixtures.hpp"
 
 namespace efg {
 namespace {
-
-using Field = std::function<void(const double* x, double (&d)[shell_dofs_per_node])>;
-
-std::string plate_scene(double thickness, int cells, double perturbation, double dilation = 2.5) {
-  std::ostringstream s;
-  s.precision(17);
-  s << "mesh:\n  generate: {element: quad4, lower: [0, 0], upper: [1, 1], cells: [" << cells << ", "
-    << cells << "], perturbation: " << perturbation << ", seed: 3}\n"
-    << "parts:\n  - {name: plate, blocks: [block_1], material: steel, plane: stress, thickness: "
-    << thickness << ", section: {basis: quadratic, dilation: " << dilation << "}}\n"
-    << "materials:\n  - {name: steel, model: linear_elastic, youngs_modulus: 1000.0, "
-       "poissons_ratio: 0.3, density: 1}\n"
-    << "stages:\n  - {name: load, driver: explicit, end_time: 1}\n";
-  return s.str();
-}
-
-/// Every edge of the unit square holds all five components at the values of `field`.
-std::vector<ShellSupport> all_edges(const Field& field) {
-  std::vector<ShellSupport> supports;
-  for (const char* set : {"xmin", "xmax", "ymin", "ymax"}) {
-    ShellSupport s;
-    s.node_set = set;
-    for (int c = 0; c < shell_dofs_per_node; ++c)
-      s.value[static_cast<std::size_t>(c)] = [field, c](const double* x) {
-        double d[shell_dofs_per_node];
-        field(x, d);
-        return d[c];
-      };
-    supports.push_back(s);
-  }
-  return supports;
-}
-
-struct Solution {
-  std::vector<double> d, physical;  ///< generalized and physical values, 5 per owned particle
-  std::vector<double> resultants;   ///< N, M, Q: 8 per owned particle
-  double strain_energy = 0;         ///< this rank's
-  std::vector<double> x;            ///< particle positions, 2 per owned particle
-};
-
-Solution solve(const Model& model, const std::vector<ShellSupport>& supports, double pressure) {
-  FlatShellOperator op(model);
-  ShellConstraints constraints(model, op, supports);
-  const auto K = op.stiffness(constraints);
-  FlatShellOperator::Vector f(op.maps().owned_dofs), d(op.maps().owned_dofs);
-  op.add_pressure([pressure](std::size_t, const double*) { return pressure; }, f);
-  constraints.set_values(f);
-  const auto lu = make_direct_preconditioner(Teuchos::ParameterList());
-  lu->set_map(op.maps().owned_dofs);
-  lu->compute(K);
-  lu->apply(f, d, Teuchos::NO_TRANS, 1.0, 0.0);
-  Solution s;
-  const auto v = d.getLocalViewHost(Tpetra::Access::ReadOnly);
-  for (std::size_t i = 0; i < v.extent(0); ++i) s.d.push_back(v(i, 0));
-  s.physical = op.physical_values(d);
-  s.resultants = op.resultants(d);
-  s.strain_energy = op.strain_energy(d);
-  for (auto gid : op.maps().owned_nodes->getNodeElementList()) {
-    const double* x = model.mesh.coordinates.data() + 2 * static_cast<std::size_t>(gid);
-    s.x.insert(s.x.end(), {x[0], x[1]});
-  }
-  return s;
-}
-
-/// Largest |d_I - field(X_I)| over generalized and physical values, relative to the field's
-/// largest value: an MLS basis that contains the field reproduces it with d_I = field(X_I).
-double patch_error(const Solution& s, const Field& field) {
-  double err = 0, size = 0;
-  for (std::size_t i = 0; i < s.x.size() / 2; ++i) {
-    double exact[shell_dofs_per_node];
-    field(&s.x[2 * i], exact);
-    for (std::size_t c = 0; c < shell_dofs_per_node; ++c) {
-      size = std::max(size, std::abs(exact[c]));
-      err = std::max({err, std::abs(s.d[i * shell_dofs_per_node + c] - exact[c]),
-                      std::abs(s.physical[i * shell_dofs_per_node + c] - exact[c])});
-    }
-  }
-  return err / size;
-}
+using namespace shell_plate;
 
 // Constant membrane strain: u, v linear, no bending.
 TEST(Shell, MembranePatchTestOnPerturbedParticles) {
@@ -241,19 +160,6 @@ TEST(Shell, BendingPatchTestOnAStretchedAndShearedReference) {
     for (std::size_t k = 0; k < 3; ++k)
       EXPECT_NEAR(solution.resultants[i * shell_strains + 3 + k], expected[k], 1e-8 * D * 3e-6)
           << "particle " << i << ", M" << k;
-}
-
-/// The owned particle nearest the centre of the unit square (one rank).
-std::size_t centre_particle(const Solution& s) {
-  std::size_t best = 0;
-  for (std::size_t i = 0; i < s.x.size() / 2; ++i)
-    if (std::hypot(s.x[2 * i] - 0.5, s.x[2 * i + 1] - 0.5) <
-        std::hypot(s.x[2 * best] - 0.5, s.x[2 * best + 1] - 0.5))
-      best = i;
-  return best;
-}
-double centre_deflection(const Solution& s) {
-  return s.physical[centre_particle(s) * shell_dofs_per_node + shell_w];
 }
 
 // Clamped square plate under uniform pressure q (a = 1, E = 1000, nu = 0.3). Thin limit: the
