@@ -2,6 +2,9 @@
 
 #include <exodusII.h>
 
+#include <algorithm>
+#include <cctype>
+#include <cmath>
 #include <cstdint>
 
 #include "core/Errors.hpp"
@@ -51,6 +54,38 @@ std::vector<std::string> read_variable_names(const exodus::File& f, ex_entity_ty
 
 namespace {
 
+// A surface block's thickness per cell (shells): the attribute named "thickness" (any case), or
+// the only attribute of a block with one (the SEACAS and Cubit convention for SHELL4 blocks).
+std::vector<double> read_cell_thickness(const exodus::File& f, const std::string& path,
+                                        const ElementBlock& block, std::int64_t cells,
+                                        std::int64_t attributes) {
+  std::vector<std::vector<char>> storage(static_cast<std::size_t>(attributes),
+                                         std::vector<char>(kNameLength + 1, '\0'));
+  std::vector<char*> pointers;
+  for (auto& n : storage) pointers.push_back(n.data());
+  f.check(ex_get_attr_names(f.id(), EX_ELEM_BLOCK, block.id, pointers.data()),
+          "reading attribute names");
+  std::int64_t which = attributes == 1 ? 0 : -1;
+  for (std::int64_t a = 0; a < attributes; ++a) {
+    std::string name(storage[static_cast<std::size_t>(a)].data());
+    std::transform(name.begin(), name.end(), name.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    if (name == "thickness") which = a;
+  }
+  if (which < 0) return {};
+  std::vector<double> values(static_cast<std::size_t>(cells));
+  if (cells > 0)
+    f.check(ex_get_one_attr(f.id(), EX_ELEM_BLOCK, block.id, static_cast<int>(which + 1),
+                            values.data()),
+            "reading the thickness attribute");
+  for (std::size_t c = 0; c < values.size(); ++c)
+    if (!(values[c] > 0) || !std::isfinite(values[c]))
+      throw InputError("mesh file '" + path + "': block '" + block.name + "', cell " +
+                       std::to_string(c + 1) + ": thickness attribute " +
+                       std::to_string(values[c]) + "; expected a finite value > 0");
+  return values;
+}
+
 void read_blocks(const exodus::File& f, const std::string& path, std::int64_t nblocks,
                  BackgroundMesh& mesh) {
   const auto block_ids = read_ids(f, EX_ELEM_BLOCK, nblocks);
@@ -78,6 +113,8 @@ void read_blocks(const exodus::File& f, const std::string& path, std::int64_t nb
               "reading connectivity");
     block.connectivity.reserve(conn.size());
     for (auto n : conn) block.connectivity.push_back(static_cast<LocalIndex>(n - 1));
+    if (attributes > 0 && cell_dimension(*type) == 2)  // a shell's surface cells
+      block.thickness = read_cell_thickness(f, path, block, count, attributes);
     mesh.blocks.push_back(std::move(block));
   }
 }

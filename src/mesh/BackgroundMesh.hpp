@@ -17,6 +17,9 @@ struct ElementBlock {
   std::int64_t id = 0;  ///< Exodus block id
   CellType type = CellType::hex8;
   std::vector<LocalIndex> connectivity;  ///< 0-based mesh node indices, cell after cell
+  /// Shell blocks read from Exodus: each cell's thickness (its "thickness" attribute, or its
+  /// only attribute); empty when the block carries none.
+  std::vector<double> thickness;
 
   std::size_t cell_count() const {
     return connectivity.size() / static_cast<std::size_t>(cell_node_count(type));

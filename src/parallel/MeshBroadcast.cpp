@@ -69,6 +69,7 @@ std::vector<char> serialize(const BackgroundMesh& mesh) {
     w.pod(b.id);
     w.pod(b.type);
     w.vec(b.connectivity);
+    w.vec(b.thickness);
   }
   w.pod(static_cast<std::uint64_t>(mesh.node_sets.size()));
   for (const auto& s : mesh.node_sets) {
@@ -99,6 +100,7 @@ BackgroundMesh deserialize(const std::vector<char>& bytes) {
     b.id = r.pod<std::int64_t>();
     b.type = r.pod<CellType>();
     b.connectivity = r.vec<LocalIndex>();
+    b.thickness = r.vec<double>();
   }
   mesh.node_sets.resize(r.pod<std::uint64_t>());
   for (auto& s : mesh.node_sets) {

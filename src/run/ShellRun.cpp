@@ -74,7 +74,7 @@ std::vector<double> probe_values(const Model& model, const FlatShellOperator::Ve
     if (op.finite_rotations())
       op.physical_rotation(lids.data(), v.phi.data() + v.neighbors.offsets[0], lids.size(), d,
                            out[shell_rx], out[shell_ry]);
-    if (op.section_law(static_cast<std::size_t>(p), 0.0).j2 || op.finite_rotations()) {
+    if (op.plastic_part(static_cast<std::size_t>(p)) || op.finite_rotations()) {
       double nearest = -1;
       for (std::size_t r = 0; r < cloud.owned_count; ++r) {
         const double dx = cloud.position[2 * r] - probe.point[0],
@@ -89,7 +89,11 @@ std::vector<double> probe_values(const Model& model, const FlatShellOperator::Ve
       continue;
     }
     const double kappa[3] = {grad_ry[0], -grad_rx[1], grad_ry[1] - grad_rx[0]};
-    const auto& D = op.section(static_cast<std::size_t>(p)).bending;
+    const auto part = static_cast<std::size_t>(p);
+    const auto section = op.section(  // at the probe's thickness
+        part,
+        op.thickness_at(part, lids.data(), v.phi.data() + v.neighbors.offsets[0], lids.size()));
+    const auto& D = section.bending;
     for (std::size_t r = 0; r < 3; ++r)
       for (std::size_t c = 0; c < 3; ++c) out[nd + r] += D[r][c] * kappa[c];
   }

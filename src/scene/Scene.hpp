@@ -56,7 +56,9 @@ struct SectionSpec {
 
 /// parts[].shell: the part is a Reissner-Mindlin shell whose mid-surface is its (2D) mesh.
 struct ShellSpec {
-  double thickness = 1.0;
+  /// A number, or an expression of the position (per particle); empty: the mesh's thickness
+  /// attributes of the part's blocks (ElementBlock::thickness, averaged at the nodes).
+  std::optional<ScalarField> thickness;
   int thickness_points = 2;          ///< Gauss points through the thickness
   double shear_stabilization = 0.1;  ///< alpha of k_s G t t^2 / (t^2 + alpha h^2)
   /// The reference mid-surface X(x, y), Y, Z as expressions of the mesh's (x, y) (a regular

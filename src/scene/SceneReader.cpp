@@ -156,10 +156,13 @@ class SceneBuilder {
     if (p["formulation"].as<std::string>() == "mixed_up")
       part.formulation = PartFormulation::mixed_up;
     if (const auto& sh = p["shell"]; sh) {
-      part.shell = ShellSpec{sh["thickness"].as<double>(),
+      part.shell = ShellSpec{std::nullopt,
                              sh["thickness_points"].as<int>(),
                              sh["shear_stabilization"].as<double>(),
                              {}};
+      if (sh["thickness"])
+        part.shell->thickness = field(sh["thickness"], doc["shell"]["thickness"],
+                                      path + ".shell.thickness", ExpressionVariables::position);
       if (const auto& r = sh["reference"]; r)
         for (const char* axis : {"x", "y", "z"})
           part.shell->reference.push_back(field(r[axis], doc["shell"]["reference"][axis],

@@ -10,7 +10,16 @@ SpecPtr shell_spec() {
              "small or finite rotations (section.formulation), linear elastic or J2 through the "
              "thickness, implicit and explicit stages; five dofs per particle (u, v, w and two "
              "rotations). See docs/shells.md.")
-      .required("thickness", real("Shell thickness.", "length").above(0))
+      .optional("thickness",
+                real("Shell thickness: a number, or an expression of the position x, y, z (the "
+                     "particles' thickness, interpolated by the shape functions between them). "
+                     "Absent: the mesh's, from a thickness attribute per cell of the part's "
+                     "blocks (the attribute named thickness, or a block's only attribute; Exodus "
+                     "SHELL4/TRISHELL3, QUAD4/TRI3), each node taking the mean of its cells'. "
+                     "See docs/shells.md, \"Thickness\".",
+                     "length")
+                    .above(0)
+                    .varying(ExpressionVariables::position))
       .optional("thickness_points",
                 integer("Gauss points through the thickness (2 integrate an elastic section "
                         "exactly; a J2 section needs more: its fully plastic moment comes out "

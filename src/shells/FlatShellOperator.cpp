@@ -18,6 +18,7 @@
 #include "shells/ShellConstraints.hpp"
 #include "shells/ShellReference.hpp"
 #include "shells/ShellSpacing.hpp"
+#include "shells/ShellThickness.hpp"
 
 namespace efg {
 namespace {
@@ -51,11 +52,8 @@ FlatShellOperator::FlatShellOperator(const Model& model, int thickness_points,
     if (d.points.scheme == Integration::gauss)
       throw InputError(model.scene.file + ": part '" + part.name +
                        "': shells are integrated at the particles (scni or nodal), not gauss");
-    const double t = part.shell ? part.shell->thickness : part.thickness;
-    sections_.push_back(physics::elastic_mindlin_section(
-        material.constants.at("youngs_modulus"), material.constants.at("poissons_ratio"), t,
-        part.shell ? part.shell->thickness_points : thickness_points));
-    thickness_.push_back(t);
+    youngs_.push_back(material.constants.at("youngs_modulus"));
+    poisson_.push_back(material.constants.at("poissons_ratio"));
     alpha_.push_back(part.shell ? part.shell->shear_stabilization : shear_stabilization);
     layers_.push_back(part.shell ? part.shell->thickness_points : thickness_points);
     if (material.model == "j2_plasticity") {
@@ -77,6 +75,12 @@ FlatShellOperator::FlatShellOperator(const Model& model, int thickness_points,
     const auto overlap_lid = [&](LocalIndex node) {
       return maps_.overlap_nodes->getLocalElement(static_cast<GlobalOrdinal>(node));
     };
+    // each particle's thickness, by overlap index, interpolated at the points below
+    const auto cloud_thickness = shell_particle_thickness(model, node_thickness_.size());
+    node_thickness_.emplace_back(maps_.overlap_nodes->getNodeNumElements(), 0.0);
+    for (std::size_t i = 0; i < cloud_thickness.size(); ++i)
+      node_thickness_.back()[static_cast<std::size_t>(overlap_lid(d.cloud.mesh_node[i]))] =
+          cloud_thickness[i];
     std::vector<Point> points(ip.size());
     for (std::size_t q = 0; q < ip.size(); ++q) {
       std::map<LocalIndex, std::size_t> slot;  // cloud particle -> entry of the point
@@ -106,6 +110,8 @@ FlatShellOperator::FlatShellOperator(const Model& model, int thickness_points,
         p.g[2 * e] = direct.grad[2 * k];
         p.g[2 * e + 1] = direct.grad[2 * k + 1];
       }
+      // the point is the particle (scni, nodal): its own thickness
+      p.thickness = node_thickness_.back()[static_cast<std::size_t>(p.owned_row)];
     }
     points_.push_back(std::move(points));
   }
@@ -257,7 +263,7 @@ void FlatShellOperator::fill_tangent(const Vector& d_owned, const ShellConstrain
         } else {
           point_strains(p, d, e);
         }
-        shell_section_response(section_law(part, p.spacing), e,
+        shell_section_response(section_law(part, p.spacing, p.thickness), e,
                                block ? committed_[part].data() + q * block : nullptr,
                                block ? trial_[part].data() + q * block : nullptr, R, &S);
         const auto Kp = finite_ ? point_stiffness(p, S, &fp, R) : point_stiffness(p, S);

@@ -58,10 +58,26 @@ class FlatShellOperator {
   static long long instances() { return instances_; }
 
   const DofMaps& maps() const { return maps_; }
-  const physics::MindlinSection& section(std::size_t part) const { return sections_[part]; }
-  /// The section of part p where the particle spacing is h (its shear stabilized).
-  physics::MindlinSection section_at(std::size_t part, double h) const {
-    return physics::with_stabilized_shear(sections_[part], thickness_[part], h, alpha_[part]);
+  /// The elastic section of part p where its thickness is t.
+  physics::MindlinSection section(std::size_t part, double t) const {
+    return physics::elastic_mindlin_section(youngs_[part], poisson_[part], t, layers_[part]);
+  }
+  /// The section of part p where the particle spacing is h and the thickness t (its shear
+  /// stabilized).
+  physics::MindlinSection section_at(std::size_t part, double h, double t) const {
+    return physics::with_stabilized_shear(section(part, t), t, h, alpha_[part]);
+  }
+  /// The thickness of part p at a point of shape functions phi over overlap particles `nodes`:
+  /// sum phi_I t_I of the particles' thickness (shells/ShellThickness.hpp).
+  double thickness_at(std::size_t part, const int* nodes, const double* phi, std::size_t n) const {
+    double t = 0;
+    for (std::size_t k = 0; k < n; ++k)
+      t += phi[k] * node_thickness_[part][static_cast<std::size_t>(nodes[k])];
+    return t;
+  }
+  /// The thickness t_I of overlap particle `node` of part p.
+  double node_thickness(std::size_t part, int node) const {
+    return node_thickness_[part][static_cast<std::size_t>(node)];
   }
 
   /// K on the owned dofs (fill complete), with the constraints' edge terms and the rows of
@@ -78,9 +94,8 @@ class FlatShellOperator {
                     const Pressure* follower = nullptr) const;
   /// The section law of part p where the particle spacing is h (elastic with its stabilized
   /// shear, or J2 through the thickness).
-  ShellSectionLaw section_law(std::size_t part, double h) const {
-    return {section_at(part, h), j2_[part] ? &*j2_[part] : nullptr, thickness_[part],
-            layers_[part]};
+  ShellSectionLaw section_law(std::size_t part, double h, double t) const {
+    return {section_at(part, h, t), j2_[part] ? &*j2_[part] : nullptr, t, layers_[part]};
   }
   /// Doubles of J2 history per integration point of part p (0 for elastic parts).
   std::size_t history_size(std::size_t part) const {
@@ -157,6 +172,8 @@ class FlatShellOperator {
   /// probe is on the layers answer elastically from the committed state (the stable step's
   /// stiffness probes; MaterialStates' elastic probe for solids).
   bool plastic() const;
+  /// Part p is J2 (its sections have layers with a history).
+  bool plastic_part(std::size_t part) const { return j2_[part].has_value(); }
   void commit_state() const;
   void set_elastic_probe(bool on) const { elastic_probe_ = on; }
   /// The largest effective plastic strain through the thickness of every owned particle (its
@@ -191,6 +208,7 @@ class FlatShellOperator {
   /// node index, smoothed gradient b, direct gradient g and value phi.
   struct Point {
     double weight = 0, spacing = 0;
+    double thickness = 0;  ///< its particle's (shells/ShellThickness.hpp)
     std::array<double, 2> x{};
     int owned_row = 0;  ///< the particle's index in maps().owned_nodes
     std::vector<int> node;
@@ -261,8 +279,10 @@ class FlatShellOperator {
   std::vector<Vec3> offset_;  ///< per overlap particle: reference position - flat mesh position
   mutable std::map<std::string, std::vector<double>> edge_history_;
   static inline std::atomic<long long> instances_{0};
-  std::vector<physics::MindlinSection> sections_;
-  std::vector<double> thickness_, alpha_;
+  std::vector<double> youngs_, poisson_, alpha_;  ///< per part
+  /// per part, per overlap particle: its thickness (the scene's number or expression at it, or
+  /// the mean of its cells' thickness attributes)
+  std::vector<std::vector<double>> node_thickness_;
   std::vector<std::vector<Point>> points_;  ///< per part
 };
 

@@ -25,7 +25,7 @@ void FlatShellOperator::strain_resultants(std::size_t part, const Point& p,
                                           double (&R)[shell_strains]) const {
   // the section law of shells/ShellSectionResponse.hpp; while the elastic probe is on, J2
   // layers answer elastically from their committed states
-  auto law = section_law(part, p.spacing);
+  auto law = section_law(part, p.spacing, p.thickness);
   physics::J2Parameters elastic;
   if (law.j2 && elastic_probe_) {
     elastic = physics::without_yield(*law.j2);
@@ -68,14 +68,14 @@ double FlatShellOperator::strain_energy(const Vector& d_owned) const {
       // stored + dissipated energy of the committed layers (per unit volume, times dz: no
       // return map needed), and the elastic transverse shear
       point_strains(p, d, e);
-      const double shear = section_at(part, p.spacing).shear;
+      const double shear = section_at(part, p.spacing, p.thickness).shear;
       double xi[physics::max_thickness_points], w[physics::max_thickness_points];
       const int n = physics::thickness_rule(layers_[part], xi, w);
       const auto q = static_cast<std::size_t>(&p - points_[part].data());
       const double* state =
           committed_[part].data() + q * static_cast<std::size_t>(n) * physics::j2_state::count;
       for (int k = 0; k < n; ++k)
-        work += 0.5 * thickness_[part] * w[k] *
+        work += 0.5 * p.thickness * w[k] *
                 (state[k * physics::j2_state::count + physics::j2_state::elastic_energy] +
                  state[k * physics::j2_state::count + physics::j2_state::dissipation]);
       energy += p.weight * (work + 0.5 * shear * (e[6] * e[6] + e[7] * e[7]));
@@ -132,10 +132,10 @@ FlatShellOperator::Vector FlatShellOperator::lumped_mass() const {
       if (!material.density)
         throw InputError(model_.scene.file + ": material '" + material.name +
                          "' needs a density for an explicit stage (part '" + d.part->name + "')");
-      const double areal = *material.density * thickness_[part];
       for (const auto& p : points_[part]) {
+        const double areal = *material.density * p.thickness;
         spacing[static_cast<std::size_t>(p.owned_row)] = p.spacing;
-        thickness[static_cast<std::size_t>(p.owned_row)] = thickness_[part];
+        thickness[static_cast<std::size_t>(p.owned_row)] = p.thickness;
         for (std::size_t a = 0; a < p.node.size(); ++a)
           m(static_cast<std::size_t>(p.node[a]) * nd, 0) += areal * p.weight * p.phi[a];
       }
@@ -190,7 +190,6 @@ std::vector<double> FlatShellOperator::thickness(const Vector& d_owned) const {
   const auto d = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
   std::vector<double> out(maps_.owned_nodes->getNodeNumElements(), 0.0);
   for (std::size_t part = 0; part < points_.size(); ++part) {
-    const double t = thickness_[part];
     const auto& material = *model_.scene.find_material(model_.parts[part].part->material);
     const double nu = material.constants.at("poissons_ratio");
     const int n = layers_[part];
@@ -210,7 +209,7 @@ std::vector<double> FlatShellOperator::thickness(const Vector& d_owned) const {
         point_strains(p, d, e);
         mean = -nu / (1 - nu) * (e[0] + e[1]);
       }
-      out[static_cast<std::size_t>(p.owned_row)] = t * (1 + mean);
+      out[static_cast<std::size_t>(p.owned_row)] = p.thickness * (1 + mean);
     }
   }
   return out;
@@ -221,9 +220,9 @@ std::vector<double> FlatShellOperator::surface_stresses(const Vector& d_owned) c
   const auto d = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
   std::vector<double> out(maps_.owned_nodes->getNodeNumElements() * 9, 0.0);
   for (std::size_t part = 0; part < points_.size(); ++part) {
-    const double t = thickness_[part];
     for (std::size_t q = 0; q < points_[part].size(); ++q) {
       const auto& p = points_[part][q];
+      const double t = p.thickness;
       double* o = &out[static_cast<std::size_t>(p.owned_row) * 9];
       double e[shell_strains];
       if (!j2_[part]) {

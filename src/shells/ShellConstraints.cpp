@@ -57,6 +57,8 @@ ShellConstraints::ShellConstraints(const Model& model, const FlatShellOperator& 
       edge.trial = trial_.size();
       trial_.resize(trial_.size() + n, 0.0);
       edge.point = std::move(p);
+      edge.thickness = op.thickness_at(edge.point.part, edge.node.data(), edge.point.phi.data(),
+                                       edge.node.size());
       if (weak) {
         // beta_c = alpha s_c / h per unit edge length (the solids' alpha E / h for a section)
         const double alpha = s.alpha > 0 ? s.alpha : s.method == ShellMethod::nitsche ? 100.0 : 1e4;
@@ -64,7 +66,7 @@ ShellConstraints::ShellConstraints(const Model& model, const FlatShellOperator& 
         // (stabilized) shear k_s G t for Q . n, D_11 for M n; a membrane scale on w would hold
         // a thin shell's deflection at every edge point as if rigid (over-constrained: -16 % on
         // the clamped plate at t/a = 1e-3)
-        const auto section = op.section_at(edge.point.part, edge.point.spacing);
+        const auto section = op.section_at(edge.point.part, edge.point.spacing, edge.thickness);
         for (int c = 0; c < nd; ++c)
           edge.beta[static_cast<std::size_t>(c)] = alpha *
                                                    (c == shell_w   ? section.shear
@@ -106,7 +108,6 @@ ShellConstraints::ShellConstraints(const Model& model, const FlatShellOperator& 
   }
   for (std::size_t p = 0; p < model.parts.size(); ++p) {
     const auto& part = model.parts[p];
-    const auto& section = op.section(p);
     const auto& rows = part.particle_values;
     for (std::size_t r = 0; r < part.cloud.owned_count; ++r)
       for (int c = 0; c < nd; ++c) {
@@ -115,6 +116,7 @@ ShellConstraints::ShellConstraints(const Model& model, const FlatShellOperator& 
         Row row;
         row.node = lid(part.cloud.mesh_node[r]);
         row.component = c;
+        const auto section = op.section(p, op.node_thickness(p, row.node));
         row.scale = c < shell_rx ? section.membrane[0][0] : section.bending[0][0];
         row.value = it->second.first;
         row.support = it->second.second;
@@ -171,7 +173,7 @@ void ShellConstraints::edge_response(const Edge& e, const View& d, double (&R)[s
       for (int i = 0; i < shell_strains; ++i) strain[i] += B[i][c] * dc;
     }
   }
-  shell_section_response(op_.section_law(p.part, p.spacing), strain, e.committed,
+  shell_section_response(op_.section_law(p.part, p.spacing, e.thickness), strain, e.committed,
                          e.committed ? trial_.data() + e.trial : nullptr, R, S);
 }
 

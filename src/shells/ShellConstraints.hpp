@@ -136,6 +136,7 @@ class ShellConstraints {
     ShellEdgePoint point;
     std::vector<int> node;  ///< overlap node indices of point.node
     std::array<bool, shell_dofs_per_node> held{};
+    double thickness = 0;         ///< sum phi_a t_a at the point
     double* committed = nullptr;  ///< J2 parts: the layers' committed states (op's store)
     std::size_t trial = 0;        ///< offset of its trial states in trial_
     /// finite rotations on a curved reference: the strains of the reference state and their

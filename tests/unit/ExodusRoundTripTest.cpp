@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <string>
 
 #include "core/Errors.hpp"
 #include "io/ExodusReader.hpp"
@@ -213,6 +214,28 @@ TEST(ExodusReader, ReadsShellBlocksAsSurfaceCells) {
   EXPECT_NEAR(length(0, 2), std::sqrt(5.0), 1e-14);
 }
 
+// A shell block's thickness attribute (tests/scenes/shells/meshes/tapered_strip_16.exo, written
+// by make_meshes.py with netCDF4: t0 (1 + x) at each cell's centre, t0 = 0.01) is read per cell,
+// in the file's cell order.
+TEST(ExodusReader, ReadsTheThicknessAttributeOfShellBlocks) {
+  const auto mesh = read_exodus_mesh(std::string(EFG_SOURCE_DIR) +
+                                     "/tests/scenes/shells/meshes/tapered_strip_16.exo");
+  const auto& block = mesh.blocks.at(0);
+  ASSERT_EQ(block.thickness.size(), block.cell_count());
+  ASSERT_EQ(block.cell_count(), 32u);
+  for (std::size_t c = 0; c < block.cell_count(); ++c) {
+    double centre = 0;
+    for (std::size_t k = 0; k < 4; ++k)
+      centre += mesh.coordinates[3 * static_cast<std::size_t>(block.connectivity[4 * c + k])] / 4;
+    EXPECT_NEAR(block.thickness[c], 0.01 * (1 + centre), 1e-15) << "cell " << c + 1;
+  }
+  // a block without attributes carries none
+  EXPECT_TRUE(
+      read_exodus_mesh(std::string(EFG_SOURCE_DIR) + "/tests/scenes/shells/meshes/roof_4.exo")
+          .blocks.at(0)
+          .thickness.empty());
+}
+
 // A surface folding beyond the projection chart (two cells 170 degrees apart, each 85 degrees
 // from their mean normal) is refused with the cell named.
 TEST(ExodusReader, ASurfaceBeyondTheProjectionChartIsRefused) {
@@ -237,7 +260,7 @@ TEST(ExodusReader, ASurfaceBeyondTheProjectionChartIsRefused) {
                       1,
                       1 + std::cos(a),
                       std::sin(a)};
-  mesh.blocks.push_back({"block_1", 1, CellType::quad4, {0, 1, 2, 3, 3, 2, 5, 4}});
+  mesh.blocks.push_back({"block_1", 1, CellType::quad4, {0, 1, 2, 3, 3, 2, 5, 4}, {}});
   try {
     chart_surface_mesh(mesh);
     FAIL() << "a fold was charted";

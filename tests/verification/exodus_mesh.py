@@ -14,9 +14,11 @@ def put_names(d, var, dim, names):
 
 
 def write_exodus(path, title, coords, conn, elem_type, node_sets, side_sets=None,
-                 block_name="block_1"):
+                 block_name="block_1", attributes=None):
     """coords: one array per dimension (x, y[, z]); conn: cells x nodes per cell (1-based);
-    node_sets: name -> 1-based node ids; side_sets: name -> (1-based cells, 1-based sides)."""
+    node_sets: name -> 1-based node ids; side_sets: name -> (1-based cells, 1-based sides);
+    attributes: name -> one value per cell (the block's attributes, e.g. a shell thickness)."""
+    attributes = attributes or {}
     side_sets = side_sets or {}
     dim = len(coords)
     with netCDF4.Dataset(path, "w", format="NETCDF3_64BIT_OFFSET") as d:
@@ -65,6 +67,11 @@ def write_exodus(path, title, coords, conn, elem_type, node_sets, side_sets=None
         c = d.createVariable("connect1", "i4", ("num_el_in_blk1", "num_nod_per_el1"))
         c.setncattr("elem_type", elem_type)
         c[:] = conn
+        if attributes:
+            d.createDimension("num_att_in_blk1", len(attributes))
+            a = d.createVariable("attrib1", "f8", ("num_el_in_blk1", "num_att_in_blk1"))
+            a[:] = np.array(list(attributes.values())).T
+            put_names(d, "attrib_name1", "num_att_in_blk1", list(attributes))
         for k, nodes in enumerate(node_sets.values(), 1):
             d.createVariable("node_ns%d" % k, "i4", ("num_nod_ns%d" % k,))[:] = nodes
         for k, (cells, sides) in enumerate(side_sets.values(), 1):

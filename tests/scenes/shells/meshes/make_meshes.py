@@ -3,7 +3,9 @@
 roof_4.exo, a Scordelis-Lo roof quarter on 4 x 4 cells (node sets crown, free, midspan,
 diaphragm), and half_cylinder_16.exo, a half cylinder on 16 x 2 cells (180 degrees: its edge
 cells' normals turn by 84 degrees from their mean, beyond the projection chart's 80; node sets
-side_a, side_b, end_a, end_b).
+side_a, side_b, end_a, end_b), and tapered_strip_16.exo, the strip [0, 1] x [0, 0.2] in the plane
+z = 0 on 16 x 2 SHELL4 cells whose thickness attribute is t0 (1 + x) at each cell's centre,
+t0 = 0.01 (node sets xmin, xmax; tests/scenes/shells/strip_tapered_mesh.yaml).
 Run once from this folder; the files are committed.
 """
 import math
@@ -20,3 +22,8 @@ roof(4, os.path.join(here, "roof_4.exo"))
 coords, conn, e = grid(16, 2, lambda u, v: (math.cos(u * math.pi), 10 * v, math.sin(u * math.pi)))
 write_exodus(os.path.join(here, "half_cylinder_16.exo"), "half cylinder", coords, conn, "SHELL4",
              {"side_a": e["i0"], "side_b": e["i1"], "end_a": e["j0"], "end_b": e["j1"]})
+coords, conn, e = grid(16, 2, lambda u, v: (u, 0.2 * v, 0.0))
+centre_x = [sum(coords[0][n - 1] for n in cell) / 4 for cell in conn]
+write_exodus(os.path.join(here, "tapered_strip_16.exo"), "tapered strip", coords, conn, "SHELL4",
+             {"xmin": e["i0"], "xmax": e["i1"]},
+             attributes={"thickness": [0.01 * (1 + x) for x in centre_x]})
