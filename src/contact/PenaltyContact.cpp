@@ -117,8 +117,9 @@ void PenaltyContact::add_forces(const Vector& d_overlap, double dt,
     const bool friction = pair.friction.mu_s > 0 || pair.friction.mu_d > 0;
     for (auto& c : pair.candidates) {
       c.x_new = c.row.position(d, udim);
-      const auto near = contact::proximity_turned(shape, c.x_new.data(), u_body.data(),
-                                                  bodies[pair.body].rotation[2]);
+      const auto near =
+          contact::proximity_of_body(shape, c.x_new.data(), u_body.data(),
+                                     bodies[pair.body].rotation[2], bodies[pair.body].orientation);
       c.active = near.gap < 0;
       if (!c.active) {
         c.ft_new = {0.0, 0.0, 0.0};

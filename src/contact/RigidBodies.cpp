@@ -40,15 +40,21 @@ contact::Shape shape_of(const RigidBodySpec& b, int dim) {
   return s;
 }
 
-// The moment of inertia about the centre for the rotation of free bodies: a disc m R^2 / 2, a
-// sphere 2 m R^2 / 5, a 2D box m (w^2 + h^2) / 12 (about z; a rectangle of sides w, h).
-double rigid_body_inertia(const RigidBodySpec& b, int dim) {
+// The principal moments of inertia about the centre for the rotation of free bodies (body
+// axes): a disc m R^2 / 2 (about z), a sphere 2 m R^2 / 5, a 2D box m (w^2 + h^2) / 12 (about z;
+// a rectangle of sides w, h), a 3D box m / 12 (b^2 + c^2, a^2 + c^2, a^2 + b^2) of sides a, b, c.
+std::array<double, 3> rigid_body_inertia(const RigidBodySpec& b, int dim) {
   const double m = rigid_body_mass(b, dim);
-  if (b.shape == "box" && dim == 2) {
-    const double w = b.upper[0] - b.lower[0], h = b.upper[1] - b.lower[1];
-    return m * (w * w + h * h) / 12.0;
+  if (b.shape == "box") {
+    double side[3] = {0, 0, 0};
+    for (std::size_t k = 0; k < static_cast<std::size_t>(dim); ++k)
+      side[k] = b.upper[k] - b.lower[k];
+    const auto sq = [](double v) { return v * v; };
+    return {m * (sq(side[1]) + sq(side[2])) / 12.0, m * (sq(side[0]) + sq(side[2])) / 12.0,
+            m * (sq(side[0]) + sq(side[1])) / 12.0};
   }
-  return m * b.radius * b.radius * (b.shape == "sphere" ? 0.4 : 0.5);
+  const double I = m * b.radius * b.radius * (b.shape == "sphere" ? 0.4 : 0.5);
+  return {I, I, I};
 }
 
 }  // namespace
@@ -68,7 +74,7 @@ RigidBodies::RigidBodies(const Scene& scene, int dim) : scene_(scene), dim_(dim)
     plane.point = w.point;
     plane.normal = w.normal;
     bodies_.push_back(
-        {"wall " + w.name, "fixed", "", {}, {}, {}, shape_of(plane, dim), 0.0, {}, {}, 0.0});
+        {"wall " + w.name, "fixed", "", {}, {}, {}, shape_of(plane, dim), 0.0, {}, {}, {}});
   }
 }
 
@@ -84,6 +90,9 @@ std::vector<RigidBodyState> RigidBodies::initial_states(double time) const {
     const double spin = spec.motion == "prescribed" ? factor(spec.curve) : 1.0;
     for (std::size_t k = 0; k < w.size(); ++k)
       states[b].angular_velocity[w.size() == 1 ? 2 : k] = w[k] * spin;
+    auto& s = states[b];
+    contact::inertia_times(s.orientation, spec.inertia.data(), s.angular_velocity.data(),
+                           s.angular_momentum.data());
   }
   return states;
 }
@@ -99,11 +108,7 @@ void RigidBodies::move(std::vector<RigidBodyState>& states, double time, double 
         s.velocity[k] += 0.5 * dt * acceleration(b, k, s, time);
         s.displacement[k] += dt * s.velocity[k];
       }
-      if (rotates(b))
-        for (std::size_t k = 0; k < 3; ++k) {
-          s.angular_velocity[k] += 0.5 * dt * s.moment[k] / spec.inertia;
-          s.rotation[k] += dt * s.angular_velocity[k];
-        }
+      if (rotates(b)) turn_free(b, s, dt);
     } else if (spec.motion == "prescribed") {
       for (std::size_t k = 0; k < spec.velocity.size(); ++k) {
         s.displacement[k] += dt * spec.velocity[k] * mid(spec.axis_curve[k]);
@@ -111,11 +116,14 @@ void RigidBodies::move(std::vector<RigidBodyState>& states, double time, double 
       }
       // A prescribed spin (angular_velocity x curve), turned at mid-step like the translation.
       const auto& w = spec.angular_velocity;
+      double turn[3] = {0, 0, 0};
       for (std::size_t k = 0; k < w.size(); ++k) {
         const std::size_t axis = w.size() == 1 ? 2 : k;
-        s.rotation[axis] += dt * w[k] * mid(spec.curve);
+        turn[axis] = dt * w[k] * mid(spec.curve);
+        s.rotation[axis] += turn[axis];
         s.angular_velocity[axis] = w[k] * end(spec.curve);
       }
+      if (dim_ == 3) s.orientation = contact::turned(s.orientation, turn);
     }
   }
 }
@@ -125,10 +133,33 @@ void RigidBodies::finish(std::vector<RigidBodyState>& states, double time_end, d
     if (bodies_[b].motion == "free") {
       for (int k = 0; k < dim_; ++k)
         states[b].velocity[k] += 0.5 * dt * acceleration(b, k, states[b], time_end);
-      if (rotates(b))
-        for (std::size_t k = 0; k < 3; ++k)
-          states[b].angular_velocity[k] += 0.5 * dt * states[b].moment[k] / bodies_[b].inertia;
+      if (rotates(b)) {  // L^(n+1) = L^(n+1/2) + dt/2 M, omega^(n+1) = I(R^(n+1))^-1 L
+        auto& s = states[b];
+        for (std::size_t k = 0; k < 3; ++k) s.angular_momentum[k] += 0.5 * dt * s.moment[k];
+        contact::inertia_times(s.orientation, bodies_[b].inertia.data(), s.angular_momentum.data(),
+                               s.angular_velocity.data(), true);
+      }
     }
+}
+
+void RigidBodies::turn_free(std::size_t b, RigidBodyState& s, double dt) const {
+  // L^(n+1/2) = L^n + dt/2 M^n; the turn over the step at the mid-step's angular velocity,
+  // omega^(n+1/2) = I(R^(n+1/2))^-1 L^(n+1/2) with R^(n+1/2) predicted by half a step at omega^n
+  // (second order; a torque-free body keeps L exactly); R^(n+1) = exp(dt omega^(n+1/2)) R^n. In
+  // 2D the body turns about z alone and this is omega += dt/2 M / I, angle += dt omega.
+  const double* I = bodies_[b].inertia.data();
+  for (std::size_t k = 0; k < 3; ++k) s.angular_momentum[k] += 0.5 * dt * s.moment[k];
+  double half[3], w[3];
+  for (std::size_t k = 0; k < 3; ++k) half[k] = 0.5 * dt * s.angular_velocity[k];
+  const auto mid = dim_ == 3 ? contact::turned(s.orientation, half) : s.orientation;
+  contact::inertia_times(mid, I, s.angular_momentum.data(), w, true);
+  double turn[3];
+  for (std::size_t k = 0; k < 3; ++k) {
+    s.angular_velocity[k] = w[k];
+    turn[k] = dt * w[k];
+    s.rotation[k] += turn[k];
+  }
+  if (dim_ == 3) s.orientation = contact::turned(s.orientation, turn);
 }
 
 double RigidBodies::applied_force(std::size_t b, int k, double time) const {
@@ -168,9 +199,8 @@ double RigidBodies::kinetic_energy(const std::vector<RigidBodyState>& states) co
     if (is_free(b)) {
       for (int k = 0; k < dim_; ++k)
         e += 0.5 * bodies_[b].mass * states[b].velocity[k] * states[b].velocity[k];
-      for (std::size_t k = 0; k < 3; ++k)
-        e += 0.5 * bodies_[b].inertia * states[b].angular_velocity[k] *
-             states[b].angular_velocity[k];
+      for (std::size_t k = 0; k < 3; ++k)  // omega . L / 2
+        e += 0.5 * states[b].angular_velocity[k] * states[b].angular_momentum[k];
     }
   return e;
 }

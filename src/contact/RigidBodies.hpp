@@ -5,10 +5,11 @@
 //               body, g its gravity)
 //   prescribed: u^(n+1) = u^n + dt v_bar c(t + dt/2),  v^(n+1) = v_bar c(t + dt)
 //   fixed:      never moves.
-// Rotation: free round bodies given an angular_velocity (2D discs, spheres: their shape does not
-// change when they turn) integrate omega in the same form with the moment M of their contact
-// forces about the centre: omega += dt/2 M / I, rotation += dt omega (I = m R^2/2, 2 m R^2/5).
-// Other bodies translate only.
+// Rotation: free bodies given an angular_velocity (2D discs and boxes, spheres, 3D boxes)
+// integrate their angular momentum about the centre in the same form with the moment M of their
+// contact forces, L += dt/2 M, and turn by the mid-step angular velocity omega = I^-1 L (the
+// principal moments I in the body's axes, turned with it in 3D: contact/RigidOrientation.hpp);
+// prescribed ones turn at angular_velocity x curve. Other bodies translate only.
 // The scene's rigid walls (rigid_walls, LS-DYNA *RIGIDWALL_PLANAR) are fixed planes appended
 // after the scene's bodies: one contact code path for walls and bodies.
 #pragma once
@@ -67,8 +68,10 @@ class RigidBodies {
     double mass;
     std::vector<double> force;             // applied (free bodies), x curve
     std::vector<double> angular_velocity;  // initial; empty: does not rotate
-    double inertia = 0;                    // about the centre (rotating bodies)
+    std::array<double, 3> inertia{};       // principal moments, body axes (rotating bodies)
   };
+  /// The turn of free rotating body b over a step (first half of the angular momentum's kick).
+  void turn_free(std::size_t b, RigidBodyState& s, double dt) const;
   double gravity(std::size_t b, int k) const {
     const auto& g = bodies_[b].gravity;
     return static_cast<std::size_t>(k) < g.size() ? g[static_cast<std::size_t>(k)] : 0.0;

@@ -6,6 +6,8 @@
 
 #include <array>
 
+#include "contact/RigidOrientation.hpp"
+
 namespace efg {
 
 struct RigidBodyState {
@@ -13,6 +15,10 @@ struct RigidBodyState {
   /// Rotating bodies: angular velocity and the rotation accumulated (sum of omega dt; the angle
   /// about z in 2D), both about the reference point.
   std::array<double, 3> angular_velocity{}, rotation{};
+  /// 3D: the body's orientation (contact/RigidOrientation.hpp) and, for a free turning body, its
+  /// angular momentum about the reference point (world axes)
+  contact::Orientation orientation = contact::identity_orientation();
+  std::array<double, 3> angular_momentum{};
 };
 
 /// The contact force on a body and its moment about the body's reference point.

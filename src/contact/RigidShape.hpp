@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "contact/RigidOrientation.hpp"
+
 namespace efg::contact {
 
 struct Shape {
@@ -117,6 +119,32 @@ inline Proximity proximity_turned(const Shape& s, const double* x, const double*
   p.normal[0] = co * n[0] - si * n[1];
   p.normal[1] = si * n[0] + co * n[1];
   return p;
+}
+
+/// Gap and normal of point x to the shape translated by u and turned by R about its reference
+/// point (3D boxes and cylinders; spheres and planes are taken as they are): the point is taken
+/// into the body's frame, y = c + R^T (x - u - c), and the normal back out, n = R n_body.
+inline Proximity proximity_oriented(const Shape& s, const double* x, const double* u,
+                                    const Orientation& R) {
+  if (s.dim != 3 || (s.kind != Shape::Kind::box && s.kind != Shape::Kind::cylinder) ||
+      R == identity_orientation())
+    return proximity(s, x, u);
+  double c[3], r[3], b[3];
+  reference_point(s, c);
+  for (int k = 0; k < 3; ++k) r[k] = x[k] - u[k] - c[k];
+  to_body(R, r, b);
+  const double body[3] = {c[0] + b[0], c[1] + b[1], c[2] + b[2]}, none[3] = {0, 0, 0};
+  auto p = proximity(s, body, none);
+  const double n[3] = {p.normal[0], p.normal[1], p.normal[2]};
+  to_world(R, n, p.normal);
+  return p;
+}
+
+/// The body's proximity at its state: 2D boxes turned by the angle about z, 3D boxes and
+/// cylinders by their orientation.
+inline Proximity proximity_of_body(const Shape& s, const double* x, const double* u, double angle_z,
+                                   const Orientation& R) {
+  return s.dim == 2 ? proximity_turned(s, x, u, angle_z) : proximity_oriented(s, x, u, R);
 }
 
 inline Proximity proximity(const Shape& s, const double* x, const double* u) {

@@ -100,13 +100,15 @@ RigidBodySpec read_body(const Scene& s, const YAML::Node& r, const YAML::Node& d
     const auto key = path + ".angular_velocity";
     if (b.motion == "fixed")
       fail(s, at, key, "a fixed body does not turn; expected motion: free or prescribed");
-    const bool round = b.shape == "sphere" || (b.shape == "cylinder" && b.center.size() == 2);
     const bool box_2d = b.shape == "box" && b.lower.size() == 2;
-    if (!round && !box_2d)
+    const bool cylinder_3d = b.shape == "cylinder" && b.center.size() == 3;
+    if (b.shape == "plane")
+      fail(s, at, key, "a plane does not turn; expected shape sphere, cylinder or box");
+    // an infinite 3D cylinder has no inertia about an axis across it
+    if (cylinder_3d && b.motion == "free")
       fail(s, at, key,
-           "rotation is integrated for round bodies (a 2D cylinder, a sphere) and 2D boxes only; "
-           "shape is " +
-               b.shape + " in 3D");
+           "a free 3D cylinder (infinitely long) has no finite inertia to turn with; expected "
+           "motion: prescribed (a driven roll), or a sphere or box");
     const std::size_t entries = b.center.size() == 2 || box_2d ? 1 : 3;
     if (b.angular_velocity.size() != entries)
       fail(s, at, key,

@@ -36,12 +36,14 @@ SpecPtr rigid_body_spec() {
                                .above(0))
       .optional(
           "angular_velocity",
-          real_list("Round bodies (2D cylinder, i.e. a disc; 3D sphere) and 2D boxes: the "
-                    "angular velocity (2D: one entry, about z; 3D: three). A free body starts "
-                    "with it and rotates under the moment of its contact forces about its "
-                    "centre (I = m R^2 / 2 for a disc, 2 m R^2 / 5 for a sphere, "
-                    "m (w^2 + h^2) / 12 for a box); a prescribed body spins at it x curve "
-                    "(explicit stages; a driven roll). Omitted, the body only translates.",
+          real_list("Spheres, cylinders and boxes: the angular velocity (2D: one entry, about z; "
+                    "3D: three, world axes). A free body starts with it and turns under the "
+                    "moment of its contact forces about its centre (I = m R^2 / 2 for a disc, "
+                    "2 m R^2 / 5 for a sphere, m (w^2 + h^2) / 12 for a 2D box, the principal "
+                    "moments m (b^2 + c^2) / 12, ... for a 3D box; a 3D box turns with its "
+                    "orientation, updated by the exponential map); a prescribed body spins at it "
+                    "x curve (explicit stages; a driven roll). A free 3D cylinder (infinitely "
+                    "long) does not turn. Omitted, the body only translates.",
                     "1/time")
               .items(1, 3))
       .optional("force",

@@ -78,6 +78,10 @@ FlatShellOperator::FlatShellOperator(const Model& model, int thickness_points,
     // each particle's thickness, by overlap index, interpolated at the points below
     const auto cloud_thickness = shell_particle_thickness(model, node_thickness_.size());
     node_thickness_.emplace_back(maps_.overlap_nodes->getNodeNumElements(), 0.0);
+    const bool uniform = std::all_of(cloud_thickness.begin(), cloud_thickness.end(),
+                                     [&](double t) { return t == cloud_thickness.front(); });
+    uniform_thickness_.push_back(uniform && !cloud_thickness.empty() ? cloud_thickness.front()
+                                                                     : 0.0);
     for (std::size_t i = 0; i < cloud_thickness.size(); ++i)
       node_thickness_.back()[static_cast<std::size_t>(overlap_lid(d.cloud.mesh_node[i]))] =
           cloud_thickness[i];

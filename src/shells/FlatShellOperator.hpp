@@ -70,6 +70,7 @@ class FlatShellOperator {
   /// The thickness of part p at a point of shape functions phi over overlap particles `nodes`:
   /// sum phi_I t_I of the particles' thickness (shells/ShellThickness.hpp).
   double thickness_at(std::size_t part, const int* nodes, const double* phi, std::size_t n) const {
+    if (uniform_thickness_[part] > 0) return uniform_thickness_[part];  // exactly, no round-off
     double t = 0;
     for (std::size_t k = 0; k < n; ++k)
       t += phi[k] * node_thickness_[part][static_cast<std::size_t>(nodes[k])];
@@ -283,6 +284,7 @@ class FlatShellOperator {
   /// per part, per overlap particle: its thickness (the scene's number or expression at it, or
   /// the mean of its cells' thickness attributes)
   std::vector<std::vector<double>> node_thickness_;
+  std::vector<double> uniform_thickness_;   ///< per part: its one thickness, or 0 when it varies
   std::vector<std::vector<Point>> points_;  ///< per part
 };
 

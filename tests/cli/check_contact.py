@@ -24,6 +24,13 @@ usage: check_contact.py impact|punch|slide|stick HISTORY.csv
   tumble  free rigid box (mass 0.5, v = -1, omega0 = 3) on a free block (mass 1): momentum of
           particles + box constant to 1e-8 relative; energy balance < 1 %; the spin changed by
           the contact by more than 0.1; the box left the block (no contact force at the end)
+  tumble3d  the same in 3D (box 0.4 x 0.2 x 0.2, omega0 = (0.5, 3, 0)): momentum (z, and x, y
+          against it) to 1e-8; energy balance < 1 %; the spin about y changed by more than 0.1;
+          the box left the block
+  precession  free box 0.2 x 0.2 x 0.6 (m = 1) spinning in space at omega0 = (1, 0, 2): the
+          angular velocity keeps its length and its component along L = (I1, 0, 2 I3) to 1e-6,
+          and turns about L at |L| / I1 (phase within 1e-3 rad over 3 time units); the kinetic
+          energy omega . L / 2 constant to 1e-6
   drag_implicit  punch pressed (t <= 0.5) then dragged over a clamped block, implicit, Coulomb
           mu = 0.3: F_x = 0 while pressing; partial slip while the drag builds up
           (|F_x| < mu F_y at t = 0.6, 0.7); F_x = -mu F_y for t >= 1 (all slipping); the base's
@@ -135,6 +142,40 @@ elif kind == "tumble":
     check("spin unchanged by the contact (0.1 - |omega_end - omega0|, below 0)",
           max(0.0, 0.1 - abs(w[-1] - w0)), 0.0)
     check("contact force at the end", np.abs(col("rb_box_Fy")[-1]), 0.0)
+elif kind == "tumble3d":
+    m_box, v0, w0 = 0.5, -1.0, 3.0
+    p = col("momentum_z")
+    check("momentum drift (relative)", np.abs(p - m_box * v0).max() / abs(m_box * v0), 1e-8)
+    for axis in "xy":
+        check("momentum_%s / |momentum|" % axis,
+              np.abs(col("momentum_" + axis)).max() / abs(m_box * v0), 1e-8)
+    check("energy balance", col("energy_balance_error").max(), 1e-2)
+    w = col("rb_box_wy")
+    check("spin about y unchanged by the contact (0.1 - |omega_end - omega0|, below 0)",
+          max(0.0, 0.1 - abs(w[-1] - w0)), 0.0)
+    check("contact force at the end", np.abs(col("rb_box_Fz")[-1]), 0.0)
+elif kind == "precession":
+    m = 1.0
+    I1, I3 = m * (0.2**2 + 0.6**2) / 12, m * (0.2**2 + 0.2**2) / 12
+    w0 = np.array([1.0, 0.0, 2.0])
+    L = np.array([I1 * w0[0], I1 * w0[1], I3 * w0[2]])
+    n = L / np.linalg.norm(L)
+    w = np.stack([col("rb_box_wx"), col("rb_box_wy"), col("rb_box_wz")], axis=1)
+    check("|omega| drift (relative)",
+          np.abs(np.linalg.norm(w, axis=1) - np.linalg.norm(w0)).max() / np.linalg.norm(w0), 1e-6)
+    check("omega . L / |L| drift (relative)",
+          np.abs(w @ n - w0 @ n).max() / np.linalg.norm(w0), 1e-6)
+    # the phase of omega's part across L, about L, against |L| / I1 t
+    e1 = w0 - (w0 @ n) * n
+    e1 /= np.linalg.norm(e1)
+    e2 = np.cross(n, e1)
+    phase = np.unwrap(np.arctan2(w @ e2, w @ e1))
+    rate = np.linalg.norm(L) / I1
+    print("precession: %.6f rad over %.2f against %.6f" % (phase[-1], t[-1], rate * t[-1]))
+    check("phase error (rad)", np.abs(phase - rate * (t - t[0])).max(), 1e-3)
+    ke = col("kinetic_energy")
+    e0 = 0.5 * w0 @ L
+    check("kinetic energy drift (relative)", np.abs(ke - e0).max() / e0, 1e-6)
 elif kind == "drag_implicit":
     mu = 0.3
     Fx, Fy = col("rb_punch_Fx"), col("rb_punch_Fy")
