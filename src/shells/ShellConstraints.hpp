@@ -157,6 +157,15 @@ class ShellConstraints {
   /// section's tangent: exact for elastic parts).
   void linear_traction(const Edge& e, const ReadView& d, double (&T)[shell_dofs_per_node],
                        std::vector<double>& rows) const;
+  /// A weak edge point's traction and its rows (linear_traction; nitsche only).
+  struct WeakTraction {
+    double T[shell_dofs_per_node] = {};
+    std::vector<double> rows;
+    bool nitsche = false;
+  };
+  WeakTraction weak_traction(const Edge& e, const ReadView& d) const;
+  /// The jump j_c = sum_a phi_a d_(a,c) - g_c of a weak edge point.
+  double jump(const Edge& e, const ReadView& d, std::size_t c) const;
   /// The nitsche or penalty terms of a weak edge point into f (overlap) and their derivative
   /// into K (shells/ShellWeakEdges.cpp).
   void add_weak_forces(const Edge& e, const ReadView& d, WriteView& f) const;

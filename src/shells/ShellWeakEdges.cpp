@@ -28,21 +28,31 @@ void ShellConstraints::set_edge_values(const std::vector<ShellSupport>& supports
   }
 }
 
+ShellConstraints::WeakTraction ShellConstraints::weak_traction(const Edge& e,
+                                                               const ReadView& d) const {
+  WeakTraction w;
+  w.nitsche = e.method == ShellMethod::nitsche;
+  if (w.nitsche) linear_traction(e, d, w.T, w.rows);
+  return w;
+}
+
+double ShellConstraints::jump(const Edge& e, const ReadView& d, std::size_t c) const {
+  double j = -e.g[c];
+  for (std::size_t a = 0; a < e.node.size(); ++a) j += e.point.phi[a] * d(e.node[a] * nd + c, 0);
+  return j;
+}
+
 void ShellConstraints::add_weak_forces(const Edge& e, const ReadView& d, WriteView& f) const {
   const auto& p = e.point;
   const std::size_t n = p.node.size(), width = n * nd;
-  double T[nd] = {};
-  std::vector<double> rows;
-  const bool nitsche = e.method == ShellMethod::nitsche;
-  if (nitsche) linear_traction(e, d, T, rows);
+  const auto [T, rows, nitsche] = weak_traction(e, d);
   for (std::size_t c = 0; c < nd; ++c) {
     if (!e.held[c]) continue;
-    double jump = -e.g[c];
-    for (std::size_t a = 0; a < n; ++a) jump += p.phi[a] * d(e.node[a] * nd + c, 0);
+    const double j = jump(e, d, c);
     for (std::size_t a = 0; a < n; ++a)
-      f(e.node[a] * nd + c, 0) += p.length * p.phi[a] * (e.beta[c] * jump - (nitsche ? T[c] : 0.0));
+      f(e.node[a] * nd + c, 0) += p.length * p.phi[a] * (e.beta[c] * j - (nitsche ? T[c] : 0.0));
     for (std::size_t k = 0; nitsche && k < width; ++k)
-      f(e.node[k / nd] * nd + k % nd, 0) -= p.length * rows[c * width + k] * jump;
+      f(e.node[k / nd] * nd + k % nd, 0) -= p.length * rows[c * width + k] * j;
   }
 }
 
@@ -50,10 +60,7 @@ void ShellConstraints::add_weak_terms(const Edge& e, const ReadView& d,
                                       FlatShellOperator::Matrix& K) const {
   const auto& p = e.point;
   const std::size_t n = p.node.size(), width = n * nd;
-  double T[nd] = {};
-  std::vector<double> rows;
-  const bool nitsche = e.method == ShellMethod::nitsche;
-  if (nitsche) linear_traction(e, d, T, rows);
+  const auto w = weak_traction(e, d);  // (the tangent needs its rows alone)
   std::vector<int> cols(width);
   for (std::size_t k = 0; k < width; ++k) cols[k] = e.node[k / nd] * nd + static_cast<int>(k % nd);
   // the point's block: rows (a, c) and (k) over the point's dofs, a dense width x width block
@@ -64,8 +71,8 @@ void ShellConstraints::add_weak_terms(const Edge& e, const ReadView& d,
       const std::size_t row = a * nd + c;
       for (std::size_t b = 0; b < n; ++b)
         block[row * width + b * nd + c] += p.length * e.beta[c] * p.phi[a] * p.phi[b];
-      for (std::size_t k = 0; nitsche && k < width; ++k) {
-        const double t = p.length * p.phi[a] * rows[c * width + k];
+      for (std::size_t k = 0; w.nitsche && k < width; ++k) {
+        const double t = p.length * p.phi[a] * w.rows[c * width + k];
         block[row * width + k] -= t;  // - phi_a dT_c/dd_k
         block[k * width + row] -= t;  // its transpose: - dT_c/dd_k phi_a
       }
@@ -112,17 +119,13 @@ double ShellConstraints::weak_energy(const FlatShellOperator::Vector& d_owned) c
   op_.to_overlap(d_owned, d_overlap);
   const auto d = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
   double local = 0;
-  std::vector<double> rows;
   for (const auto& e : edges_) {
     if (e.method == ShellMethod::transformation) continue;
-    const auto& p = e.point;
-    double T[nd] = {};
-    if (e.method == ShellMethod::nitsche) linear_traction(e, d, T, rows);
+    const auto w = weak_traction(e, d);
     for (std::size_t c = 0; c < nd; ++c) {
       if (!e.held[c]) continue;
-      double jump = -e.g[c];
-      for (std::size_t a = 0; a < p.node.size(); ++a) jump += p.phi[a] * d(e.node[a] * nd + c, 0);
-      local += p.length * (-T[c] * jump + 0.5 * e.beta[c] * jump * jump);
+      const double j = jump(e, d, c);
+      local += e.point.length * (-w.T[c] * j + 0.5 * e.beta[c] * j * j);
     }
   }
   double all = 0;
