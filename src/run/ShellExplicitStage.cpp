@@ -4,8 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <sstream>
 
+#include "contact/ShellRigidContact.hpp"
 #include "core/Errors.hpp"
 #include "core/Log.hpp"
 #include "drivers/StableTimeStep.hpp"
@@ -66,6 +68,12 @@ ShellExplicitSummary run_shell_explicit_stage(const Model& model, const FlatShel
   StableTimeStep stable(internal_force, mass, [&op](bool on) { op.set_elastic_probe(on); });
   ShellExplicitSummary summary;
   summary.dt_crit = stable.estimate(d);
+  // rigid tools (contact/ShellRigidContact): their penalty springs reduce the step as walls do
+  std::unique_ptr<ShellRigidContact> contact;
+  if (ShellRigidContact::wanted(scene, stage.name)) {
+    contact = std::make_unique<ShellRigidContact>(model, op, mass, stage.name);
+    summary.dt_crit *= std::sqrt(1 - contact->stability_share() / 4);
+  }
   summary.largest_frequency = stable.largest_frequency();
   const bool fixed = static_cast<bool>(settings["dt"]);
   const double dt =
@@ -104,8 +112,15 @@ ShellExplicitSummary run_shell_explicit_stage(const Model& model, const FlatShel
       op.add_follower_pressure(shell_pressure_at(model, stage.name, t, 1.0, true), d, f);
   };
   std::vector<double> weak_forces;  // per support and component, at the last accelerate
+  Vector f_contact(map), f_contact_old(map);
+  double contact_dt = dt;  // the step that led to d (the contact's approach speed)
+  if (contact) contact->start(start, dt);
   const auto accelerate = [&](const Vector& f, Vector& acc) {
     op.internal_force(d, f_int);
+    if (contact) {  // the tools' push, an external force on the sheet
+      contact->forces(d, contact_dt, f_contact);
+      f_int.update(-1.0, f_contact, 1.0);
+    }
     if (weak) {
       constraints.weak_resistance(d, r_weak, &weak_forces);
       f_int.update(1.0, r_weak, 1.0);
@@ -203,14 +218,18 @@ ShellExplicitSummary run_shell_explicit_stage(const Model& model, const FlatShel
       account(kin);
       auto forces = multipliers.mean_support_forces(supports, t - since);
       for (std::size_t k = 0; k < weak_forces.size(); ++k) forces[k] += weak_forces[k];
+      if (contact)  // then 3 per scene rigid body: the contact force on it
+        for (double F : contact->mean_body_forces(t - since)) forces.push_back(F);
       record(t, kin, external_work, forces);
       since = t;
       next_output += interval;
     }
     if (last) break;
     multipliers.accumulate_impulse(dt_next);
+    if (contact) contact->accumulate(dt_next);
     Tpetra::deep_copy(d_old, d);
     d.update(dt_next, v_next, 1.0);
+    if (contact) contact->move(t, dt_next);
     // The supports' work: their force at t_n over the mean of the steps around it (none for
     // supports held still, whose force is normal to every motion they allow).
     step.update(1.0, d, -1.0, d_old, 0.0);
@@ -243,7 +262,12 @@ ShellExplicitSummary run_shell_explicit_stage(const Model& model, const FlatShel
       Tpetra::deep_copy(r_weak_old, r_weak);
       if (moving) constraints.set_edge_values(supports_at(t));
     }
+    Tpetra::deep_copy(f_contact_old, f_contact);
+    contact_dt = dt_next;
     accelerate(f_ext, a);
+    if (contact)  // the tools' work on the sheet (trapezoid)
+      external_work +=
+          0.5 * (reproducible_dot(f_contact_old, step) + reproducible_dot(f_contact, step));
     if (weak)  // the supports' force -r_w over the step (trapezoid, as the loads')
       external_work -= 0.5 * (reproducible_dot(r_weak_old, step) + reproducible_dot(r_weak, step));
   }

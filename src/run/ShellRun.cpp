@@ -177,6 +177,12 @@ RunOutcome run_shell_stages(const CommPtr& comm, const Model& model, const std::
         layout.global.push_back("support_" + bc.name + "_" + force_names[c]);
       }
   }
+  // The contact force on each rigid body (explicit stages with contacts; 0 otherwise), after the
+  // supports' forces in the stage's force list.
+  const bool with_bodies = !scene.contacts.empty();
+  for (std::size_t b = 0; with_bodies && b < scene.rigid_bodies.size(); ++b)
+    for (const char* axis : {"x", "y", "z"})
+      layout.global.push_back("rb_" + scene.rigid_bodies[b].name + "_F" + axis);
   // Per condition, its place among those active in the stage being run (-1: not active there):
   // the stage's support forces come 5 per active condition, in the scene's order.
   std::vector<int> place_in_stage(scene.boundary_conditions.size(), -1);
@@ -228,6 +234,13 @@ RunOutcome run_shell_stages(const CommPtr& comm, const Model& model, const std::
       global.push_back(k >= 0 && !forces.empty() ? forces[static_cast<std::size_t>(k) * nd + c]
                                                  : 0.0);
     }
+    const auto active = static_cast<std::size_t>(
+        std::count_if(place_in_stage.begin(), place_in_stage.end(), [](int k) { return k >= 0; }));
+    for (std::size_t b = 0; with_bodies && b < scene.rigid_bodies.size(); ++b)
+      for (std::size_t k = 0; k < 3; ++k) {
+        const std::size_t at = active * nd + 3 * b + k;
+        global.push_back(at < forces.size() ? forces[at] : 0.0);
+      }
     output.write(time, nodal, global);
     history.push_back(global);
     history.back().insert(history.back().begin(), time);

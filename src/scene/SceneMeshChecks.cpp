@@ -190,6 +190,8 @@ class Checker {
   // Rigid bodies: every point and vector with the mesh's dimension; a 3D cylinder's axis; a
   // mass from density only for a shape with a volume.
   void check_rigid_bodies() const {
+    // shells live in 3D whatever their mesh (their chart is 2D): bodies are given in 3D
+    const std::size_t space = s_.has_shells() ? 3 : static_cast<std::size_t>(m_.dimension);
     for (std::size_t i = 0; i < s_.rigid_bodies.size(); ++i) {
       const auto& b = s_.rigid_bodies[i];
       const auto path = "rigid_bodies[" + std::to_string(i) + "]";
@@ -197,11 +199,17 @@ class Checker {
       const std::pair<const char*, const std::vector<double>*> vectors[] = {
           {"point", &b.point}, {"normal", &b.normal}, {"center", &b.center},
           {"lower", &b.lower}, {"upper", &b.upper},   {"velocity", &b.velocity}};
-      for (const auto& [key, v] : vectors)
-        if (!v->empty()) require_dimension(bd[key], path + "." + key, v->size());
-      if (b.shape == "cylinder" && m_.dimension == 3 && b.axis.empty())
+      for (const auto& [key, v] : vectors) {
+        if (v->empty()) continue;
+        if (!s_.has_shells()) require_dimension(bd[key], path + "." + key, v->size());
+        if (s_.has_shells() && v->size() != 3)
+          fail(
+              bd[key], path + "." + key,
+              "expected 3 entries (shells touch bodies in 3D), found " + std::to_string(v->size()));
+      }
+      if (b.shape == "cylinder" && space == 3 && b.axis.empty())
         fail(bd, path, "a cylinder in a 3D model needs axis");
-      if (b.density > 0 && !(rigid_body_volume(b, m_.dimension) > 0))
+      if (b.density > 0 && !(rigid_body_volume(b, static_cast<int>(space)) > 0))
         fail(bd["density"], path + ".density",
              "a " + b.shape + (b.shape == "cylinder" ? " (infinite along its axis)" : "") +
                  " has no finite volume to take a mass from density; give mass");

@@ -79,6 +79,32 @@ void check_solid_scene(const Scene& s) {
                "traction (on a side set), nodal_force or body_force");
 }
 
+// Rigid bodies and contacts with shells (contact/ShellRigidContact.hpp): explicit stages, fixed
+// or prescribed bodies, contacts of shell parts with a rigid body.
+void check_shell_contacts(const Scene& s) {
+  const auto& d = s.document;
+  for (std::size_t i = 0; i < s.rigid_bodies.size(); ++i)
+    if (s.rigid_bodies[i].motion == "free")
+      fail(s, d["rigid_bodies"][i]["motion"], "rigid_bodies[" + std::to_string(i) + "].motion",
+           "shells touch fixed and prescribed bodies in this version (a driven tool): expected "
+           "fixed or prescribed");
+  for (std::size_t i = 0; i < s.contacts.size(); ++i) {
+    const auto& c = s.contacts[i];
+    const auto path = "contacts[" + std::to_string(i) + "]";
+    if (c.rigid_body.empty())
+      fail(s, d["contacts"][i], path,
+           "shells touch rigid bodies in this version, not other parts: expected rigid_body");
+    if (c.static_friction > 0 || c.dynamic_friction > 0)
+      fail(s, d["contacts"][i]["static_friction"], path + ".static_friction",
+           "shell contact is frictionless in this version: expected 0");
+    for (const auto& stage : s.stages)
+      if (c.stages.includes(stage.name) && stage.driver != "explicit")
+        fail(s, d["contacts"][i], path,
+             "shell contact acts in explicit stages in this version, but stage '" + stage.name +
+                 "' is implicit: expected the contact's stages to name explicit ones");
+  }
+}
+
 }  // namespace
 
 void check_shell_scene(const Scene& s, const BackgroundMesh& mesh) {
@@ -186,12 +212,11 @@ void check_shell_scene(const Scene& s, const BackgroundMesh& mesh) {
       fail(s, d["loads"][i]["type"], "loads[" + std::to_string(i) + "].type",
            "shell parts take shell_pressure, shell_edge_load and shell_point_load loads in this "
            "version");
+  check_shell_contacts(s);
   const std::pair<bool, const char*> unsupported[] = {
       {!s.initial_conditions.empty(), "initial_conditions"},
       {s.initial_state.has_value(), "initial_state"},
       {!s.rigid_walls.empty(), "rigid_walls"},
-      {!s.rigid_bodies.empty(), "rigid_bodies"},
-      {!s.contacts.empty(), "contacts"},
       {!s.angles.empty(), "angles"},
       {!s.exact_solution.empty() || s.user_solution.has_value(), "verification"},
       {!s.output.history_node_sets.empty(), "output.history_node_sets"}};
