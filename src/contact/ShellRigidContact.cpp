@@ -70,6 +70,17 @@ void ShellRigidContact::move(double time, double dt) {
   bodies_.move(states_, time, dt);
 }
 
+void ShellRigidContact::finish(double time_end, double dt) {
+  bodies_.finish(states_, time_end, dt);
+}
+
+std::vector<double> ShellRigidContact::body_velocities() const {
+  std::vector<double> out;
+  for (std::size_t b = 0; b < bodies_.scene_count(); ++b)
+    for (std::size_t k = 0; k < 3; ++k) out.push_back(states_[b].velocity[k]);
+  return out;
+}
+
 void ShellRigidContact::forces(const Vector& d_owned, double step, Vector& f_owned) {
   Vector d_overlap(op_.maps().overlap_dofs), f_overlap(op_.maps().overlap_dofs);
   op_.to_overlap(d_owned, d_overlap);

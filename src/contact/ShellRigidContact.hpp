@@ -10,7 +10,9 @@
 // body. Frictionless, and the moment of the force about the mid-surface (the offset t / 2 n) is
 // left out: for a thin sheet it is t / 2 |F|, small against the bending moments it causes. The
 // stable step is reduced by sqrt(1 - (penalty + 2 damping) / 4), as for rigid walls.
-// Bodies: fixed and prescribed (a driven tool); their force on the sheet is its external work.
+// Bodies: fixed, prescribed (a driven tool) or free (a ball dropped on a plate: moved by the
+// contact force, its gravity and applied force in the velocity-Verlet form of RigidBodies);
+// their force on the sheet is its external work.
 #pragma once
 
 #include <array>
@@ -36,8 +38,13 @@ class ShellRigidContact {
   /// puts them plus their travel before it); `dt` the stage's step, which the penalty is scaled
   /// to (a shorter last step keeps it: k = penalty m / dt_step^2 would blow up there).
   void start(double time, double dt);
-  /// Moves the bodies over the step from `time` to `time + dt`.
+  /// Moves the bodies over the step from `time` to `time + dt` (free bodies: the first half
+  /// kick with the last forces) ...
   void move(double time, double dt);
+  /// ... and completes the step at `time_end` with the new forces (free bodies' second kick).
+  void finish(double time_end, double dt);
+  /// Per scene rigid body its velocity (3 components).
+  std::vector<double> body_velocities() const;
   /// f_owned = the contact forces on the sheet at d (owned, overwritten), `step` the step that
   /// led to d (the approach speed); the bodies' forces (summed over ranks, collective) kept for
   /// body_forces().

@@ -24,10 +24,9 @@ std::optional<RestartRecord> read_initial_state(const Scene& scene, const Backgr
   const auto& spec = *scene.initial_state;
   const YAML::Node at = scene.document["initial_state"];
   auto fail = [&](const char* key, const std::string& message) -> void {
-    throw InputError(schema::located_message(scene.file, key && at[key] ? at[key] : at,
-                                             std::string("initial_state") + (key ? "." : "") +
-                                                 (key ? key : ""),
-                                             message));
+    throw InputError(schema::located_message(
+        scene.file, key && at[key] ? at[key] : at,
+        std::string("initial_state") + (key ? "." : "") + (key ? key : ""), message));
   };
   ExodusResults results;
   BackgroundMesh written;
@@ -42,10 +41,9 @@ std::optional<RestartRecord> read_initial_state(const Scene& scene, const Backgr
   std::size_t record = results.times.size() - 1;
   if (spec.time) {
     const double scale = std::max(1e-300, std::abs(results.times.back()));
-    auto nearest = std::min_element(results.times.begin(), results.times.end(),
-                                    [&](double a, double b) {
-                                      return std::abs(a - *spec.time) < std::abs(b - *spec.time);
-                                    });
+    auto nearest = std::min_element(
+        results.times.begin(), results.times.end(),
+        [&](double a, double b) { return std::abs(a - *spec.time) < std::abs(b - *spec.time); });
     if (std::abs(*nearest - *spec.time) > 1e-9 * scale) {
       std::ostringstream o;
       o << "no record at time " << *spec.time << " in '" << spec.file << "'; its records are at";

@@ -12,7 +12,9 @@
 
 namespace efg {
 
-long long peak_memory_bytes() { return MemoryAccount::peak_bytes(); }
+long long peak_memory_bytes() {
+  return MemoryAccount::peak_bytes();
+}
 
 std::vector<MemoryPhase> memory_by_phase(const CommPtr& comm, const Model& model) {
   const auto& mine = MemoryAccount::process().phases();
@@ -44,13 +46,12 @@ std::vector<MemoryPhase> memory_by_phase(const CommPtr& comm, const Model& model
       << mib(total[i]) << " MiB " << std::setw(9) << static_cast<double>(total[i]) / particles
       << " B/particle";
     if (largest[i] > previous_peak)
-      o << "   peak " << mib(largest[i]) << " MiB ("
-        << static_cast<double>(largest[i]) / particles << " B/particle)";
+      o << "   peak " << mib(largest[i]) << " MiB (" << static_cast<double>(largest[i]) / particles
+        << " B/particle)";
     previous_peak = std::max(previous_peak, largest[i]);
   }
   o << "\n  " << std::left << std::setw(44) << "all phases" << std::right << std::setw(9)
-    << mib(sum) << " MiB " << std::setw(9) << static_cast<double>(sum) / particles
-    << " B/particle";
+    << mib(sum) << " MiB " << std::setw(9) << static_cast<double>(sum) / particles << " B/particle";
   Log::info(o.str());
   return out;
 }

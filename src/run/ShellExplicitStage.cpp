@@ -218,8 +218,10 @@ ShellExplicitSummary run_shell_explicit_stage(const Model& model, const FlatShel
       account(kin);
       auto forces = multipliers.mean_support_forces(supports, t - since);
       for (std::size_t k = 0; k < weak_forces.size(); ++k) forces[k] += weak_forces[k];
-      if (contact)  // then 3 per scene rigid body: the contact force on it
+      if (contact) {  // then 3 per scene rigid body: the contact force on it, then its velocity
         for (double F : contact->mean_body_forces(t - since)) forces.push_back(F);
+        for (double v_b : contact->body_velocities()) forces.push_back(v_b);
+      }
       record(t, kin, external_work, forces);
       since = t;
       next_output += interval;
@@ -265,6 +267,7 @@ ShellExplicitSummary run_shell_explicit_stage(const Model& model, const FlatShel
     Tpetra::deep_copy(f_contact_old, f_contact);
     contact_dt = dt_next;
     accelerate(f_ext, a);
+    if (contact) contact->finish(t, dt_next);
     if (contact)  // the tools' work on the sheet (trapezoid)
       external_work +=
           0.5 * (reproducible_dot(f_contact_old, step) + reproducible_dot(f_contact, step));

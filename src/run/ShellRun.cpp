@@ -180,9 +180,10 @@ RunOutcome run_shell_stages(const CommPtr& comm, const Model& model, const std::
   // The contact force on each rigid body (explicit stages with contacts; 0 otherwise), after the
   // supports' forces in the stage's force list.
   const bool with_bodies = !scene.contacts.empty();
-  for (std::size_t b = 0; with_bodies && b < scene.rigid_bodies.size(); ++b)
-    for (const char* axis : {"x", "y", "z"})
-      layout.global.push_back("rb_" + scene.rigid_bodies[b].name + "_F" + axis);
+  for (const char* what : {"_F", "_v"})  // the force on each body, then its velocity
+    for (std::size_t b = 0; with_bodies && b < scene.rigid_bodies.size(); ++b)
+      for (const char* axis : {"x", "y", "z"})
+        layout.global.push_back("rb_" + scene.rigid_bodies[b].name + what + axis);
   // Per condition, its place among those active in the stage being run (-1: not active there):
   // the stage's support forces come 5 per active condition, in the scene's order.
   std::vector<int> place_in_stage(scene.boundary_conditions.size(), -1);
@@ -236,7 +237,7 @@ RunOutcome run_shell_stages(const CommPtr& comm, const Model& model, const std::
     }
     const auto active = static_cast<std::size_t>(
         std::count_if(place_in_stage.begin(), place_in_stage.end(), [](int k) { return k >= 0; }));
-    for (std::size_t b = 0; with_bodies && b < scene.rigid_bodies.size(); ++b)
+    for (std::size_t b = 0; with_bodies && b < 2 * scene.rigid_bodies.size(); ++b)
       for (std::size_t k = 0; k < 3; ++k) {
         const std::size_t at = active * nd + 3 * b + k;
         global.push_back(at < forces.size() ? forces[at] : 0.0);

@@ -79,15 +79,10 @@ void check_solid_scene(const Scene& s) {
                "traction (on a side set), nodal_force or body_force");
 }
 
-// Rigid bodies and contacts with shells (contact/ShellRigidContact.hpp): explicit stages, fixed
-// or prescribed bodies, contacts of shell parts with a rigid body.
+// Rigid bodies and contacts with shells (contact/ShellRigidContact.hpp): explicit stages,
+// frictionless contacts of shell parts with a rigid body.
 void check_shell_contacts(const Scene& s) {
   const auto& d = s.document;
-  for (std::size_t i = 0; i < s.rigid_bodies.size(); ++i)
-    if (s.rigid_bodies[i].motion == "free")
-      fail(s, d["rigid_bodies"][i]["motion"], "rigid_bodies[" + std::to_string(i) + "].motion",
-           "shells touch fixed and prescribed bodies in this version (a driven tool): expected "
-           "fixed or prescribed");
   for (std::size_t i = 0; i < s.contacts.size(); ++i) {
     const auto& c = s.contacts[i];
     const auto path = "contacts[" + std::to_string(i) + "]";
