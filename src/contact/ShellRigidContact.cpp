@@ -4,6 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
+
+#include "core/Errors.hpp"
 
 namespace efg {
 namespace {
@@ -84,7 +87,8 @@ std::vector<double> ShellRigidContact::body_velocities() const {
 void ShellRigidContact::forces(const Vector& d_owned, double step, Vector& f_owned) {
   Vector d_overlap(op_.maps().overlap_dofs), f_overlap(op_.maps().overlap_dofs);
   op_.to_overlap(d_owned, d_overlap);
-  std::vector<double> local(3 * states_.size(), 0.0), total(local.size(), 0.0);
+  // per body: the force on it (3) and penalty x the mass of the particles it touches
+  std::vector<double> local(4 * states_.size(), 0.0), total(local.size(), 0.0);
   {
     const auto d = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
     auto f = f_overlap.getLocalViewHost(Tpetra::Access::ReadWrite);
@@ -115,8 +119,9 @@ void ShellRigidContact::forces(const Vector& d_owned, double step, Vector& f_own
           const double F = push * near.normal[k];
           for (std::size_t a = 0; a < c.nodes.size(); ++a)
             f(static_cast<std::size_t>(c.nodes[a]) * nd + k, 0) += c.phi[a] * F;
-          local[3 * pair.body + k] -= F;
+          local[4 * pair.body + k] -= F;
         }
+        local[4 * pair.body + 3] += pair.penalty * c.mass;
       }
     }
   }
@@ -124,8 +129,21 @@ void ShellRigidContact::forces(const Vector& d_owned, double step, Vector& f_own
   op_.add_overlap(f_overlap, f_owned);
   Teuchos::reduceAll(*op_.maps().owned_dofs->getComm(), Teuchos::REDUCE_SUM,
                      static_cast<int>(local.size()), local.data(), total.data());
-  for (std::size_t b = 0; b < states_.size(); ++b)
-    for (std::size_t k = 0; k < 3; ++k) states_[b].force[k] = total[3 * b + k];
+  for (std::size_t b = 0; b < states_.size(); ++b) {
+    for (std::size_t k = 0; k < 3; ++k) states_[b].force[k] = total[4 * b + k];
+    // a free body's own contact frequency: omega^2 dt^2 = penalty sum m_J / M (as the solids'
+    // contact/PenaltyContact): kept below 1 with the particles' share
+    if (bodies_.is_free(b) && total[4 * b + 3] > bodies_.mass(b)) {
+      std::ostringstream o;
+      o << "rigid body '" << bodies_.name(b) << "' (mass " << bodies_.mass(b)
+        << ") is too light for its contact with the shell: penalty x the mass of the particles "
+           "it touches is "
+        << total[4 * b + 3]
+        << "; its contact would be unstable at this time step (give it more mass or lower the "
+           "contact's penalty)";
+      throw NumericalError(o.str());
+    }
+  }
 }
 
 void ShellRigidContact::accumulate(double step) {
