@@ -34,6 +34,7 @@ ShellRigidContact::ShellRigidContact(const Model& model, const FlatShellOperator
       if (bodies_.name(b) == spec.rigid_body) pair.body = b;
     pair.penalty = spec.penalty;
     pair.damping = spec.damping;
+    pair.friction = {spec.static_friction, spec.dynamic_friction, spec.decay};
     share_ = std::max(share_, spec.penalty + 2 * spec.damping);
     for (std::size_t p = 0; p < model.parts.size(); ++p) {
       const auto& part = model.parts[p];
@@ -65,8 +66,14 @@ void ShellRigidContact::start(double time, double dt) {
   states_ = bodies_.initial_states(time);
   for (std::size_t b = 0; b < states_.size(); ++b)
     states_[b].displacement = bodies_.prescribed_travel(b, 0.0, time);
-  for (auto& pair : pairs_)
-    for (auto& c : pair.candidates) c.started = false;
+  for (auto& pair : pairs_) {
+    pair.body_u_old = states_[pair.body].displacement;
+    pair.body_rotation_old = states_[pair.body].rotation;
+    for (auto& c : pair.candidates) {
+      c.started = false;
+      c.ft = {0.0, 0.0, 0.0};
+    }
+  }
 }
 
 void ShellRigidContact::move(double time, double dt) {
@@ -88,7 +95,9 @@ void ShellRigidContact::forces(const Vector& d_owned, double step, Vector& f_own
   Vector d_overlap(op_.maps().overlap_dofs), f_overlap(op_.maps().overlap_dofs);
   op_.to_overlap(d_owned, d_overlap);
   // per body: the force on it (3) and penalty x the mass of the particles it touches
-  std::vector<double> local(4 * states_.size(), 0.0), total(local.size(), 0.0);
+  const std::size_t count = 4 * states_.size();
+  std::vector<double> local(count, 0.0);
+  std::vector<double> total(count, 0.0);
   {
     const auto d = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
     auto f = f_overlap.getLocalViewHost(Tpetra::Access::ReadWrite);
@@ -104,25 +113,49 @@ void ShellRigidContact::forces(const Vector& d_owned, double step, Vector& f_own
         const auto near = contact::proximity_of_body(shape, x.data(), state.displacement.data(),
                                                      state.rotation[2], state.orientation);
         const double gap = near.gap - c.half_thickness;
-        // the approach speed over the last step, against the body's own motion
-        double approach = 0;
-        if (c.started)
-          for (std::size_t k = 0; k < 3; ++k)
-            approach -= (x[k] - c.x_old[k] - step * state.velocity[k]) / step * near.normal[k];
+        // the particle's motion against the body's surface over the step (its translation and
+        // turn, dtheta x r): the normal part is the approach, the tangential part the slip
+        double s_rel[3] = {0, 0, 0}, approach = 0;
+        if (c.started) {
+          double centre[3], r[3], turn[3], dtheta[3];
+          contact::reference_point(shape, centre);
+          for (std::size_t k = 0; k < 3; ++k) {
+            r[k] = x[k] - (centre[k] + state.displacement[k]);
+            dtheta[k] = state.rotation[k] - pair.body_rotation_old[k];
+          }
+          turn[0] = dtheta[1] * r[2] - dtheta[2] * r[1];
+          turn[1] = dtheta[2] * r[0] - dtheta[0] * r[2];
+          turn[2] = dtheta[0] * r[1] - dtheta[1] * r[0];
+          for (std::size_t k = 0; k < 3; ++k) {
+            s_rel[k] = x[k] - c.x_old[k] - (state.displacement[k] - pair.body_u_old[k]) - turn[k];
+            approach -= s_rel[k] / step * near.normal[k];
+          }
+        }
         c.x_old = x;
         c.started = true;
-        if (gap >= 0) continue;
+        if (gap >= 0) {
+          c.ft = {0.0, 0.0, 0.0};
+          continue;
+        }
         const double stiffness = k_per_mass * c.mass;
         const double push = std::max(
             0.0, stiffness * (-gap) + 2 * pair.damping * std::sqrt(stiffness * c.mass) * approach);
+        double F[3], ft[3] = {0, 0, 0};
+        if (pair.friction.mu_s > 0 || pair.friction.mu_d > 0) {
+          contact::coulomb_return(pair.friction, c.ft.data(), s_rel, near.normal, stiffness, push,
+                                  step, 3, ft);
+          for (std::size_t k = 0; k < 3; ++k) c.ft[k] = ft[k];  // every explicit step is accepted
+        }
         for (std::size_t k = 0; k < 3; ++k) {
-          const double F = push * near.normal[k];
+          F[k] = push * near.normal[k] + ft[k];
           for (std::size_t a = 0; a < c.nodes.size(); ++a)
-            f(static_cast<std::size_t>(c.nodes[a]) * nd + k, 0) += c.phi[a] * F;
-          local[4 * pair.body + k] -= F;
+            f(static_cast<std::size_t>(c.nodes[a]) * nd + k, 0) += c.phi[a] * F[k];
+          local[4 * pair.body + k] -= F[k];
         }
         local[4 * pair.body + 3] += pair.penalty * c.mass;
       }
+      pair.body_u_old = state.displacement;
+      pair.body_rotation_old = state.rotation;
     }
   }
   f_owned.putScalar(0.0);

@@ -6,8 +6,10 @@
 // (g < 0), the particle gets the force of the solids' explicit contact (contact/PenaltyContact):
 //   F = max(0, k (-g) - c v_n) n,  k = penalty m_J / dt^2,  c = 2 damping sqrt(k m_J),
 // n the body's outward normal at the nearest point, m_J the particle's translational lumped mass,
-// v_n its approach speed over the last step; f_I += phi_I(X_J) F on the translations, -F on the
-// body. Frictionless, and the moment of the force about the mid-surface (the offset t / 2 n) is
+// v_n its approach speed over the last step; with friction the Coulomb return map of the solids'
+// contact (contact/CoulombFriction.hpp: regularized stick of stiffness k, mu_s / mu_d with the
+// decay law) on the particle's slip against the body's surface over the step adds the tangential
+// force; f_I += phi_I(X_J) F on the translations, -F on the body. The moment of the force about the mid-surface (the offset t / 2 n) is
 // left out: for a thin sheet it is t / 2 |F|, small against the bending moments it causes. The
 // stable step is reduced by sqrt(1 - (penalty + 2 damping) / 4), as for rigid walls.
 // Bodies: fixed, prescribed (a driven tool) or free (a ball dropped on a plate: moved by the
@@ -19,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "contact/CoulombFriction.hpp"
 #include "contact/RigidBodies.hpp"
 #include "shells/FlatShellOperator.hpp"
 
@@ -63,12 +66,14 @@ class ShellRigidContact {
     std::vector<int> nodes;  ///< overlap particles reaching X
     std::vector<double> phi;
     double mass = 0, half_thickness = 0;
-    std::array<double, 3> x_old{};
+    std::array<double, 3> x_old{}, ft{};  ///< last position, tangential force
     bool started = false;
   };
   struct Pair {
     std::size_t body = 0;
     double penalty = 0.1, damping = 0;
+    contact::Friction friction;
+    std::array<double, 3> body_u_old{}, body_rotation_old{};  ///< the body at the last forces()
     std::vector<Candidate> candidates;
   };
   const Model& model_;

@@ -80,7 +80,7 @@ void check_solid_scene(const Scene& s) {
 }
 
 // Rigid bodies and contacts with shells (contact/ShellRigidContact.hpp): explicit stages,
-// frictionless contacts of shell parts with a rigid body.
+// contacts of shell parts with a rigid body.
 void check_shell_contacts(const Scene& s) {
   const auto& d = s.document;
   for (std::size_t i = 0; i < s.contacts.size(); ++i) {
@@ -89,9 +89,6 @@ void check_shell_contacts(const Scene& s) {
     if (c.rigid_body.empty())
       fail(s, d["contacts"][i], path,
            "shells touch rigid bodies in this version, not other parts: expected rigid_body");
-    if (c.static_friction > 0 || c.dynamic_friction > 0)
-      fail(s, d["contacts"][i]["static_friction"], path + ".static_friction",
-           "shell contact is frictionless in this version: expected 0");
     for (const auto& stage : s.stages)
       if (c.stages.includes(stage.name) && stage.driver != "explicit")
         fail(s, d["contacts"][i], path,
