@@ -8,24 +8,17 @@
 - the plate's own balance, kinetic + strain = the contact's work on it, within 1 %.
 usage: check_shell_ball.py history.csv
 """
-import csv
 import sys
 
 import numpy as np
 
+from history_checks import HistoryChecks
+
 m, v0 = 0.05, -0.05
-rows = list(csv.DictReader(open(sys.argv[1])))
-col = lambda name: np.array([float(r[name]) for r in rows])  # noqa: E731
+history = HistoryChecks(sys.argv[1])
+col, check = history.col, history.check
 t, F, v = col("time"), col("rb_ball_Fz"), col("rb_ball_vz")
 kin, strain, work = col("kinetic_energy"), col("strain_energy"), col("external_work")
-errors = []
-
-
-def check(what, value, limit):
-    print("%s: %.3e (limit %.0e)" % (what, value, limit))
-    if not value <= limit:
-        errors.append(what)
-
 
 impulse = np.sum(F[1:] * np.diff(t))
 check("momentum change against the impulse (of m |v0|)",
@@ -41,6 +34,4 @@ print("after separation: ball %.4e, plate %.4e of %.4e" % (0.5 * m * v[-1] ** 2,
 check("energy after separation (relative)", np.abs(total - e0).max() / e0, 0.01)
 check("rebound (0 - v_end, below 0)", max(0.0, -v[-1]), 0.0)
 check("plate's balance", np.abs(kin + strain - work).max() / np.abs(kin + strain).max(), 0.01)
-if errors:
-    sys.exit("failed: " + ", ".join(errors))
-print("ok")
+sys.exit(0 if history.ok else 1)

@@ -9,23 +9,16 @@ interval) satisfies
 - and never more than mu F_z (stick below the cap: |F_x| <= mu F_z (1 + 1e-9) for t < 7.5).
 usage: check_shell_drag.py history.csv
 """
-import csv
 import sys
 
 import numpy as np
 
+from history_checks import HistoryChecks
+
 mu = 0.3
-rows = list(csv.DictReader(open(sys.argv[1])))
-col = lambda name: np.array([float(r[name]) for r in rows])  # noqa: E731
+history = HistoryChecks(sys.argv[1])
+col, check = history.col, history.check
 t, Fx, Fz = col("time"), col("rb_punch_Fx"), col("rb_punch_Fz")
-errors = []
-
-
-def check(what, value, limit):
-    print("%s: %.3e (limit %.0e)" % (what, value, limit))
-    if not value <= limit:
-        errors.append(what)
-
 
 press = (t > 0) & (t <= 5 + 1e-9)
 slip = (t >= 6 - 1e-9) & (t <= 7.5 + 1e-9)
@@ -34,6 +27,4 @@ check("F_x / F_z while pressing", np.abs(Fx[press] / Fz[press]).max(), 1e-12)
 check("sliding: |F_x / (-mu F_z) - 1|", np.abs(Fx[slip] / (-mu * Fz[slip]) - 1).max(), 1e-3)
 check("|F_x| above mu F_z (relative, below 0)",
       max(0.0, (np.abs(Fx[before]) / (mu * Fz[before]) - 1).max()), 1e-9)
-if errors:
-    sys.exit("failed: " + ", ".join(errors))
-print("ok")
+sys.exit(0 if history.ok else 1)

@@ -17,17 +17,18 @@ forces are means over each output interval):
 - quasi-static: kinetic energy below 1e-3 of the strain energy; energy balance within 1 %.
 usage: check_shell_sphere.py history.csv
 """
-import csv
 import sys
 
 import numpy as np
 
+from history_checks import HistoryChecks
+
 a, t, E, nu, delta = 1.0, 0.02, 1000.0, 0.3, 0.01
 rise, period = 10.0, 1.6631
-rows = list(csv.DictReader(open(sys.argv[1])))
-time = np.array([float(r["time"]) for r in rows])
-held = time >= rise + 0.5 * period
-col = lambda name: np.array([float(r[name]) for r in rows])[held]  # noqa: E731
+history = HistoryChecks(sys.argv[1])
+rows, check = history.rows, history.check
+held = history.col("time") >= rise + 0.5 * period
+col = lambda name: history.col(name)[held]  # noqa: E731
 P = col("rb_ball_Fz").mean()
 supports = sum(col("support_%s_force_z" % n) for n in ("ss_x0", "ss_x1", "ss_y0", "ss_y1")).mean()
 w = -col("probe_centre_uz").mean()
@@ -37,14 +38,6 @@ kinetic = (col("kinetic_energy") / col("strain_energy")).max()
 work = np.array([float(r["external_work"]) for r in rows])
 energy = np.array([float(r["strain_energy"]) + float(r["kinetic_energy"]) for r in rows])
 balance = np.abs(energy - work).max() / np.abs(energy).max()
-errors = []
-
-
-def check(what, value, limit):
-    print("%s: %.3e (limit %.0e)" % (what, value, limit))
-    if not value <= limit:
-        errors.append(what)
-
 
 print("P = %.6e, supports %.6e, centre deflection %.6e, Kirchhoff's P for it %.6e"
       % (P, supports, w, kirchhoff))
@@ -53,6 +46,4 @@ check("centre deflection against the sphere's travel", abs(w / delta - 1), 0.01)
 check("P against Kirchhoff's point load", abs(P / kirchhoff - 1), 0.10)
 check("kinetic / strain energy while held", kinetic, 1e-3)
 check("energy balance", balance, 0.01)
-if errors:
-    sys.exit("failed: " + ", ".join(errors))
-print("ok")
+sys.exit(0 if history.ok else 1)
