@@ -8,6 +8,7 @@
 
 #include "contact/CandidateCounts.hpp"
 #include "contact/CoulombFriction.hpp"
+#include "contact/PenaltyForce.hpp"
 #include "core/Errors.hpp"
 #include "scene/ContactInput.hpp"
 
@@ -72,21 +73,6 @@ PenaltyContact::PenaltyContact(const ModelOperators& ops, const Vector& mass_own
   }
 }
 
-// The displacement of the body's surface point at x by its turn since the last commit,
-// dtheta x (x - centre): zero for bodies that do not rotate.
-std::array<double, 3> PenaltyContact::body_turn(const Pair& pair, const RigidBodyState& body,
-                                                const contact::Shape& shape, const double* x) {
-  std::array<double, 3> turn{};
-  double c[3], r[3] = {0, 0, 0}, dt[3];
-  contact::reference_point(shape, c);
-  for (int k = 0; k < 3; ++k) dt[k] = body.rotation[k] - pair.body_rotation_old[k];
-  for (int k = 0; k < shape.dim; ++k) r[k] = x[k] - (c[k] + body.displacement[k]);
-  turn[0] = dt[1] * r[2] - dt[2] * r[1];
-  turn[1] = dt[2] * r[0] - dt[0] * r[2];
-  turn[2] = dt[0] * r[1] - dt[1] * r[0];
-  return turn;
-}
-
 void PenaltyContact::start(const Vector& d_overlap, const std::vector<RigidBodyState>& bodies) {
   const auto d = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
   const auto udim = static_cast<std::size_t>(dim_);
@@ -114,7 +100,6 @@ void PenaltyContact::add_forces(const Vector& d_overlap, double dt,
     const auto& shape = bodies_.shape(pair.body);
     const auto& u_body = bodies[pair.body].displacement;
     const double k_per_mass = pair.penalty / (dt * dt);
-    const bool friction = pair.friction.mu_s > 0 || pair.friction.mu_d > 0;
     for (auto& c : pair.candidates) {
       c.x_new = c.row.position(d, udim);
       const auto near =
@@ -127,23 +112,15 @@ void PenaltyContact::add_forces(const Vector& d_overlap, double dt,
       }
       const double k = k_per_mass * c.mass;
       // The particle's motion relative to the body's surface point over the step (translation,
-      // and the turn of a rotating body: dtheta x r from its centre): its normal part is the
-      // approach (damping), its tangential part the slip (friction).
-      const auto turn = body_turn(pair, bodies[pair.body], shape, c.x_new.data());
-      double s[3] = {0, 0, 0}, v_n = 0;
-      for (std::size_t i = 0; i < udim; ++i) {
-        s[i] = (c.x_new[i] - c.x_old[i]) - (u_body[i] - pair.body_u_old[i]) - turn[i];
-        v_n += s[i] * near.normal[i] / dt;
-      }
-      const double fn =
-          std::max(0.0, -k * near.gap - 2.0 * pair.damping * std::sqrt(k * c.mass) * v_n);
-      double F[3] = {0, 0, 0};
-      for (std::size_t i = 0; i < udim; ++i) F[i] = fn * near.normal[i];
-      if (friction) {
-        contact::coulomb_return(pair.friction, c.ft_old.data(), s, near.normal, k, fn, dt, dim_,
-                                c.ft_new.data());
-        for (std::size_t i = 0; i < udim; ++i) F[i] += c.ft_new[i];
-      }
+      // and the turn of a rotating body): its normal part is the approach (damping), its
+      // tangential part the slip (friction).
+      const auto& body = bodies[pair.body];
+      double dtheta[3], s[3], F[3] = {0, 0, 0};
+      for (std::size_t i = 0; i < 3; ++i) dtheta[i] = body.rotation[i] - pair.body_rotation_old[i];
+      contact::slip_against_body(shape, c.x_new.data(), c.x_old.data(), u_body.data(),
+                                 pair.body_u_old.data(), dtheta, dim_, s);
+      const double fn = contact::penalty_force(near, s, k, c.mass, pair.damping, pair.friction,
+                                               c.ft_old.data(), dt, dim_, c.ft_new.data(), F);
       c.row.spread(F, udim, f);
       const double on_body[3] = {-F[0], -F[1], -F[2]};
       for (std::size_t i = 0; i < udim; ++i) local[kPer * pair.body + i] += on_body[i];
@@ -165,14 +142,7 @@ void PenaltyContact::add_forces(const Vector& d_overlap, double dt,
     if (b >= bodies_.scene_count()) wall_forces_[b - bodies_.scene_count()] = total[kPer * b + 4];
     // A free body's own contact frequency: omega^2 dt^2 = sum k_J dt^2 / M = penalty sum m_J / M;
     // central differences need it below 4, kept below 1 with the particles' share.
-    if (bodies_.is_free(b) && total[kPer * b + 3] > bodies_.mass(b)) {
-      std::ostringstream o;
-      o << "rigid body '" << bodies_.name(b) << "' (mass " << bodies_.mass(b)
-        << ") is too light for its contact: penalty x the mass of the particles it touches is "
-        << total[kPer * b + 3] << "; its contact would be unstable at this time step (give it more "
-        << "mass or lower the contact's penalty)";
-      throw NumericalError(o.str());
-    }
+    bodies_.check_contact_mass(b, total[kPer * b + 3]);
   }
 }
 

@@ -68,9 +68,6 @@ class PenaltyContact {
     std::vector<Candidate> candidates;
   };
 
-  static std::array<double, 3> body_turn(const Pair& pair, const RigidBodyState& body,
-                                         const contact::Shape& shape, const double* x);
-
   int dim_;
   const RigidBodies& bodies_;
   Teuchos::RCP<const Teuchos::Comm<int>> comm_;

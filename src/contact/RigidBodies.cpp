@@ -1,7 +1,9 @@
 #include "contact/RigidBodies.hpp"
 
 #include <cmath>
+#include <sstream>
 
+#include "core/Errors.hpp"
 #include "model/Curves.hpp"
 #include "scene/ContactInput.hpp"
 
@@ -203,6 +205,16 @@ double RigidBodies::kinetic_energy(const std::vector<RigidBodyState>& states) co
         e += 0.5 * states[b].angular_velocity[k] * states[b].angular_momentum[k];
     }
   return e;
+}
+
+void RigidBodies::check_contact_mass(std::size_t b, double penalty_mass, const char* where) const {
+  if (!is_free(b) || penalty_mass <= mass(b)) return;
+  std::ostringstream o;
+  o << "rigid body '" << name(b) << "' (mass " << mass(b) << ") is too light for its contact"
+    << where << ": penalty x the mass of the particles it touches is " << penalty_mass
+    << "; its contact would be unstable at this time step (give it more mass or lower the "
+       "contact's penalty)";
+  throw NumericalError(o.str());
 }
 
 std::array<double, 3> RigidBodies::momentum(const std::vector<RigidBodyState>& states) const {

@@ -56,6 +56,11 @@ class RigidBodies {
   /// `after` (t1): external work (the applied force by the trapezoid rule over the step).
   double applied_work(const std::vector<RigidBodyState>& before,
                       const std::vector<RigidBodyState>& after, double t0, double t1) const;
+  /// A free body's own contact frequency, omega^2 dt^2 = penalty sum m_J / M over the particles
+  /// it touches (`penalty_mass` = penalty sum m_J), must stay below 1 with the particles' share
+  /// (central differences need it below 4): throws NumericalError naming body b otherwise.
+  /// `where` follows "its contact" in the message (e.g. " with the shell").
+  void check_contact_mass(std::size_t b, double penalty_mass, const char* where = "") const;
   /// Momentum of the free bodies, per direction.
   std::array<double, 3> momentum(const std::vector<RigidBodyState>& states) const;
 

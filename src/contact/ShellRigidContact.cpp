@@ -4,9 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
-#include "core/Errors.hpp"
+#include "contact/PenaltyForce.hpp"
 
 namespace efg {
 namespace {
@@ -112,42 +111,26 @@ void ShellRigidContact::forces(const Vector& d_owned, double step, Vector& f_own
             x[k] += c.phi[a] * d(static_cast<std::size_t>(c.nodes[a]) * nd + k, 0);
         const auto near = contact::proximity_of_body(shape, x.data(), state.displacement.data(),
                                                      state.rotation[2], state.orientation);
-        const double gap = near.gap - c.half_thickness;
-        // the particle's motion against the body's surface over the step (its translation and
-        // turn, dtheta x r): the normal part is the approach, the tangential part the slip
-        double s_rel[3] = {0, 0, 0}, approach = 0;
-        if (c.started) {
-          double centre[3], r[3], turn[3], dtheta[3];
-          contact::reference_point(shape, centre);
-          for (std::size_t k = 0; k < 3; ++k) {
-            r[k] = x[k] - (centre[k] + state.displacement[k]);
-            dtheta[k] = state.rotation[k] - pair.body_rotation_old[k];
-          }
-          turn[0] = dtheta[1] * r[2] - dtheta[2] * r[1];
-          turn[1] = dtheta[2] * r[0] - dtheta[0] * r[2];
-          turn[2] = dtheta[0] * r[1] - dtheta[1] * r[0];
-          for (std::size_t k = 0; k < 3; ++k) {
-            s_rel[k] = x[k] - c.x_old[k] - (state.displacement[k] - pair.body_u_old[k]) - turn[k];
-            approach -= s_rel[k] / step * near.normal[k];
-          }
-        }
+        // the sheet's face on the body's side is half the thickness nearer
+        auto face = near;
+        face.gap -= c.half_thickness;
+        double dtheta[3], s_rel[3] = {0, 0, 0};
+        for (std::size_t k = 0; k < 3; ++k)
+          dtheta[k] = state.rotation[k] - pair.body_rotation_old[k];
+        if (c.started)
+          contact::slip_against_body(shape, x.data(), c.x_old.data(), state.displacement.data(),
+                                     pair.body_u_old.data(), dtheta, 3, s_rel);
         c.x_old = x;
         c.started = true;
-        if (gap >= 0) {
+        if (face.gap >= 0) {
           c.ft = {0.0, 0.0, 0.0};
           continue;
         }
-        const double stiffness = k_per_mass * c.mass;
-        const double push = std::max(
-            0.0, stiffness * (-gap) + 2 * pair.damping * std::sqrt(stiffness * c.mass) * approach);
         double F[3], ft[3] = {0, 0, 0};
-        if (pair.friction.mu_s > 0 || pair.friction.mu_d > 0) {
-          contact::coulomb_return(pair.friction, c.ft.data(), s_rel, near.normal, stiffness, push,
-                                  step, 3, ft);
-          for (std::size_t k = 0; k < 3; ++k) c.ft[k] = ft[k];  // every explicit step is accepted
-        }
+        contact::penalty_force(face, s_rel, k_per_mass * c.mass, c.mass, pair.damping,
+                               pair.friction, c.ft.data(), step, 3, ft, F);
+        c.ft = {ft[0], ft[1], ft[2]};  // every explicit step is accepted
         for (std::size_t k = 0; k < 3; ++k) {
-          F[k] = push * near.normal[k] + ft[k];
           for (std::size_t a = 0; a < c.nodes.size(); ++a)
             f(static_cast<std::size_t>(c.nodes[a]) * nd + k, 0) += c.phi[a] * F[k];
           local[4 * pair.body + k] -= F[k];
@@ -164,18 +147,7 @@ void ShellRigidContact::forces(const Vector& d_owned, double step, Vector& f_own
                      static_cast<int>(local.size()), local.data(), total.data());
   for (std::size_t b = 0; b < states_.size(); ++b) {
     for (std::size_t k = 0; k < 3; ++k) states_[b].force[k] = total[4 * b + k];
-    // a free body's own contact frequency: omega^2 dt^2 = penalty sum m_J / M (as the solids'
-    // contact/PenaltyContact): kept below 1 with the particles' share
-    if (bodies_.is_free(b) && total[4 * b + 3] > bodies_.mass(b)) {
-      std::ostringstream o;
-      o << "rigid body '" << bodies_.name(b) << "' (mass " << bodies_.mass(b)
-        << ") is too light for its contact with the shell: penalty x the mass of the particles "
-           "it touches is "
-        << total[4 * b + 3]
-        << "; its contact would be unstable at this time step (give it more mass or lower the "
-           "contact's penalty)";
-      throw NumericalError(o.str());
-    }
+    bodies_.check_contact_mass(b, total[4 * b + 3], " with the shell");
   }
 }
 

@@ -111,7 +111,6 @@ ShellExplicitSummary run_shell_explicit_stage(const Model& model, const FlatShel
     if (follower)
       op.add_follower_pressure(shell_pressure_at(model, stage.name, t, 1.0, true), d, f);
   };
-  std::vector<double> weak_forces;  // per support and component, at the last accelerate
   Vector f_contact(map), f_contact_old(map);
   double contact_dt = dt;  // the step that led to d (the contact's approach speed)
   if (contact) contact->start(start, dt);
@@ -122,7 +121,7 @@ ShellExplicitSummary run_shell_explicit_stage(const Model& model, const FlatShel
       f_int.update(-1.0, f_contact, 1.0);
     }
     if (weak) {
-      constraints.weak_resistance(d, r_weak, &weak_forces);
+      constraints.weak_resistance(d, r_weak);
       f_int.update(1.0, r_weak, 1.0);
       constraints.commit();  // the J2 edge points' layers, as the points'
     }
@@ -217,7 +216,12 @@ ShellExplicitSummary run_shell_explicit_stage(const Model& model, const FlatShel
       const double kin = kinetic(v_n);
       account(kin);
       auto forces = multipliers.mean_support_forces(supports, t - since);
-      for (std::size_t k = 0; k < weak_forces.size(); ++k) forces[k] += weak_forces[k];
+      if (weak) {  // the nitsche and penalty supports' forces at t (collective: records only)
+        Vector scratch(map);
+        std::vector<double> weak_forces;
+        constraints.weak_resistance(d, scratch, &weak_forces);
+        for (std::size_t k = 0; k < weak_forces.size(); ++k) forces[k] += weak_forces[k];
+      }
       if (contact) {  // then 3 per scene rigid body: the contact force on it, then its velocity
         for (double F : contact->mean_body_forces(t - since)) forces.push_back(F);
         for (double v_b : contact->body_velocities()) forces.push_back(v_b);
@@ -267,10 +271,11 @@ ShellExplicitSummary run_shell_explicit_stage(const Model& model, const FlatShel
     Tpetra::deep_copy(f_contact_old, f_contact);
     contact_dt = dt_next;
     accelerate(f_ext, a);
-    if (contact) contact->finish(t, dt_next);
-    if (contact)  // the tools' work on the sheet (trapezoid)
+    if (contact) {  // the bodies' second half step, and their work on the sheet (trapezoid)
+      contact->finish(t, dt_next);
       external_work +=
           0.5 * (reproducible_dot(f_contact_old, step) + reproducible_dot(f_contact, step));
+    }
     if (weak)  // the supports' force -r_w over the step (trapezoid, as the loads')
       external_work -= 0.5 * (reproducible_dot(r_weak_old, step) + reproducible_dot(r_weak, step));
   }

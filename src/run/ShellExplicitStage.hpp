@@ -23,8 +23,10 @@ struct ShellExplicitSummary {
 };
 
 /// At a record: the kinetic energy, the work of the loads and moving supports since the stage
-/// began, and the force of every support on the shell (5 components per condition active in the
-/// stage, in the scene's order; ShellMultipliers::support_forces).
+/// began, and the forces: of every support on the shell (5 components per condition active in the
+/// stage, in the scene's order; ShellMultipliers::support_forces and the nitsche and penalty
+/// supports' boundary terms), then, with contacts, the contact force on every scene rigid body
+/// and its velocity (3 components each; contact/ShellRigidContact).
 using ShellRecord = std::function<void(double time, double kinetic_energy, double external_work,
                                        const std::vector<double>& support_forces)>;
 

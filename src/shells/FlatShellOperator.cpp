@@ -82,6 +82,10 @@ FlatShellOperator::FlatShellOperator(const Model& model, int thickness_points,
                                      [&](double t) { return t == cloud_thickness.front(); });
     uniform_thickness_.push_back(uniform && !cloud_thickness.empty() ? cloud_thickness.front()
                                                                      : 0.0);
+    unit_section_.push_back(
+        physics::elastic_mindlin_section(youngs_.back(), poisson_.back(), 1.0, layers_.back()));
+    uniform_section_.push_back(physics::elastic_mindlin_section(
+        youngs_.back(), poisson_.back(), uniform_thickness_.back(), layers_.back()));
     for (std::size_t i = 0; i < cloud_thickness.size(); ++i)
       node_thickness_.back()[static_cast<std::size_t>(overlap_lid(d.cloud.mesh_node[i]))] =
           cloud_thickness[i];

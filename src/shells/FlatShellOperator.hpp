@@ -59,8 +59,17 @@ class FlatShellOperator {
 
   const DofMaps& maps() const { return maps_; }
   /// The elastic section of part p where its thickness is t.
+  /// (Per point and evaluation: no Gauss rule rebuilt here. The part's uniform thickness has its
+  /// section kept; another t scales the unit-thickness one, A ~ t, D ~ t^3, k_s G t ~ t.)
   physics::MindlinSection section(std::size_t part, double t) const {
-    return physics::elastic_mindlin_section(youngs_[part], poisson_[part], t, layers_[part]);
+    if (t == uniform_thickness_[part]) return uniform_section_[part];
+    auto s = unit_section_[part];
+    for (auto& row : s.membrane)
+      for (double& v : row) v *= t;
+    for (auto& row : s.bending)
+      for (double& v : row) v *= t * t * t;
+    s.shear *= t;
+    return s;
   }
   /// The section of part p where the particle spacing is h and the thickness t (its shear
   /// stabilized).
@@ -284,7 +293,9 @@ class FlatShellOperator {
   /// per part, per overlap particle: its thickness (the scene's number or expression at it, or
   /// the mean of its cells' thickness attributes)
   std::vector<std::vector<double>> node_thickness_;
-  std::vector<double> uniform_thickness_;   ///< per part: its one thickness, or 0 when it varies
+  std::vector<double> uniform_thickness_;  ///< per part: its one thickness, or 0 when it varies
+  /// per part: the elastic section at unit thickness and at the uniform one (section())
+  std::vector<physics::MindlinSection> unit_section_, uniform_section_;
   std::vector<std::vector<Point>> points_;  ///< per part
 };
 

@@ -29,8 +29,9 @@ ShellConstraints::ShellConstraints(const Model& model, const FlatShellOperator& 
                        "' is not in the mesh");
     const bool weak = s.method != ShellMethod::transformation;
     weak_ = weak_ || weak;
-    for (auto node : set->nodes) {
-      if (weak) break;  // held by the edge terms alone: no collocation rows
+    // the collocation rows' values (nitsche and penalty hold their edges without rows)
+    for (std::size_t i = 0; !weak && i < set->nodes.size(); ++i) {
+      const auto node = set->nodes[i];
       const double* x = model.mesh.coordinates.data() + 2 * static_cast<std::size_t>(node);
       for (int c = 0; c < nd; ++c)
         if (s.value[static_cast<std::size_t>(c)])

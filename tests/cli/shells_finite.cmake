@@ -174,16 +174,9 @@ set_tests_properties(verification.shell_surface_ranks PROPERTIES LABELS "verific
 # (ry, rx held) instead of the moment, the same elastica (check_shell_rolled.py; the quadratic
 # tail from the second step on, see there). Measured: positions 1.4e-4 L, rotations 3.5e-4 rad,
 # moments 0.22 %, the end back at the clamp.
-efg_cli_test(NAME cli.shell_rolled_by_rotation
-  COMMAND "${efg}|run|tests/scenes/shells/strip_rolled_by_rotation.yaml|-o|${EFG_CLI_TMP}/shell_rolled_by_rotation"
-  EXIT 0 TEXT "stage 'roll' done: 10 steps, 0 cutbacks"
-  FILE ${EFG_CLI_TMP}/shell_rolled_by_rotation/strip_rolled_by_rotation.e)
-set_tests_properties(cli.shell_rolled_by_rotation PROPERTIES FIXTURES_SETUP shell_rolled_by_rotation)
-add_test(NAME cli.shell_rolled_by_rotation_check COMMAND /usr/bin/python3
-  ${CMAKE_CURRENT_SOURCE_DIR}/check_shell_rolled.py
-  ${EFG_CLI_TMP}/shell_rolled_by_rotation/strip_rolled_by_rotation.e --tail-from-step 2)
-set_tests_properties(cli.shell_rolled_by_rotation_check PROPERTIES LABELS cli
-  FIXTURES_REQUIRED shell_rolled_by_rotation)
+efg_run_then_check_file(shell_rolled_by_rotation tests/scenes/shells/strip_rolled_by_rotation.yaml
+  "stage 'roll' done: 10 steps, 0 cutbacks" strip_rolled_by_rotation.e check_shell_rolled.py
+  --tail-from-step 2)
 
 # The 3D-mesh path from the command line (tests/scenes/shells/roof_surface_4.yaml): `efg check` and
 # `efg run` report the chart; the roof's mean normal tilts by 20 degrees about y, by hand

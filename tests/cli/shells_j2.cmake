@@ -18,16 +18,9 @@ endforeach()
 efg_shell_same_on_ranks(shell_j2_implicit strip_j2_implicit.e 1e-9
   displacement_z rotation_y plastic_strain moment_xx)
 # The same held by penalty supports (their boundary terms and tangent in Newton).
-efg_cli_test(NAME cli.shell_j2_implicit_penalty
-  COMMAND "${efg}|run|tests/scenes/shells/strip_j2_implicit_penalty.yaml|-o|${EFG_CLI_TMP}/shell_j2_implicit_penalty"
-  EXIT 0 TEXT "stage 'press' done: 10 steps, 0 cutbacks|stage 'release' done: 2 steps, 0 cutbacks"
-  FILE ${EFG_CLI_TMP}/shell_j2_implicit_penalty/history.csv)
-set_tests_properties(cli.shell_j2_implicit_penalty PROPERTIES FIXTURES_SETUP shell_j2_implicit_penalty)
-add_test(NAME cli.shell_j2_implicit_penalty_check COMMAND /usr/bin/python3
-  ${CMAKE_CURRENT_SOURCE_DIR}/check_shell_j2_implicit.py
-  ${EFG_CLI_TMP}/shell_j2_implicit_penalty/strip_j2_implicit_penalty.e)
-set_tests_properties(cli.shell_j2_implicit_penalty_check PROPERTIES LABELS cli
-  FIXTURES_REQUIRED shell_j2_implicit_penalty)
+efg_run_then_check_file(shell_j2_implicit_penalty tests/scenes/shells/strip_j2_implicit_penalty.yaml
+  "stage 'press' done: 10 steps, 0 cutbacks|stage 'release' done: 2 steps, 0 cutbacks"
+  strip_j2_implicit_penalty.e check_shell_j2_implicit.py)
 efg_cli_test(NAME cli.shell_j2_implicit_collapse
   COMMAND "${efg}|run|tests/scenes/shells/strip_j2_implicit_collapse.yaml|-o|${EFG_CLI_TMP}/shell_j2_implicit_collapse"
   EXIT 3 TEXT "the tangent is singular (a mechanism)|is reached (beyond a limit load, no equilibrium exists)"
