@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "discretization/SmoothingFacets.hpp"
 #include "mesh/SideMeasures.hpp"
@@ -78,6 +79,7 @@ ImplicitContact::ImplicitContact(const ModelOperators& ops)
         Candidate c;
         c.row = particle_row(ops, p, j);
         c.stiffness = spec.implicit_penalty * E / size[node] * area[node];
+        c.size = size[node];
         pair.candidates.push_back(std::move(c));
       }
     }
@@ -93,6 +95,12 @@ void ImplicitContact::begin_stage(const std::vector<RigidBodyState>& carried, do
   for (std::size_t b = 0; b < std::min(carried.size(), start_.size()); ++b)
     start_[b] = carried[b].displacement;
   displacement_ = committed_displacement_ = start_;
+  offset_.assign(bodies_.count(), {0.0, 0.0, 0.0});
+}
+
+void ImplicitContact::set_offset(std::size_t b, const std::array<double, 3>& u) {
+  offset_[b] = u;
+  set_time(t_);
 }
 
 bool ImplicitContact::has_friction() const {
@@ -129,7 +137,8 @@ void ImplicitContact::set_time(double t) {
   t_ = t;
   for (std::size_t b = 0; b < bodies_.count(); ++b) {
     const auto travel = bodies_.prescribed_travel(b, t0_, t);
-    for (std::size_t k = 0; k < 3; ++k) displacement_[b][k] = start_[b][k] + travel[k];
+    for (std::size_t k = 0; k < 3; ++k)
+      displacement_[b][k] = start_[b][k] + travel[k] + offset_[b][k];
   }
 }
 
@@ -180,6 +189,18 @@ void ImplicitContact::add_residual(const Vector& d_overlap, Vector& r_overlap) c
     }
 }
 
+void ImplicitContact::particle_tangent(const Pair& pair, const Candidate& c, const Touch& t,
+                                       double (&B)[3][3]) const {
+  // d(k g n_i)/dx_j = k (n_i n_j + g dn_ij/dx_j); x_J = X_J + sum_K phi_K d_K.
+  const auto udim = static_cast<std::size_t>(dim_);
+  for (std::size_t i = 0; i < 3; ++i)
+    for (std::size_t j = 0; j < 3; ++j)
+      B[i][j] = i < udim && j < udim
+                    ? c.stiffness * (t.normal[i] * t.normal[j] + t.gap * t.dn[i][j])
+                    : 0.0;
+  if (rubs(pair)) add_friction_tangent(t, c.stiffness, stick_stiffness(pair, c), udim, B);
+}
+
 void ImplicitContact::add_tangent(const Vector& d_overlap, FEMatrix& K) const {
   const auto udim = static_cast<std::size_t>(dim_);
   const auto d = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
@@ -188,12 +209,8 @@ void ImplicitContact::add_tangent(const Vector& d_overlap, FEMatrix& K) const {
       if (!pair.active) break;  // the whole pair is out of this stage
       const auto t = touch(pair, c, d);
       if (!(t.gap < 0)) continue;
-      // d(k g n_i)/dx_j = k (n_i n_j + g dn_ij/dx_j); x_J = X_J + sum_K phi_K d_K.
       double B[3][3];
-      for (std::size_t i = 0; i < udim; ++i)
-        for (std::size_t j = 0; j < udim; ++j)
-          B[i][j] = c.stiffness * (t.normal[i] * t.normal[j] + t.gap * t.dn[i][j]);
-      if (rubs(pair)) add_friction_tangent(t, c.stiffness, stick_stiffness(pair, c), udim, B);
+      particle_tangent(pair, c, t, B);
       const auto& nodes = c.row.nodes;
       const auto& phi = c.row.phi;
       const std::size_t n = nodes.size();
@@ -242,6 +259,53 @@ std::vector<BodyResultant> ImplicitContact::body_forces(const Vector& d_overlap)
       out[b].moment[i] = total[6 * b + 3 + i];
     }
   return out;
+}
+
+double ImplicitContact::body_stiffness(const Vector& d_overlap, std::size_t b,
+                                       const double* a) const {
+  const auto udim = static_cast<std::size_t>(dim_);
+  const auto d = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
+  double local = 0, total = 0;
+  for (const auto& pair : pairs_) {
+    if (!pair.active || pair.body != b) continue;
+    for (const auto& c : pair.candidates) {
+      const auto t = touch(pair, c, d);
+      if (!(t.gap < 0)) continue;
+      double B[3][3];
+      particle_tangent(pair, c, t, B);
+      for (std::size_t i = 0; i < udim; ++i)
+        for (std::size_t j = 0; j < udim; ++j) local += a[i] * B[i][j] * a[j];
+    }
+  }
+  Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, 1, &local, &total);
+  return total;
+}
+
+ImplicitContact::FirstTouch ImplicitContact::first_touch(const Vector& d_overlap, std::size_t b,
+                                                         const double* a) const {
+  const auto d = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
+  std::vector<std::pair<double, const Candidate*>> gaps;
+  std::vector<double> normal_along;
+  double local = std::numeric_limits<double>::infinity(), nearest = local;
+  for (const auto& pair : pairs_) {
+    if (!pair.active || pair.body != b) continue;
+    for (const auto& c : pair.candidates) {
+      const auto t = touch(pair, c, d);
+      gaps.emplace_back(t.gap, &c);
+      double an = 0;
+      for (int i = 0; i < dim_; ++i) an += a[i] * t.normal[i];
+      normal_along.push_back(an);
+      local = std::min(local, t.gap);
+    }
+  }
+  Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MIN, 1, &local, &nearest);
+  // The candidates at the nearest gap (to a millionth of their size) touch first, together.
+  double k_local = 0, k_total = 0;
+  for (std::size_t i = 0; i < gaps.size(); ++i)
+    if (gaps[i].first <= nearest + 1e-6 * gaps[i].second->size)
+      k_local += gaps[i].second->stiffness * normal_along[i] * normal_along[i];
+  Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, 1, &k_local, &k_total);
+  return {nearest, k_total};
 }
 
 }  // namespace efg

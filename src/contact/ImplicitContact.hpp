@@ -22,6 +22,7 @@
 // the decay law's dependence on the slip are left out of it).
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <vector>
 
@@ -44,6 +45,26 @@ class ImplicitContact {
                    const std::string& stage = "");
   /// The bodies' displacements at time t of the stage (prescribed motions).
   void set_time(double t);
+  /// Force control (drivers/BodyForceBalance): body b displaced by `u` beyond its prescribed
+  /// travel (a free body's place, found by balancing its static load), from now on.
+  void set_offset(std::size_t b, const std::array<double, 3>& u);
+  const RigidBodies& bodies() const { return bodies_; }
+  /// A contact with body b acts in the current stage.
+  bool acts_on(std::size_t b) const {
+    return std::any_of(pairs_.begin(), pairs_.end(),
+                       [b](const Pair& p) { return p.active && p.body == b; });
+  }
+  /// The contact stiffness of body b along the unit vector a at d, sum over its touching
+  /// candidates of a^T B_J a (B_J = -dF_J/dx, the particle held): the stiffness the body would
+  /// meet on rigid parts, an upper bound of the parts' (summed over ranks; collective).
+  double body_stiffness(const Vector& d_overlap, std::size_t b, const double* a) const;
+  /// The smallest gap of the candidates of body b at d (positive: nothing touches it), and the
+  /// contact stiffness along a of the candidates at that gap (those that touch first).
+  /// Summed over ranks; collective.
+  struct FirstTouch {
+    double gap = 0, stiffness = 0;
+  };
+  FirstTouch first_touch(const Vector& d_overlap, std::size_t b, const double* a) const;
   /// Displacements of every body at the last set_time.
   const std::vector<std::array<double, 3>>& body_displacements() const { return displacement_; }
   /// r -= phi F (overlap) at d.
@@ -62,6 +83,7 @@ class ImplicitContact {
   struct Candidate {
     ParticleRow row;
     double stiffness = 0;                     ///< beta_J A_J
+    double size = 0;                          ///< h_J
     std::array<double, 3> x_old{}, ft_old{};  ///< friction: at the last accepted load step
   };
   struct Pair {
@@ -80,6 +102,9 @@ class ImplicitContact {
   };
   template <class View>
   Touch touch(const Pair& p, const Candidate& c, const View& d) const;
+  /// B = -dF/dx of candidate c at its touch t (normal, curvature and friction terms).
+  void particle_tangent(const Pair& pair, const Candidate& c, const Touch& t,
+                        double (&B)[3][3]) const;
   static bool rubs(const Pair& p) { return p.friction.mu_s > 0 || p.friction.mu_d > 0; }
   /// The regularized stick's stiffness k_t = E A_J / h_J: the normal penalty's beta_J A_J without
   /// its factor implicit_penalty (the material's own stiffness over a boundary cell; the
@@ -95,6 +120,7 @@ class ImplicitContact {
   std::vector<Pair> pairs_;
   double t0_ = 0, t_ = 0, t_committed_ = 0;
   std::vector<std::array<double, 3>> start_, displacement_, committed_displacement_;
+  std::vector<std::array<double, 3>> offset_;  ///< force control: beyond the prescribed travel
 };
 
 }  // namespace efg

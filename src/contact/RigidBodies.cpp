@@ -164,10 +164,33 @@ void RigidBodies::turn_free(std::size_t b, RigidBodyState& s, double dt) const {
   if (dim_ == 3) s.orientation = contact::turned(s.orientation, turn);
 }
 
-double RigidBodies::applied_force(std::size_t b, int k, double time) const {
+double RigidBodies::applied_force(std::size_t b, int k, double time, double no_curve) const {
   const auto& f = bodies_[b].force;
   if (static_cast<std::size_t>(k) >= f.size()) return 0.0;
-  return f[static_cast<std::size_t>(k)] * curve_factor(scene_, time, 1.0)(bodies_[b].curve);
+  return f[static_cast<std::size_t>(k)] * curve_factor(scene_, time, no_curve)(bodies_[b].curve);
+}
+
+std::array<double, 3> RigidBodies::static_load(std::size_t b, double time, double no_curve) const {
+  std::array<double, 3> load{};
+  for (int k = 0; k < dim_; ++k)
+    load[static_cast<std::size_t>(k)] =
+        applied_force(b, k, time, no_curve) + no_curve * bodies_[b].mass * gravity(b, k);
+  return load;
+}
+
+std::array<double, 3> RigidBodies::static_load_axis(std::size_t b) const {
+  const auto unit_of = [this](const std::vector<double>& v) {
+    std::array<double, 3> axis{};
+    double size = 0;
+    for (std::size_t k = 0; k < v.size() && k < static_cast<std::size_t>(dim_); ++k) {
+      axis[k] = v[k];
+      size += v[k] * v[k];
+    }
+    for (auto& a : axis) a = size > 0 ? a / std::sqrt(size) : 0.0;
+    return axis;
+  };
+  const auto axis = unit_of(bodies_[b].force);
+  return axis[0] != 0 || axis[1] != 0 || axis[2] != 0 ? axis : unit_of(bodies_[b].gravity);
 }
 
 std::array<double, 3> RigidBodies::prescribed_travel(std::size_t b, double t0, double t1) const {

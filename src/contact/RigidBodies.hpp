@@ -61,6 +61,14 @@ class RigidBodies {
   /// (central differences need it below 4): throws NumericalError naming body b otherwise.
   /// `where` follows "its contact" in the message (e.g. " with the shell").
   void check_contact_mass(std::size_t b, double penalty_mass, const char* where = "") const;
+  /// The load a free body carries in an implicit (static) stage at `time`: its applied force
+  /// x curve (x `no_curve` without one: the implicit stages' ramp of loads) plus its weight,
+  /// mass x gravity x `no_curve` (ramped as the parts' own body loads). Its contact forces
+  /// balance it there.
+  std::array<double, 3> static_load(std::size_t b, double time, double no_curve) const;
+  /// The axis of that load (a unit vector; its applied force's, or its gravity's without one;
+  /// zeros without either): a free body in an implicit stage moves along it only.
+  std::array<double, 3> static_load_axis(std::size_t b) const;
   /// Momentum of the free bodies, per direction.
   std::array<double, 3> momentum(const std::vector<RigidBodyState>& states) const;
 
@@ -82,7 +90,7 @@ class RigidBodies {
     return static_cast<std::size_t>(k) < g.size() ? g[static_cast<std::size_t>(k)] : 0.0;
   }
   /// The applied force on free body b at `time`, component k.
-  double applied_force(std::size_t b, int k, double time) const;
+  double applied_force(std::size_t b, int k, double time, double no_curve = 1.0) const;
   /// Acceleration of free body b from its contact force, gravity and applied force.
   double acceleration(std::size_t b, int k, const RigidBodyState& s, double time) const {
     return (s.force[k] + applied_force(b, k, time)) / bodies_[b].mass + gravity(b, k);

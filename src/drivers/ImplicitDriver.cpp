@@ -9,6 +9,7 @@
 #include "core/Errors.hpp"
 #include "core/Log.hpp"
 #include "core/Progress.hpp"
+#include "drivers/BodyForceBalance.hpp"
 
 namespace efg {
 
@@ -30,8 +31,12 @@ StageSummary ImplicitDriver::run(Vector& d, const OutputHook& output) {
          last_output = start_;
   Vector saved(d, Teuchos::Copy), increment(d.getMap());
   double previous_dt = 0;
+  // Free rigid bodies of the contacts are force-controlled: placed where their contacts
+  // balance their loads around each Newton solve.
+  BodyForceBalance bodies(problem_, "stage '" + stage_.name + "'");
+  const auto ramp_at = [&](double time) { return std::min(1.0, time / first_end_); };
   auto set_loads = [&](double time) {
-    const double ramp = std::min(1.0, time / first_end_);
+    const double ramp = ramp_at(time);
     problem_.set_load_factor(curve_factor(scene, time, ramp, stage_.name));
     problem_.set_time(time);
   };
@@ -56,8 +61,10 @@ StageSummary ImplicitDriver::run(Vector& d, const OutputHook& output) {
     // Extrapolated predictor: on a steady load path Newton starts near the answer instead of at
     // the last one, where a plastic step's first iterate overshot (det F <= 0 in a trial,
     // cutbacks).
-    const auto result =
-        newton.solve_predicted(d, increment, previous_dt > 0 ? (target - t) / previous_dt : 0.0);
+    const double ratio = previous_dt > 0 ? (target - t) / previous_dt : 0.0;
+    const auto result = bodies.active()
+                            ? bodies.solve(newton, d, increment, ratio, target, ramp_at(target))
+                            : newton.solve_predicted(d, increment, ratio);
     summary.newton_iterations += result.iterations;
     summary.linear_iterations += result.linear_iterations;
     summary.newton_records.push_back(result.record);
@@ -101,6 +108,7 @@ StageSummary ImplicitDriver::run(Vector& d, const OutputHook& output) {
     // Accepted: the history of the converged state becomes the start of the next load step (a
     // cut-back step above never reaches here and leaves the committed history untouched).
     problem_.commit_history(d);
+    bodies.commit();
     increment.update(1.0, d, -1.0, saved, 0.0);
     previous_dt = target - t;
     t = target;

@@ -222,4 +222,27 @@ NewtonResult NewtonSolver::solve(Vector& d, double step_scale, double step_energ
   return result;
 }
 
+int NewtonSolver::solve_tangent(const Vector& d, const Vector& b, Vector& x) {
+  Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewCounter("efg: tangent solves"));
+  using Extract = Thyra::TpetraOperatorVectorExtraction<double, Map::local_ordinal_type,
+                                                        GlobalOrdinal, Map::node_type>;
+  const auto K = Teuchos::rcp_dynamic_cast<FEMatrix>(Extract::getTpetraOperator(jacobian_), true);
+  problem_.jacobian(d, *K);
+  if (!preconditioner_.is_null()) preconditioner_->compute(K);
+  auto lows = lows_factory_->createOp();
+  Thyra::initializePreconditionedOp<double>(*lows_factory_, jacobian_, preconditioner_op_,
+                                            lows.ptr());
+  const auto space = jacobian_->range();
+  Vector rhs(b, Teuchos::Copy);
+  const auto b_thyra = Thyra::createVector(Teuchos::rcpFromRef(rhs), space);
+  x.putScalar(0.0);
+  const auto x_thyra = Thyra::createVector(Teuchos::rcpFromRef(x), space);
+  const auto status = Thyra::solve<double>(*lows, Thyra::NOTRANS, *b_thyra, x_thyra.ptr());
+  if (status.solveStatus != Thyra::SOLVE_STATUS_CONVERGED) return -1;
+  const auto& extra = status.extraParameters;
+  return extra.is_null() || !extra->isParameter("Belos/Iteration Count")
+             ? 1
+             : extra->get<int>("Belos/Iteration Count");
+}
+
 }  // namespace efg

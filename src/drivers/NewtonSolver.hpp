@@ -44,6 +44,11 @@ class NewtonSolver {
   /// start of Newton, not a change of any history, which each iterate recomputes.
   NewtonResult solve_predicted(Vector& d, const Vector& increment, double ratio);
 
+  /// x = K(d)^-1 b with the Jacobian at d and the stage's linear solver (its preconditioner
+  /// rebuilt there): a tangent direction (drivers/BodyForceBalance). Returns the linear
+  /// iterations, or -1 when the solve did not converge.
+  int solve_tangent(const Vector& d, const Vector& b, Vector& x);
+
   const LinearSolverPlan& plan() const { return plan_; }
   /// Seconds spent building preconditioners / factorizations so far.
   double preconditioner_seconds() const;

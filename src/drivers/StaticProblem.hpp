@@ -56,6 +56,8 @@ class StaticProblem : public NonlinearProblem {
   /// contacts' friction state are committed.
   void commit_history(const Vector& d_owned);
 
+  /// The contacts with rigid bodies (null without contacts).
+  ImplicitContact* contact() { return contact_.get(); }
   /// The contact force on every rigid body at d (collective; empty without contacts).
   std::vector<BodyResultant> body_forces(const Vector& d_owned);
 

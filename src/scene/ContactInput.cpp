@@ -203,6 +203,43 @@ ContactSpec read_contact(const Scene& s, const YAML::Node& r, const YAML::Node& 
   return c;
 }
 
+// A free body in an implicit (static) stage is force-controlled (drivers/BodyForceBalance): it
+// moves along its load only, so it needs a load with one direction and no spin to integrate.
+void check_static_load(const Scene& s, const RigidBodySpec& b, const ContactSpec& c,
+                       const YAML::Node& stage_at, const std::string& stage_key) {
+  const auto i = static_cast<std::size_t>(&b - s.rigid_bodies.data());
+  const auto path = "rigid_bodies[" + std::to_string(i) + "]";
+  const auto& d = s.document["rigid_bodies"][i];
+  const auto who = "rigid body '" + b.name + "' of contact '" + c.name + "'";
+  if (!b.angular_velocity.empty())
+    fail(s, stage_at, stage_key,
+         who +
+             " is free and turns, which implicit stages do not model yet; expected driver: "
+             "explicit, or no angular_velocity");
+  const auto size = [](const std::vector<double>& v) {
+    double n = 0;
+    for (double x : v) n += x * x;
+    return std::sqrt(n);
+  };
+  const double f = size(b.force), g = size(b.gravity);
+  if (!(f > 0) && !(g > 0))
+    fail(s, d["motion"], path + ".motion",
+         who +
+             " is free in an implicit (static) stage, where it is placed to balance its load, "
+             "but it has none; expected force: (a blank holder's) or gravity:, or motion: "
+             "fixed or prescribed");
+  if (f > 0 && g > 0) {
+    double dot = 0;
+    for (std::size_t k = 0; k < std::min(b.force.size(), b.gravity.size()); ++k)
+      dot += b.force[k] * b.gravity[k];
+    if (std::abs(std::abs(dot) - f * g) > 1e-12 * f * g)
+      fail(s, d["gravity"], path + ".gravity",
+           who +
+               " moves along its load in an implicit (static) stage, but its force and gravity "
+               "point different ways; expected them parallel");
+  }
+}
+
 }  // namespace
 
 double contact_stability_share(const ContactSpec& c) {
@@ -236,8 +273,8 @@ void read_contact_input(Scene& s) {
   for (std::size_t i = 0; i < r["contacts"].size(); ++i)
     s.contacts.push_back(
         read_contact(s, r["contacts"][i], d["contacts"][i], "contacts[" + std::to_string(i) + "]"));
-  // Implicit stages: contact with fixed or prescribed bodies (a free body has no static
-  // equilibrium of its own here), with or without friction; not between deformable parts.
+  // Implicit stages: contact with fixed, prescribed or force-controlled (free) bodies, with or
+  // without friction; not between deformable parts.
   std::vector<std::string> stage_names;
   for (const auto& st : s.stages) stage_names.push_back(st.name);
   for (std::size_t i = 0; i < s.contacts.size(); ++i)
@@ -266,11 +303,7 @@ void read_contact_input(Scene& s) {
              "rigid body '" + b.name + "' of contact '" + c.name +
                  "' turns, which implicit stages do not model yet; expected driver: explicit, or "
                  "no angular_velocity");
-      if (b.motion == "free")
-        fail(s, stage_at, stage_key,
-             "rigid body '" + b.name + "' of contact '" + c.name +
-                 "' is free, but implicit stages take fixed or prescribed bodies only; expected "
-                 "driver: explicit, or motion: fixed or prescribed");
+      if (b.motion == "free") check_static_load(s, b, c, stage_at, stage_key);
     }
   }
 }

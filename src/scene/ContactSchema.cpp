@@ -8,7 +8,9 @@ SpecPtr rigid_body_spec() {
   auto point = [](const std::string& doc) { return real_list(doc, "length").items(2, 3); };
   return map("A rigid body of analytic shape: fixed, moved by a prescribed velocity, or free "
              "(translation under its contact forces; a round body or a 2D box given an "
-             "angular_velocity also turns); implicit stages take fixed and prescribed bodies. "
+             "angular_velocity also turns); in implicit stages a free body is force-controlled: "
+             "placed "
+             "along its force (or gravity) where its contacts balance that load. "
              "Particles of the parts "
              "named by a contact may not enter it.")
       .required("name", string("Body name, unique."))
@@ -24,7 +26,8 @@ SpecPtr rigid_body_spec() {
                           "length/time")
                     .items(2, 3))
       .optional("curve", string("Curve scaling the prescribed velocity (prescribed) or the applied "
-                                "force (free) over time; constant when omitted."))
+                                "force (free) over time; constant when omitted (implicit stages: "
+                                "the force then ramps as the other loads)."))
       .optional("axis_curves",
                 string_list("Prescribed bodies: one curve per velocity component instead of curve "
                             "(a punch pressed, then dragged sideways).")
@@ -81,7 +84,8 @@ SpecPtr rigid_body_spec() {
 SpecPtr contact_spec() {
   return map("Penalty contact between the surface particles of deformable parts and a rigid "
              "body, or the surface of other deformable parts (target_parts; explicit stages), "
-             "with Coulomb friction; implicit stages take fixed or prescribed rigid bodies.")
+             "with Coulomb friction; implicit stages take rigid bodies (free ones "
+             "force-controlled).")
       .required("name", string("Contact name, unique."))
       .optional("rigid_body", string("Name of an entry of rigid_bodies."))
       .optional("target_parts",

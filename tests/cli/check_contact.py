@@ -38,6 +38,15 @@ usage: check_contact.py impact|punch|slide|stick HISTORY.csv
   punch_implicit  prescribed punch on a block on rollers, implicit: force E* delta within 0.5 %
           at every record (delta = 0.01 t), base reaction = contact force to 1e-8, the punch's
           travel 0.01 t to 1e-12
+  punch_force  the same punch free, force-controlled by F t (F = E* 0.01): its place
+          u_y = -t (0.01 + F h / (100 E (W + h))) within 1e-4 of 0.01 t (by hand: the block's
+          uniaxial shortening and the top's uniform penetration, 8.5e-4 of the place; the
+          particles' contact forces, a nodal quadrature of the pressure, bend the top by
+          4e-5 of it), its contact force = -F t and the base's reaction = F t, both to 1e-8 of
+          F; with the history of the prescribed punch (flat_punch_implicit.yaml) as a third
+          argument, the place where the prescribed run's force F_p(t) moved it 0.01 t, scaled
+          by F / F_p (the discrete problem is linear), to 1e-9 of 0.01
+usage: check_contact.py KIND HISTORY.csv [TWIN_HISTORY.csv]
 """
 import math
 import sys
@@ -125,6 +134,23 @@ elif kind == "punch_implicit":
         x_f = 0.5 * (1 + 0.3 / 0.7 * 0.01 * t)
         check("contact moment vs (x_F - 1) F (relative to max F)",
               np.abs(col("rb_punch_Mz") - (x_f - 1.0) * F).max() / np.abs(F).max(), 1e-4)
+elif kind == "punch_force":
+    E, nu, h = 1000.0, 0.3, 1.0 / 12
+    F = E / (1 - nu ** 2) * 0.01
+    place = -t * (0.01 + F * h / (100 * E * (1 + h)))
+    check("punch place vs hand value / 0.01", np.abs(col("rb_punch_uy") - place).max() / 0.01, 1e-4)
+    if len(sys.argv) > 3:
+        twin = HistoryChecks(sys.argv[3])
+        F_p, t_p = twin.col("rb_punch_Fy"), twin.col("time")
+        late = t > 0
+        if not np.array_equal(t, t_p):
+            sys.exit("the two histories have different records")
+        scaled = -0.01 * t[late] * (F * t[late]) / F_p[late]
+        check("punch place vs the prescribed run's, scaled by F / F_p, / 0.01",
+              np.abs(col("rb_punch_uy")[late] - scaled).max() / 0.01, 1e-9)
+    check("|rb_punch_Fy - F t| / F", np.abs(col("rb_punch_Fy") - F * t).max() / F, 1e-8)
+    check("|R_base_y - F t| / F", np.abs(col("R_base_y") - F * t).max() / F, 1e-8)
+    check("punch moved across its load (u_x)", np.abs(col("rb_punch_ux")).max(), 0.0)
 elif kind == "driven":
     omega, R = -4.0, 0.25
     late = t >= 1.6 - 1e-9

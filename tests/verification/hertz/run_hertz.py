@@ -14,7 +14,11 @@ position), giving the half-width b and the peak p0, compared with Johnson (Conta
 Exit 1 when the finest level is off by more than 5 % in b or p0, an error does not fall from
 the coarsest to the finest level, or on any level the cut's reaction differs from the contact
 force (or the symmetry plane carries a force) by more than 1e-8 of it.
-usage: run_hertz.py EFG OUTDIR [--radial N N N] [--penalty ALPHA]
+With --force P the flat is a free rigid body pressed up by P / 2 (the quarter's share of the
+load P per unit length, ramped by the curve) onto the cylinder whose cut is held (force
+control, drivers/BodyForceBalance): the same checks, and the contact force on the flat equal to
+P / 2 to 1e-8.
+usage: run_hertz.py EFG OUTDIR [--radial N N N] [--penalty ALPHA] [--force P]
 """
 import argparse
 import math
@@ -46,7 +50,7 @@ boundary_conditions:
   - {{name: sym, type: displacement, node_set: sym, x: 0}}
   - {{name: top, type: displacement, node_set: top, y: {d!r}, curve: load}}
 rigid_bodies:
-  - {{name: flat, shape: plane, point: [0, 0], normal: [0, 1]}}
+  - {{name: flat, shape: plane, point: [0, 0], normal: [0, 1]{flat}}}
 contacts:
   - {{name: touch, rigid_body: flat, parts: [cyl], implicit_penalty: {alpha!r}}}
 curves:
@@ -74,16 +78,19 @@ def boundary_edge_sizes(x, y, conn):
     return h
 
 
-def run_level(efg, outdir, nr, alpha, grading):
-    tag = "hertz_%d" % nr
+def run_level(efg, outdir, nr, alpha, grading, force=None):
+    tag = "hertz_%d%s" % (nr, "_force" if force else "")
     mesh = os.path.join(outdir, tag + ".e")
     x, y, conn, sets = quarter_cylinder(R, nr, grading)
     write_exodus(mesh, "Hertz quarter cylinder %d" % nr, [x, y], conn, "QUAD4", sets,
                  block_name="cylinder")
     scene = os.path.join(outdir, tag + ".yaml")
     with open(scene, "w") as f:
-        f.write(SCENE.format(nr=nr, mesh=os.path.basename(mesh), E=E, nu=NU, d=-DELTA,
-                             alpha=alpha, steps=LOAD_STEPS))
+        flat = (", motion: free, mass: 1.0, force: [0, %r], curve: load" % (force / 2)
+                if force else "")
+        f.write(SCENE.format(nr=nr, mesh=os.path.basename(mesh), E=E, nu=NU,
+                             d=0.0 if force else -DELTA, alpha=alpha, steps=LOAD_STEPS,
+                             flat=flat))
     out = os.path.join(outdir, tag + "_out")
     start = time.time()
     p = subprocess.run([efg, "run", scene, "-o", out], capture_output=True, text=True)
@@ -104,7 +111,7 @@ def run_level(efg, outdir, nr, alpha, grading):
                          abs(float(last["R_sym_y"])), abs(float(last["R_sym_x"]))) / (P / 2)
     h = boundary_edge_sizes(x, y, conn)
     arc = sets["arc"] - 1
-    gap = y[arc] + uy[arc]
+    gap = y[arc] + uy[arc] - float(last["rb_flat_uy"])  # the flat moves under force control
     touching = gap < 0
     xs = (x[arc] + ux[arc])[touching]
     pressure = alpha * E * (-gap[touching]) / h[arc][touching]
@@ -116,6 +123,8 @@ def run_level(efg, outdir, nr, alpha, grading):
     e_star = E / (1 - NU * NU)
     b_exact = math.sqrt(4 * P * R / (math.pi * e_star))
     p0_exact = 2 * P / (math.pi * b_exact)
+    if force:  # the flat balances the applied load
+        reaction_error = max(reaction_error, abs(P - force) / force)
     return dict(nr=nr, particles=len(x), seconds=seconds, P=P, touching=int(touching.sum()),
                 reaction_error=reaction_error,
                 b=b, b_exact=b_exact, p0=p0, p0_exact=p0_exact,
@@ -129,6 +138,7 @@ def main():
     ap.add_argument("--radial", type=int, nargs="+", default=[20, 40, 80])
     ap.add_argument("--penalty", type=float, default=100.0)
     ap.add_argument("--grading", type=float, default=GRADING)
+    ap.add_argument("--force", type=float, default=None)
     a = ap.parse_args()
     os.makedirs(a.outdir, exist_ok=True)
     efg = os.path.abspath(a.efg)
@@ -137,7 +147,7 @@ def main():
     print("|---|---|---|---|---|---|---|---|---|---|---|---|---|")
     rows = []
     for nr in a.radial:
-        r = run_level(efg, a.outdir, nr, a.penalty, a.grading)
+        r = run_level(efg, a.outdir, nr, a.penalty, a.grading, a.force)
         r["eb"] = r["b"] / r["b_exact"] - 1
         r["ep"] = r["p0"] / r["p0_exact"] - 1
         rows.append(r)
