@@ -11,23 +11,11 @@
 
 #include <cmath>
 
+#include "geometry/FacetNormal.hpp"
+
 namespace efg::contact {
 
-/// The facet's normal scaled by its size: (dy, -dx) of a segment (its length), (b - a) x (c - a)
-/// of a triangle (twice its area). node: 2 or 3 positions, 3 components each.
-inline void facet_normal(const double (*node)[3], int dim, double* m) {
-  const double ab[3] = {node[1][0] - node[0][0], node[1][1] - node[0][1], node[1][2] - node[0][2]};
-  if (dim == 2) {
-    m[0] = ab[1];
-    m[1] = -ab[0];
-    m[2] = 0.0;
-    return;
-  }
-  const double ac[3] = {node[2][0] - node[0][0], node[2][1] - node[0][1], node[2][2] - node[0][2]};
-  m[0] = ab[1] * ac[2] - ab[2] * ac[1];
-  m[1] = ab[2] * ac[0] - ab[0] * ac[2];
-  m[2] = ab[0] * ac[1] - ab[1] * ac[0];
-}
+using ::efg::facet_normal;  // geometry/FacetNormal.hpp
 
 struct FacetPoint {
   bool over = false;  ///< the projection falls on the facet (within the tolerance)

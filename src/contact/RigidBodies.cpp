@@ -3,6 +3,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "contact/MeshSurface.hpp"
 #include "core/Errors.hpp"
 #include "model/Curves.hpp"
 #include "scene/ContactInput.hpp"
@@ -34,6 +35,10 @@ contact::Shape shape_of(const RigidBodySpec& b, int dim) {
     copy(b.center, s.center);
     s.radius = b.radius;
     if (dim == 3 && !b.axis.empty()) unit(b.axis, s.axis, 3);
+  } else if (b.shape == "mesh") {
+    s.kind = Kind::mesh;
+    s.mesh = std::make_shared<const contact::MeshSurface>(b.surface);
+    for (int k = 0; k < 3; ++k) s.center[k] = b.surface->centroid[static_cast<std::size_t>(k)];
   } else {
     s.kind = Kind::box;
     copy(b.lower, s.lower);

@@ -5,23 +5,27 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 #include "contact/RigidOrientation.hpp"
 
 namespace efg::contact {
 
+class MeshSurface;  // contact/MeshSurface.hpp
+
 struct Shape {
-  enum class Kind { plane, sphere, cylinder, box };
+  enum class Kind { plane, sphere, cylinder, box, mesh };
   Kind kind = Kind::plane;
   int dim = 3;
   double point[3] = {0, 0, 0}, normal[3] = {0, 0, 1};  ///< plane, unit normal out of the body
   double center[3] = {0, 0, 0}, axis[3] = {0, 0, 1};   ///< sphere, cylinder (unit axis, 3D)
   double radius = 0;
   double lower[3] = {0, 0, 0}, upper[3] = {0, 0, 0};  ///< axis-aligned box
+  std::shared_ptr<const MeshSurface> mesh;            ///< mesh blocks (centroid in `center`)
 };
 
 /// The point a body's moments are taken about (moved with the body): a plane's point, the centre
-/// of a sphere or cylinder, the centre of a box.
+/// of a sphere or cylinder, the centre of a box, the centroid of a mesh body's cells.
 inline void reference_point(const Shape& s, double (&c)[3]) {
   for (int k = 0; k < 3; ++k)
     c[k] = s.kind == Shape::Kind::plane ? s.point[k]
@@ -45,6 +49,9 @@ struct Proximity {
   double gap = 0;                ///< signed distance, negative inside
   double normal[3] = {0, 0, 0};  ///< outward unit normal of the surface nearest x
 };
+
+/// Proximity of y (the body's frame) to a mesh body's surface (contact/MeshSurface.cpp).
+Proximity mesh_proximity(const MeshSurface& mesh, const double* y);
 
 namespace detail {
 // Distance from center along the part of x - c normal to the axis (all of it for a sphere or
@@ -165,6 +172,8 @@ inline Proximity proximity(const Shape& s, const double* x, const double* u) {
       return detail::round(s, y, s.dim == 3);
     case Shape::Kind::box:
       return detail::box(s, y);
+    case Shape::Kind::mesh:
+      return mesh_proximity(*s.mesh, y);
   }
   return {};
 }

@@ -11,6 +11,7 @@
 #include "mesh/MeshValidation.hpp"
 #include "mesh/SurfaceChart.hpp"
 #include "model/GradedMaterials.hpp"
+#include "model/RigidMeshBlocks.hpp"
 #include "parallel/Collective.hpp"
 #include "parallel/MeshBroadcast.hpp"
 #include "parallel/RootBroadcast.hpp"
@@ -52,6 +53,7 @@ BackgroundMesh load_mesh(const CommPtr& comm, Scene& scene) {
         scene.file, scene.document["mesh"]["chart"], "mesh.chart",
         "a chart is for a shell surface read in 3D (SHELL4 or TRISHELL3 cells, shell parts); "
         "this mesh is none: expected no chart"));
+  extract_rigid_blocks(scene, mesh);  // rigid bodies of mesh blocks: no particles
   chart_shell_points(scene, mesh);
   add_scene_node_sets(scene, mesh);
   check_scene_against_mesh(scene, mesh);

@@ -55,6 +55,12 @@ RigidBodySpec read_body(const Scene& s, const YAML::Node& r, const YAML::Node& d
   b.gravity = reals(r["gravity"]);
   b.force = reals(r["force"]);
   b.angular_velocity = reals(r["angular_velocity"]);
+  if (r["blocks"])
+    for (const auto& n : r["blocks"]) b.blocks.push_back(n.as<std::string>());
+  if (b.shape == "mesh" && !b.angular_velocity.empty())
+    fail(s, d["angular_velocity"], path + ".angular_velocity",
+         "a body made of mesh blocks does not turn yet (no inertia tensor); expected no "
+         "angular_velocity, or an analytic shape");
   if (b.shape == "plane" && !nonzero(b.normal))
     fail(s, d["normal"], path + ".normal", "expected a nonzero normal");
   if (b.shape == "box")
@@ -252,6 +258,7 @@ double contact_stability_share(const ContactSpec& c) {
 double rigid_body_volume(const RigidBodySpec& b, int dim) {
   constexpr double pi = 3.14159265358979323846;
   const bool two_d = dim == 2;
+  if (b.shape == "mesh") return b.surface ? b.surface->volume * (two_d ? b.thickness : 1.0) : 0.0;
   if (b.shape == "sphere")
     return two_d ? pi * b.radius * b.radius * b.thickness
                  : 4.0 / 3.0 * pi * b.radius * b.radius * b.radius;

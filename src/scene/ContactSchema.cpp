@@ -6,7 +6,8 @@ using namespace schema;
 
 SpecPtr rigid_body_spec() {
   auto point = [](const std::string& doc) { return real_list(doc, "length").items(2, 3); };
-  return map("A rigid body of analytic shape: fixed, moved by a prescribed velocity, or free "
+  return map("A rigid body of analytic shape, or made of mesh blocks (shape: mesh): fixed, moved "
+             "by a prescribed velocity, or free "
              "(translation under its contact forces; a round body or a 2D box given an "
              "angular_velocity also turns); in implicit stages a free body is force-controlled: "
              "placed "
@@ -14,7 +15,8 @@ SpecPtr rigid_body_spec() {
              "Particles of the parts "
              "named by a contact may not enter it.")
       .required("name", string("Body name, unique."))
-      .required("shape", choice("Analytic shape.", {"plane", "sphere", "cylinder", "box"}))
+      .required("shape", choice("Analytic shape, or mesh: the cells of `blocks`.",
+                                {"plane", "sphere", "cylinder", "box", "mesh"}))
       .optional("motion",
                 choice("fixed: never moves; prescribed: velocity x curve(t); free: moves under "
                        "the contact forces (needs mass or density).",
@@ -78,7 +80,12 @@ SpecPtr rigid_body_spec() {
                 optional_key("axis",
                              real_list("Axis direction (3D; infinite length).", "-").items(3, 3))})
       .variant("box", {required_key("lower", point("Lower corner (axis-aligned box).")),
-                       required_key("upper", point("Upper corner."))});
+                       required_key("upper", point("Upper corner."))})
+      .variant("mesh", {required_key("blocks", string_list("Element blocks of the mesh that make "
+                                                           "the body (its cells' boundary is its "
+                                                           "surface; nodes of their own, in no "
+                                                           "part; they are no particles).")
+                                                   .items(1, 1000))});
 }
 
 SpecPtr contact_spec() {

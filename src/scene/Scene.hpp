@@ -12,6 +12,7 @@
 
 #include "expressions/Expression.hpp"
 #include "mesh/MeshGenerator.hpp"
+#include "mesh/RigidSurface.hpp"
 #include "mesh/SurfaceChart.hpp"
 
 namespace efg {
@@ -176,7 +177,10 @@ struct RigidWallSpec {
 /// under its contact forces).
 struct RigidBodySpec {
   std::string name;
-  std::string shape;                     ///< plane | sphere | cylinder | box
+  std::string shape;                ///< plane | sphere | cylinder | box | mesh
+  std::vector<std::string> blocks;  ///< mesh: the element blocks that make the body
+  /// mesh: its surface, volume and centroid, set when the mesh is loaded (model/RigidMeshBlocks)
+  std::shared_ptr<const RigidSurface> surface;
   std::vector<double> point, normal;     ///< plane
   std::vector<double> center, axis;      ///< sphere, cylinder (axis: 3D cylinders)
   double radius = 0;                     ///< sphere, cylinder

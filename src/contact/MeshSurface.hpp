@@ -1,0 +1,40 @@
+// The signed distance of a point to the surface of a rigid body made of mesh blocks (plain
+// code, no Trilinos; mesh/RigidSurface holds the facets). In the body's own (reference) frame:
+// the facets near the point come from bins over their boxes grown by the capture reach (the
+// largest facet), built once - the body moves as a whole, the point is taken into its frame.
+// The closest point p of those facets decides:
+// - inside a facet (its projection within the segment or triangle): the facet's plane, the gap
+//   g = (y - a) . n and its unit normal n (as an analytic plane or box face);
+// - on an edge or corner: the distance |y - p|, signed by the pseudo-normal (the sum of the
+//   unit normals of the facets that share that closest point; Baerentzen & Aanaes 2005 weight
+//   them by angle, an equal weight is exact in 2D and for the corners of boxes), the normal
+//   (y - p) / g pointing out of the body.
+// A point farther than the reach from every facet gets the gap `reach` (at least that far, no
+// contact). A penetration deeper than half the body's thickness comes out on the other side's
+// facets (as for any closest-point contact): tools thinner than the particles' approach in one
+// step are not resolved.
+#pragma once
+
+#include <memory>
+
+#include "contact/FacetBins.hpp"
+#include "contact/RigidShape.hpp"
+#include "mesh/RigidSurface.hpp"
+
+namespace efg::contact {
+
+class MeshSurface {
+ public:
+  explicit MeshSurface(std::shared_ptr<const RigidSurface> surface);
+
+  /// Gap and outward normal of y (body frame).
+  Proximity proximity(const double* y) const;
+  const RigidSurface& surface() const { return *surface_; }
+
+ private:
+  std::shared_ptr<const RigidSurface> surface_;
+  FacetBins bins_;
+  double reach_ = 0;
+};
+
+}  // namespace efg::contact

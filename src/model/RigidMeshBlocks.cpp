@@ -1,0 +1,147 @@
+#include "model/RigidMeshBlocks.hpp"
+
+#include <algorithm>
+#include <memory>
+
+#include "core/Errors.hpp"
+#include "discretization/OrientedFacets.hpp"
+#include "scene/SchemaValidator.hpp"
+
+namespace efg {
+
+namespace {
+
+[[noreturn]] void fail(const Scene& scene, std::size_t body, const std::string& message) {
+  throw InputError(
+      schema::located_message(scene.file, scene.document["rigid_bodies"][body]["blocks"],
+                              "rigid_bodies[" + std::to_string(body) + "].blocks", message));
+}
+
+// Corners, volume and centroid of the blocks' cells from their outward boundary facets.
+RigidSurface surface_of(const BackgroundMesh& mesh, const std::vector<std::string>& blocks) {
+  const auto facets = oriented_boundary_facets(mesh, blocks);
+  RigidSurface s;
+  s.dim = mesh.dimension;
+  s.nodes_per_facet = facets.nodes_per_facet;
+  s.reference_size = facets.reference_size;
+  const auto dim = static_cast<std::size_t>(mesh.dimension);
+  for (auto n : facets.nodes)
+    for (std::size_t k = 0; k < 3; ++k)
+      s.corners.push_back(k < dim ? mesh.coordinates[static_cast<std::size_t>(n) * dim + k] : 0.0);
+  // The origin's simplex on each facet, signed by the facet's outward order: 2D (a x b) / 2 with
+  // centroid (a + b) / 3, 3D a . (b x c) / 6 with centroid (a + b + c) / 4.
+  const auto per = static_cast<std::size_t>(s.nodes_per_facet);
+  std::array<double, 3> moment{};
+  for (std::size_t f = 0; f < s.count(); ++f) {
+    const double* a = &s.corners[3 * per * f];
+    const double* b = a + 3;
+    double v = 0;
+    if (per == 2) {
+      v = 0.5 * (a[0] * b[1] - a[1] * b[0]);
+    } else {
+      const double* c = b + 3;
+      v = (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
+           a[2] * (b[0] * c[1] - b[1] * c[0])) /
+          6.0;
+    }
+    s.volume += v;
+    for (std::size_t k = 0; k < 3; ++k) {
+      double sum = 0;
+      for (std::size_t q = 0; q < per; ++q) sum += a[3 * q + k];
+      moment[k] += v * sum / static_cast<double>(per + 1);
+    }
+  }
+  for (std::size_t k = 0; k < 3; ++k) s.centroid[k] = s.volume > 0 ? moment[k] / s.volume : 0.0;
+  return s;
+}
+
+}  // namespace
+
+void extract_rigid_blocks(Scene& scene, BackgroundMesh& mesh) {
+  std::vector<std::string> rigid;  // every mesh body's blocks
+  for (std::size_t i = 0; i < scene.rigid_bodies.size(); ++i) {
+    auto& body = scene.rigid_bodies[i];
+    if (body.shape != "mesh") continue;
+    if (scene.has_shells())
+      fail(scene, i,
+           "rigid bodies of mesh blocks touch solid parts only for now; expected an analytic "
+           "shape with shell parts");
+    for (const auto& name : body.blocks) {
+      if (!mesh.find_block(name)) {
+        std::string names;
+        for (const auto& b : mesh.blocks) names += (names.empty() ? "" : ", ") + b.name;
+        fail(scene, i, "the mesh has no element block '" + name + "'; expected one of: " + names);
+      }
+      for (const auto& part : scene.parts)
+        if (std::find(part.blocks.begin(), part.blocks.end(), name) != part.blocks.end())
+          fail(scene, i,
+               "block '" + name + "' is also in part '" + part.name +
+                   "'; expected a block of the body only (its nodes are no particles)");
+      if (std::find(rigid.begin(), rigid.end(), name) != rigid.end())
+        fail(scene, i, "block '" + name + "' is named by two rigid bodies");
+      rigid.push_back(name);
+    }
+    auto surface = surface_of(mesh, body.blocks);
+    if (!(surface.volume > 0))
+      fail(scene, i, "the blocks' cells enclose no volume; expected cells of positive volume");
+    body.surface = std::make_shared<const RigidSurface>(std::move(surface));
+  }
+  if (rigid.empty()) return;
+  // Nodes of the rigid blocks go; one also in a remaining block would be both.
+  const auto is_rigid = [&rigid](const ElementBlock& b) {
+    return std::find(rigid.begin(), rigid.end(), b.name) != rigid.end();
+  };
+  std::vector<char> in_rigid(mesh.node_count(), 0), in_other(mesh.node_count(), 0);
+  for (const auto& b : mesh.blocks)
+    for (auto n : b.connectivity)
+      (is_rigid(b) ? in_rigid : in_other)[static_cast<std::size_t>(n)] = 1;
+  for (std::size_t n = 0; n < mesh.node_count(); ++n)
+    if (in_rigid[n] && in_other[n])
+      for (std::size_t i = 0; i < scene.rigid_bodies.size(); ++i)
+        if (scene.rigid_bodies[i].shape == "mesh")
+          fail(scene, i,
+               "the rigid blocks share node " + std::to_string(n + 1) +
+                   " with the parts' blocks; expected a body with nodes of its own");
+  const auto dim = static_cast<std::size_t>(mesh.dimension);
+  std::vector<LocalIndex> new_index(mesh.node_count(), -1);
+  std::vector<double> coordinates;
+  LocalIndex next = 0;
+  for (std::size_t n = 0; n < mesh.node_count(); ++n) {
+    if (in_rigid[n]) continue;
+    new_index[n] = next++;
+    coordinates.insert(coordinates.end(), mesh.coordinates.begin() + static_cast<long>(n * dim),
+                       mesh.coordinates.begin() + static_cast<long>((n + 1) * dim));
+  }
+  // Global cells renumbered in the order of the remaining blocks (-1: a rigid cell).
+  std::vector<LocalIndex> new_cell;
+  std::vector<ElementBlock> blocks;
+  LocalIndex cells = 0;
+  for (auto& b : mesh.blocks) {
+    const bool drop = is_rigid(b);
+    for (std::size_t c = 0; c < b.cell_count(); ++c) new_cell.push_back(drop ? -1 : cells++);
+    if (drop) continue;
+    for (auto& n : b.connectivity) n = new_index[static_cast<std::size_t>(n)];
+    blocks.push_back(std::move(b));
+  }
+  for (auto& set : mesh.node_sets) {
+    std::vector<LocalIndex> kept;
+    for (auto n : set.nodes)
+      if (new_index[static_cast<std::size_t>(n)] >= 0)
+        kept.push_back(new_index[static_cast<std::size_t>(n)]);
+    set.nodes = std::move(kept);
+  }
+  for (auto& set : mesh.side_sets) {
+    SideSet kept{set.name, set.id, {}, {}};
+    for (std::size_t k = 0; k < set.cells.size(); ++k) {
+      const auto c = new_cell[static_cast<std::size_t>(set.cells[k])];
+      if (c < 0) continue;
+      kept.cells.push_back(c);
+      kept.sides.push_back(set.sides[k]);
+    }
+    set = std::move(kept);
+  }
+  mesh.coordinates = std::move(coordinates);
+  mesh.blocks = std::move(blocks);
+}
+
+}  // namespace efg

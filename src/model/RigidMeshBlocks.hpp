@@ -1,0 +1,20 @@
+// Rigid bodies made of mesh blocks (`shape: mesh`, `blocks: [...]`): a die, a punch or a
+// barrier meshed with the model. Their blocks are taken out of the background mesh before
+// anything is discretized - their nodes are no particles, they have no stiffness - and kept as
+// each body's surface (mesh/RigidSurface: the blocks' outward boundary facets,
+// discretization/OrientedFacets), with the cells' volume and centroid by the divergence theorem
+// over those facets (exact for straight-sided cells: the origin's triangles (2D) or tetrahedra
+// (3D) on each facet, signed). The remaining nodes, node sets and side sets are renumbered.
+#pragma once
+
+#include "mesh/BackgroundMesh.hpp"
+#include "scene/Scene.hpp"
+
+namespace efg {
+
+/// Sets every mesh body's surface and removes its blocks from `mesh`. InputError (with the key
+/// path) for a block the mesh lacks, one a part or another body also names, one that shares
+/// nodes with the remaining blocks, or a mesh body in a shell scene.
+void extract_rigid_blocks(Scene& scene, BackgroundMesh& mesh);
+
+}  // namespace efg
