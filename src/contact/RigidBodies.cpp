@@ -47,21 +47,39 @@ contact::Shape shape_of(const RigidBodySpec& b, int dim) {
   return s;
 }
 
-// The principal moments of inertia about the centre for the rotation of free bodies (body
-// axes): a disc m R^2 / 2 (about z), a sphere 2 m R^2 / 5, a 2D box m (w^2 + h^2) / 12 (about z;
-// a rectangle of sides w, h), a 3D box m / 12 (b^2 + c^2, a^2 + c^2, a^2 + b^2) of sides a, b, c.
-std::array<double, 3> rigid_body_inertia(const RigidBodySpec& b, int dim) {
+// The inertia tensor about the centre for the rotation of free bodies (body axes, row major):
+// a disc m R^2 / 2 (about z), a sphere 2 m R^2 / 5, a 2D box m (w^2 + h^2) / 12 (about z; a
+// rectangle of sides w, h), a 3D box m / 12 diag(b^2 + c^2, a^2 + c^2, a^2 + b^2) of sides
+// a, b, c; mesh cells (uniform density m / V) rho (tr(S) I - S) from the cells' second moments S
+// about their centroid (mesh/RigidSurface), 2D rho t (S_xx + S_yy) about z.
+std::array<double, 9> rigid_body_inertia(const RigidBodySpec& b, int dim) {
   const double m = rigid_body_mass(b, dim);
+  const auto diagonal = [](double a, double c, double d) {
+    return std::array<double, 9>{a, 0, 0, 0, c, 0, 0, 0, d};
+  };
+  if (b.shape == "mesh") {
+    const auto& S = b.surface->second_moment;  // xx, yy, zz, xy, xz, yz per unit density
+    const double rho =
+        b.surface->volume > 0 ? m / (b.surface->volume * (dim == 2 ? b.thickness : 1.0)) : 0.0;
+    if (dim == 2) {
+      const double I = rho * b.thickness * (S[0] + S[1]);
+      return diagonal(I, I, I);
+    }
+    const double trace = S[0] + S[1] + S[2];
+    return {rho * (trace - S[0]), -rho * S[3],          -rho * S[4],
+            -rho * S[3],          rho * (trace - S[1]), -rho * S[5],
+            -rho * S[4],          -rho * S[5],          rho * (trace - S[2])};
+  }
   if (b.shape == "box") {
     double side[3] = {0, 0, 0};
     for (std::size_t k = 0; k < static_cast<std::size_t>(dim); ++k)
       side[k] = b.upper[k] - b.lower[k];
     const auto sq = [](double v) { return v * v; };
-    return {m * (sq(side[1]) + sq(side[2])) / 12.0, m * (sq(side[0]) + sq(side[2])) / 12.0,
-            m * (sq(side[0]) + sq(side[1])) / 12.0};
+    return diagonal(m * (sq(side[1]) + sq(side[2])) / 12.0, m * (sq(side[0]) + sq(side[2])) / 12.0,
+                    m * (sq(side[0]) + sq(side[1])) / 12.0);
   }
   const double I = m * b.radius * b.radius * (b.shape == "sphere" ? 0.4 : 0.5);
-  return {I, I, I};
+  return diagonal(I, I, I);
 }
 
 }  // namespace

@@ -81,7 +81,7 @@ class RigidBodies {
     double mass;
     std::vector<double> force;             // applied (free bodies), x curve
     std::vector<double> angular_velocity;  // initial; empty: does not rotate
-    std::array<double, 3> inertia{};       // principal moments, body axes (rotating bodies)
+    std::array<double, 9> inertia{};       // tensor about the centre, body axes (rotating bodies)
   };
   /// The turn of free rotating body b over a step (first half of the angular momentum's kick).
   void turn_free(std::size_t b, RigidBodyState& s, double dt) const;

@@ -58,14 +58,26 @@ inline Orientation turned(const Orientation& R, const double* w) {
   return out;
 }
 
-/// L = R I R^T omega for the principal moments I (body axes): the angular momentum of a body
-/// turning at omega (world); with `inverse`, omega = R I^-1 R^T L instead.
-inline void inertia_times(const Orientation& R, const double* I, const double* v, double* out,
+/// L = R J R^T omega for the inertia tensor J about the centre in the body's axes (3 x 3, row
+/// major; principal moments on its diagonal for the analytic shapes, a full tensor for bodies of
+/// mesh cells): the angular momentum of a body turning at omega (world); with `inverse`,
+/// omega = R J^-1 R^T L instead (J^-1 by cofactors: J is symmetric positive definite).
+inline void inertia_times(const Orientation& R, const double* J, const double* v, double* out,
                           bool inverse = false) {
-  double b[3];
+  double b[3], c[3];
   to_body(R, v, b);
-  for (int k = 0; k < 3; ++k) b[k] = inverse ? b[k] / I[k] : b[k] * I[k];
-  to_world(R, b, out);
+  if (!inverse) {
+    for (int i = 0; i < 3; ++i) c[i] = J[3 * i] * b[0] + J[3 * i + 1] * b[1] + J[3 * i + 2] * b[2];
+  } else {
+    const double co[9] = {
+        J[4] * J[8] - J[5] * J[7], J[2] * J[7] - J[1] * J[8], J[1] * J[5] - J[2] * J[4],
+        J[5] * J[6] - J[3] * J[8], J[0] * J[8] - J[2] * J[6], J[2] * J[3] - J[0] * J[5],
+        J[3] * J[7] - J[4] * J[6], J[1] * J[6] - J[0] * J[7], J[0] * J[4] - J[1] * J[3]};
+    const double det = J[0] * co[0] + J[1] * co[3] + J[2] * co[6];
+    for (int i = 0; i < 3; ++i)
+      c[i] = (co[3 * i] * b[0] + co[3 * i + 1] * b[1] + co[3 * i + 2] * b[2]) / det;
+  }
+  to_world(R, c, out);
 }
 
 }  // namespace efg::contact

@@ -112,9 +112,10 @@ inline Proximity proximity(const Shape& s, const double* x, const double* u);
 /// Gap and normal of point x to the shape translated by u and turned by `angle` about its
 /// reference point (2D, counterclockwise): the point is taken into the body's frame,
 /// y = c + R(-angle) (x - u - c), and the normal back out, n = R(angle) n_body. A turn leaves
-/// planes, discs and spheres as they are; rotating 2D boxes need it.
+/// planes, discs and spheres as they are; rotating 2D boxes and mesh bodies need it.
 inline Proximity proximity_turned(const Shape& s, const double* x, const double* u, double angle) {
-  if (angle == 0.0 || s.dim != 2 || s.kind != Shape::Kind::box) return proximity(s, x, u);
+  if (angle == 0.0 || s.dim != 2 || (s.kind != Shape::Kind::box && s.kind != Shape::Kind::mesh))
+    return proximity(s, x, u);
   double c[3];
   reference_point(s, c);
   const double co = std::cos(angle), si = std::sin(angle);
@@ -129,11 +130,13 @@ inline Proximity proximity_turned(const Shape& s, const double* x, const double*
 }
 
 /// Gap and normal of point x to the shape translated by u and turned by R about its reference
-/// point (3D boxes and cylinders; spheres and planes are taken as they are): the point is taken
+/// point (3D boxes, cylinders and mesh bodies; spheres and planes are taken as they are): the point is taken
 /// into the body's frame, y = c + R^T (x - u - c), and the normal back out, n = R n_body.
 inline Proximity proximity_oriented(const Shape& s, const double* x, const double* u,
                                     const Orientation& R) {
-  if (s.dim != 3 || (s.kind != Shape::Kind::box && s.kind != Shape::Kind::cylinder) ||
+  if (s.dim != 3 ||
+      (s.kind != Shape::Kind::box && s.kind != Shape::Kind::cylinder &&
+       s.kind != Shape::Kind::mesh) ||
       R == identity_orientation())
     return proximity(s, x, u);
   double c[3], r[3], b[3];

@@ -1,7 +1,7 @@
 // The surface of a rigid body made of mesh blocks (model/RigidMeshBlocks), as the contact
 // evaluates it (contact/MeshSurface): its boundary facets by their corners, outward ordered, in
-// the reference configuration, and the volume and centroid of its cells (its mass from a
-// density, the point its moments are taken about). Plain data.
+// the reference configuration, and the volume, centroid and second moments of its cells (its
+// mass from a density, the point its moments are taken about, its inertia). Plain data.
 #pragma once
 
 #include <array>
@@ -16,6 +16,9 @@ struct RigidSurface {
   std::vector<double> reference_size;  ///< longest edge of each facet
   double volume = 0;                   ///< of the blocks' cells (2D: area)
   std::array<double, 3> centroid{};    ///< of the cells' volume
+  /// Second moments of the cells' volume about the centroid, int (x_i - c_i)(x_j - c_j) dV:
+  /// xx, yy, zz, xy, xz, yz (the inertia tensor per unit density, contact/RigidBodies).
+  std::array<double, 6> second_moment{};
 
   std::size_t count() const { return reference_size.size(); }
 };

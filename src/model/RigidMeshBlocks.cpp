@@ -29,9 +29,12 @@ RigidSurface surface_of(const BackgroundMesh& mesh, const std::vector<std::strin
     for (std::size_t k = 0; k < 3; ++k)
       s.corners.push_back(k < dim ? mesh.coordinates[static_cast<std::size_t>(n) * dim + k] : 0.0);
   // The origin's simplex on each facet, signed by the facet's outward order: 2D (a x b) / 2 with
-  // centroid (a + b) / 3, 3D a . (b x c) / 6 with centroid (a + b + c) / 4.
+  // centroid (a + b) / 3 and int x_i x_j = A / 12 (a_i a_j + b_i b_j + s_i s_j), s = a + b; 3D
+  // a . (b x c) / 6 with centroid (a + b + c) / 4 and int x_i x_j = V / 20 (a_i a_j + b_i b_j +
+  // c_i c_j + s_i s_j), s = a + b + c (the simplex's exact moments, its fourth vertex the origin).
   const auto per = static_cast<std::size_t>(s.nodes_per_facet);
   std::array<double, 3> moment{};
+  double second[3][3] = {};
   for (std::size_t f = 0; f < s.count(); ++f) {
     const double* a = &s.corners[3 * per * f];
     const double* b = a + 3;
@@ -45,13 +48,26 @@ RigidSurface surface_of(const BackgroundMesh& mesh, const std::vector<std::strin
           6.0;
     }
     s.volume += v;
+    double sum[3] = {0, 0, 0};
     for (std::size_t k = 0; k < 3; ++k) {
-      double sum = 0;
-      for (std::size_t q = 0; q < per; ++q) sum += a[3 * q + k];
-      moment[k] += v * sum / static_cast<double>(per + 1);
+      for (std::size_t q = 0; q < per; ++q) sum[k] += a[3 * q + k];
+      moment[k] += v * sum[k] / static_cast<double>(per + 1);
     }
+    const double scale = v / (per == 2 ? 12.0 : 20.0);
+    for (std::size_t i = 0; i < 3; ++i)
+      for (std::size_t j = 0; j < 3; ++j) {
+        double corners = 0;
+        for (std::size_t q = 0; q < per; ++q) corners += a[3 * q + i] * a[3 * q + j];
+        second[i][j] += scale * (corners + sum[i] * sum[j]);
+      }
   }
   for (std::size_t k = 0; k < 3; ++k) s.centroid[k] = s.volume > 0 ? moment[k] / s.volume : 0.0;
+  // About the centroid: S_c = S_o - V c c^T.
+  const std::size_t pairs[6][2] = {{0, 0}, {1, 1}, {2, 2}, {0, 1}, {0, 2}, {1, 2}};
+  for (std::size_t p = 0; p < 6; ++p) {
+    const auto [i, j] = pairs[p];
+    s.second_moment[p] = second[i][j] - s.volume * s.centroid[i] * s.centroid[j];
+  }
   return s;
 }
 

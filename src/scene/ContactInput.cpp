@@ -57,10 +57,6 @@ RigidBodySpec read_body(const Scene& s, const YAML::Node& r, const YAML::Node& d
   b.angular_velocity = reals(r["angular_velocity"]);
   if (r["blocks"])
     for (const auto& n : r["blocks"]) b.blocks.push_back(n.as<std::string>());
-  if (b.shape == "mesh" && !b.angular_velocity.empty())
-    fail(s, d["angular_velocity"], path + ".angular_velocity",
-         "a body made of mesh blocks does not turn yet (no inertia tensor); expected no "
-         "angular_velocity, or an analytic shape");
   if (b.shape == "plane" && !nonzero(b.normal))
     fail(s, d["normal"], path + ".normal", "expected a nonzero normal");
   if (b.shape == "box")
@@ -109,14 +105,15 @@ RigidBodySpec read_body(const Scene& s, const YAML::Node& r, const YAML::Node& d
     const bool box_2d = b.shape == "box" && b.lower.size() == 2;
     const bool cylinder_3d = b.shape == "cylinder" && b.center.size() == 3;
     if (b.shape == "plane")
-      fail(s, at, key, "a plane does not turn; expected shape sphere, cylinder or box");
+      fail(s, at, key, "a plane does not turn; expected shape sphere, cylinder, box or mesh");
     // an infinite 3D cylinder has no inertia about an axis across it
     if (cylinder_3d && b.motion == "free")
       fail(s, at, key,
            "a free 3D cylinder (infinitely long) has no finite inertia to turn with; expected "
            "motion: prescribed (a driven roll), or a sphere or box");
     const std::size_t entries = b.center.size() == 2 || box_2d ? 1 : 3;
-    if (b.angular_velocity.size() != entries)
+    // a mesh body's dimension is the mesh's: checked against it (scene/SceneMeshChecks)
+    if (b.shape != "mesh" && b.angular_velocity.size() != entries)
       fail(s, at, key,
            "expected " + std::to_string(entries) + " entries (" +
                (entries == 1 ? "about z in 2D" : "a vector in 3D") + "), found " +

@@ -207,6 +207,13 @@ class Checker {
               bd[key], path + "." + key,
               "expected 3 entries (shells touch bodies in 3D), found " + std::to_string(v->size()));
       }
+      if (b.shape == "mesh" && !b.angular_velocity.empty() &&
+          b.angular_velocity.size() != (space == 2 ? 1u : 3u))
+        fail(
+            bd["angular_velocity"], path + ".angular_velocity",
+            "expected " +
+                std::string(space == 2 ? "1 entry (about z in 2D)" : "3 entries (a vector in 3D)") +
+                ", found " + std::to_string(b.angular_velocity.size()));
       if (b.shape == "cylinder" && space == 3 && b.axis.empty())
         fail(bd, path, "a cylinder in a 3D model needs axis");
       if (b.density > 0 && !(rigid_body_volume(b, static_cast<int>(space)) > 0))
