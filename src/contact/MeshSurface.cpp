@@ -123,7 +123,19 @@ Proximity MeshSurface::proximity(const double* y) const {
     const double size = std::sqrt(dot(n, n));
     for (int k = 0; k < 3; ++k) n[k] = size > 0 ? n[k] / size : 0.0;
   };
-  if (nearest.interior) {  // the facet's plane
+  // Facets as near as the nearest (a point on the bisector of a corner, inside: equally deep
+  // under two facets' interiors): their normals summed decide, not whichever came first.
+  const double tie = 1e-12 * reach_;
+  double pseudo[3] = {0, 0, 0};
+  int ties = 0;
+  for (const int* f = begin; f != end; ++f) {
+    if (distance_to(closest(*f)) > best + tie) continue;
+    double n[3];
+    unit_normal(static_cast<std::size_t>(*f), n);
+    for (int k = 0; k < 3; ++k) pseudo[k] += n[k];
+    ++ties;
+  }
+  if (nearest.interior && ties == 1) {  // the facet's plane
     double n[3];
     unit_normal(nearest_facet, n);
     const double* a = &s.corners[3 * per * nearest_facet];
@@ -132,19 +144,12 @@ Proximity MeshSurface::proximity(const double* y) const {
     for (int k = 0; k < 3; ++k) p.normal[k] = n[k];
     return p;
   }
-  // An edge or corner: the pseudo-normal of the facets that share the closest point.
-  double pseudo[3] = {0, 0, 0};
-  const double tie = 1e-12 * reach_;
-  for (const int* f = begin; f != end; ++f) {
-    if (distance_to(closest(*f)) > best + tie) continue;
-    double n[3];
-    unit_normal(static_cast<std::size_t>(*f), n);
-    for (int k = 0; k < 3; ++k) pseudo[k] += n[k];
-  }
+  // An edge or corner (the pseudo-normal of the facets that share the closest point signs the
+  // distance; the normal points from that point), or a tie of interiors (the pseudo-normal).
   const double r[3] = {y[0] - nearest.point[0], y[1] - nearest.point[1], y[2] - nearest.point[2]};
   const double sign = dot(r, pseudo) < 0 ? -1.0 : 1.0;
   p.gap = sign * best;
-  if (best > 0) {
+  if (best > 0 && !nearest.interior) {
     for (int k = 0; k < 3; ++k) p.normal[k] = sign * r[k] / best;
   } else {
     const double size = std::sqrt(dot(pseudo, pseudo));

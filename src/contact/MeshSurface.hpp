@@ -8,7 +8,10 @@
 // - on an edge or corner: the distance |y - p|, signed by the pseudo-normal (the sum of the
 //   unit normals of the facets that share that closest point; Baerentzen & Aanaes 2005 weight
 //   them by angle, an equal weight is exact in 2D and for the corners of boxes), the normal
-//   (y - p) / g pointing out of the body.
+//   (y - p) / g pointing out of the body;
+// - inside, equally deep under two facets' interiors (the bisector of a corner): that depth,
+//   along the normalized sum of their normals (the first facet found would tilt the force by
+//   the corner's half angle: a polygonal punch centred on a corner pushed sideways).
 // A point farther than the reach from every facet gets the gap `reach` (at least that far, no
 // contact). A penetration deeper than half the body's thickness comes out on the other side's
 // facets (as for any closest-point contact): tools thinner than the particles' approach in one

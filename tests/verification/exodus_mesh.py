@@ -14,12 +14,15 @@ def put_names(d, var, dim, names):
 
 
 def write_exodus(path, title, coords, conn, elem_type, node_sets, side_sets=None,
-                 block_name="block_1", attributes=None):
+                 block_name="block_1", attributes=None, more_blocks=None):
     """coords: one array per dimension (x, y[, z]); conn: cells x nodes per cell (1-based);
     node_sets: name -> 1-based node ids; side_sets: name -> (1-based cells, 1-based sides);
-    attributes: name -> one value per cell (the block's attributes, e.g. a shell thickness)."""
+    attributes: name -> one value per cell (the block's attributes, e.g. a shell thickness);
+    more_blocks: further blocks after the first, (name, conn, elem_type) each (their cells
+    numbered after the first block's)."""
     attributes = attributes or {}
     side_sets = side_sets or {}
+    more_blocks = more_blocks or []
     dim = len(coords)
     with netCDF4.Dataset(path, "w", format="NETCDF3_64BIT_OFFSET") as d:
         d.setncattr("api_version", np.float32(6.02))
@@ -36,8 +39,8 @@ def write_exodus(path, title, coords, conn, elem_type, node_sets, side_sets=None
         d.createDimension("time_step", None)
         d.createDimension("num_dim", dim)
         d.createDimension("num_nodes", len(coords[0]))
-        d.createDimension("num_elem", len(conn))
-        d.createDimension("num_el_blk", 1)
+        d.createDimension("num_elem", len(conn) + sum(len(b[1]) for b in more_blocks))
+        d.createDimension("num_el_blk", 1 + len(more_blocks))
         d.createDimension("num_node_sets", len(node_sets))
         if side_sets:
             d.createDimension("num_side_sets", len(side_sets))
@@ -49,7 +52,8 @@ def write_exodus(path, title, coords, conn, elem_type, node_sets, side_sets=None
             d.createDimension("num_side_ss%d" % k, len(cells))
 
         d.createVariable("time_whole", "f8", ("time_step",))
-        counts = [("eb", "num_el_blk", 1), ("ns", "num_node_sets", len(node_sets))]
+        counts = [("eb", "num_el_blk", 1 + len(more_blocks)),
+                  ("ns", "num_node_sets", len(node_sets))]
         if side_sets:
             counts.append(("ss", "num_side_sets", len(side_sets)))
         for prefix, count_dim, count in counts:
@@ -59,7 +63,7 @@ def write_exodus(path, title, coords, conn, elem_type, node_sets, side_sets=None
             prop[:] = np.arange(1, count + 1, dtype=np.int32)
         for axis, values in zip("xyz", coords):
             d.createVariable("coord" + axis, "f8", ("num_nodes",))[:] = values
-        put_names(d, "eb_names", "num_el_blk", [block_name])
+        put_names(d, "eb_names", "num_el_blk", [block_name] + [b[0] for b in more_blocks])
         put_names(d, "ns_names", "num_node_sets", list(node_sets))
         if side_sets:
             put_names(d, "ss_names", "num_side_sets", list(side_sets))
@@ -67,6 +71,13 @@ def write_exodus(path, title, coords, conn, elem_type, node_sets, side_sets=None
         c = d.createVariable("connect1", "i4", ("num_el_in_blk1", "num_nod_per_el1"))
         c.setncattr("elem_type", elem_type)
         c[:] = conn
+        for k, (_, cells, cell_type) in enumerate(more_blocks, 2):
+            d.createDimension("num_el_in_blk%d" % k, len(cells))
+            d.createDimension("num_nod_per_el%d" % k, np.shape(cells)[1])
+            c = d.createVariable("connect%d" % k, "i4",
+                                 ("num_el_in_blk%d" % k, "num_nod_per_el%d" % k))
+            c.setncattr("elem_type", cell_type)
+            c[:] = cells
         if attributes:
             d.createDimension("num_att_in_blk1", len(attributes))
             a = d.createVariable("attrib1", "f8", ("num_el_in_blk1", "num_att_in_blk1"))
