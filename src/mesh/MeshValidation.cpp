@@ -39,7 +39,7 @@ void require_unique_names(const BackgroundMesh& mesh, const std::vector<Named>& 
 
 }  // namespace
 
-void validate_mesh(const BackgroundMesh& mesh) {
+void validate_mesh(const BackgroundMesh& mesh, const std::vector<std::string>& tool_blocks) {
   const auto nodes = mesh.node_count();
   if (mesh.dimension != 2 && mesh.dimension != 3)
     fail(mesh,
@@ -55,7 +55,10 @@ void validate_mesh(const BackgroundMesh& mesh) {
   require_unique_names(mesh, mesh.side_sets, "side sets");
 
   for (const auto& block : mesh.blocks) {
-    if (cell_dimension(block.type) != mesh.dimension)
+    const bool tool =
+        std::find(tool_blocks.begin(), tool_blocks.end(), block.name) != tool_blocks.end();
+    if (cell_dimension(block.type) != mesh.dimension &&
+        !(tool && cell_dimension(block.type) == mesh.dimension - 1))
       fail(mesh, "block '" + block.name + "' holds " + cell_scene_name(block.type) +
                      " cells in a " + std::to_string(mesh.dimension) + "D mesh" +
                      (mesh.dimension == 3 ? " (surface cells in 3D are a shell surface: make the "
@@ -80,6 +83,7 @@ void validate_mesh(const BackgroundMesh& mesh) {
                                    static_cast<std::size_t>(mesh.dimension) +
                                static_cast<std::size_t>(d)];
       }
+      if (tool) continue;  // a rigid body's cells: indices only (its surface, not its volume)
       const auto g = cell_geometry(block.type, x.data());
       const double scale = std::abs(bounding_box_measure(mesh.dimension, x));
       if (!(g.min_corner_det > 0) || !(g.volume > degenerate_cell_tolerance * scale) ||

@@ -15,7 +15,7 @@ struct RigidSurface {
   std::vector<double> corners;         ///< 3 components per corner, nodes_per_facet per facet
   std::vector<double> reference_size;  ///< longest edge of each facet
   double volume = 0;                   ///< of the blocks' cells (2D: area)
-  std::array<double, 3> centroid{};    ///< of the cells' volume
+  std::array<double, 3> centroid{};    ///< of the cells' volume (of a skin's area)
   /// Second moments of the cells' volume about the centroid, int (x_i - c_i)(x_j - c_j) dV:
   /// xx, yy, zz, xy, xz, yz (the inertia tensor per unit density, contact/RigidBodies).
   std::array<double, 6> second_moment{};

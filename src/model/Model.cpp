@@ -39,7 +39,7 @@ BackgroundMesh load_mesh(const CommPtr& comm, Scene& scene) {
       for (const auto& block : scene.more_blocks) append_generated(m, block);
       // a shell surface in 3D: the shells work on its chart (mesh/SurfaceChart.hpp)
       if (scene.has_shells() && is_surface_mesh(m)) chart_surface_mesh(m, scene.surface_chart);
-      validate_mesh(m);
+      validate_mesh(m, rigid_block_names(scene));
       return m;
     } catch (const InputError& e) {
       // Point at the scene key that named the mesh, then say what is wrong with it.

@@ -1,6 +1,8 @@
 #include "model/RigidMeshBlocks.hpp"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <memory>
 
 #include "core/Errors.hpp"
@@ -17,12 +19,54 @@ namespace {
                               "rigid_bodies[" + std::to_string(body) + "].blocks", message));
 }
 
-// Corners, volume and centroid of the blocks' cells from their outward boundary facets.
+bool is_surface_block(const BackgroundMesh& mesh, const std::string& name) {
+  return cell_dimension(mesh.find_block(name)->type) == mesh.dimension - 1;
+}
+
+// The cells of surface blocks as facets in their own node order (quadrilaterals cut along
+// their 0-2 diagonal), appended to s after the solid blocks' (which alone carry volume).
+void add_surface_cells(const BackgroundMesh& mesh, const std::vector<std::string>& blocks,
+                       RigidSurface& s) {
+  const auto dim = static_cast<std::size_t>(mesh.dimension);
+  for (const auto& name : blocks) {
+    if (!is_surface_block(mesh, name)) continue;
+    const auto& block = *mesh.find_block(name);
+    const auto per = static_cast<std::size_t>(cell_node_count(block.type));
+    for (std::size_t c = 0; c < block.cell_count(); ++c) {
+      const auto* cell = &block.connectivity[c * per];
+      std::vector<std::array<LocalIndex, 3>> pieces = {{cell[0], cell[1], cell[2]}};
+      if (per == 4) pieces.push_back({cell[0], cell[2], cell[3]});
+      for (const auto& piece : pieces) {
+        double longest = 0;
+        for (std::size_t a = 0; a < 3; ++a) {
+          double len2 = 0;
+          for (std::size_t k = 0; k < dim; ++k) {
+            const double d =
+                mesh.coordinates[static_cast<std::size_t>(piece[a]) * dim + k] -
+                mesh.coordinates[static_cast<std::size_t>(piece[(a + 1) % 3]) * dim + k];
+            len2 += d * d;
+          }
+          longest = std::max(longest, std::sqrt(len2));
+          for (std::size_t k = 0; k < 3; ++k)
+            s.corners.push_back(
+                k < dim ? mesh.coordinates[static_cast<std::size_t>(piece[a]) * dim + k] : 0.0);
+        }
+        s.reference_size.push_back(longest);
+      }
+    }
+  }
+}
+
+// Corners, volume and centroid of the blocks' cells from their outward boundary facets; the
+// surface blocks' cells as further facets.
 RigidSurface surface_of(const BackgroundMesh& mesh, const std::vector<std::string>& blocks) {
-  const auto facets = oriented_boundary_facets(mesh, blocks);
+  std::vector<std::string> solid;
+  for (const auto& name : blocks)
+    if (!is_surface_block(mesh, name)) solid.push_back(name);
+  const auto facets = oriented_boundary_facets(mesh, solid);
   RigidSurface s;
   s.dim = mesh.dimension;
-  s.nodes_per_facet = facets.nodes_per_facet;
+  s.nodes_per_facet = mesh.dimension == 2 ? 2 : 3;
   s.reference_size = facets.reference_size;
   const auto dim = static_cast<std::size_t>(mesh.dimension);
   for (auto n : facets.nodes)
@@ -68,10 +112,37 @@ RigidSurface surface_of(const BackgroundMesh& mesh, const std::vector<std::strin
     const auto [i, j] = pairs[p];
     s.second_moment[p] = second[i][j] - s.volume * s.centroid[i] * s.centroid[j];
   }
+  const std::size_t solid_facets = s.count();
+  add_surface_cells(mesh, blocks, s);
+  if (!(s.volume > 0)) {  // a skin only: moments about the centroid of its area
+    double area = 0;
+    std::array<double, 3> sum{};
+    for (std::size_t f = solid_facets; f < s.count(); ++f) {
+      const double* a = &s.corners[9 * f];
+      double u[3], v[3];
+      for (std::size_t k = 0; k < 3; ++k) {
+        u[k] = a[3 + k] - a[k];
+        v[k] = a[6 + k] - a[k];
+      }
+      const double w[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2],
+                           u[0] * v[1] - u[1] * v[0]};
+      const double piece = 0.5 * std::sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
+      area += piece;
+      for (std::size_t k = 0; k < 3; ++k) sum[k] += piece * (a[k] + a[3 + k] + a[6 + k]) / 3.0;
+    }
+    for (std::size_t k = 0; k < 3; ++k) s.centroid[k] = area > 0 ? sum[k] / area : 0.0;
+  }
   return s;
 }
 
 }  // namespace
+
+std::vector<std::string> rigid_block_names(const Scene& scene) {
+  std::vector<std::string> names;
+  for (const auto& body : scene.rigid_bodies)
+    if (body.shape == "mesh") names.insert(names.end(), body.blocks.begin(), body.blocks.end());
+  return names;
+}
 
 void extract_rigid_blocks(Scene& scene, BackgroundMesh& mesh) {
   std::vector<std::string> rigid;  // every mesh body's blocks
@@ -98,8 +169,14 @@ void extract_rigid_blocks(Scene& scene, BackgroundMesh& mesh) {
       rigid.push_back(name);
     }
     auto surface = surface_of(mesh, body.blocks);
-    if (!(surface.volume > 0))
+    const bool skin = std::all_of(body.blocks.begin(), body.blocks.end(),
+                                  [&](const auto& name) { return is_surface_block(mesh, name); });
+    if (!skin && !(surface.volume > 0))
       fail(scene, i, "the blocks' cells enclose no volume; expected cells of positive volume");
+    if (!(surface.volume > 0) && !body.angular_velocity.empty())
+      fail(scene, i,
+           "a body of surface cells has no volume to take an inertia from; expected no "
+           "angular_velocity, or solid cells");
     body.surface = std::make_shared<const RigidSurface>(std::move(surface));
   }
   if (rigid.empty()) return;

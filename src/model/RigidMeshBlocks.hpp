@@ -4,13 +4,19 @@
 // each body's surface (mesh/RigidSurface: the blocks' outward boundary facets,
 // discretization/OrientedFacets), with the cells' volume and centroid by the divergence theorem
 // over those facets (exact for straight-sided cells: the origin's triangles (2D) or tetrahedra
-// (3D) on each facet, signed). The remaining nodes, node sets and side sets are renumbered.
+// (3D) on each facet, signed). A block of surface cells (quad4, tri3 in a 3D mesh: a die's
+// skin) is a one-sided tool: its cells are its facets, their node order (right-hand rule) gives
+// the normal, the side the parts touch; it adds no volume (a body of such blocks only needs a
+// mass to move, and does not turn). The remaining nodes, node sets and side sets are renumbered.
 #pragma once
 
 #include "mesh/BackgroundMesh.hpp"
 #include "scene/Scene.hpp"
 
 namespace efg {
+
+/// The blocks of every mesh body (validated as tools: mesh/MeshValidation).
+std::vector<std::string> rigid_block_names(const Scene& scene);
 
 /// Sets every mesh body's surface and removes its blocks from `mesh`. InputError (with the key
 /// path) for a block the mesh lacks, one a part or another body also names, one that shares
