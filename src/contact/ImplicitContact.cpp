@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 
+#include "contact/PenaltyForce.hpp"
 #include "discretization/SmoothingFacets.hpp"
 #include "mesh/SideMeasures.hpp"
 
@@ -92,9 +93,16 @@ void ImplicitContact::begin_stage(const std::vector<RigidBodyState>& carried, do
   for (auto& pair : pairs_) pair.active = pair.spec->stages.includes(stage);
   t0_ = t_ = t_committed_ = t0;
   start_.assign(bodies_.count(), {0.0, 0.0, 0.0});
-  for (std::size_t b = 0; b < std::min(carried.size(), start_.size()); ++b)
+  start_rotation_.assign(bodies_.count(), {0.0, 0.0, 0.0});
+  start_orientation_.assign(bodies_.count(), contact::identity_orientation());
+  for (std::size_t b = 0; b < std::min(carried.size(), start_.size()); ++b) {
     start_[b] = carried[b].displacement;
+    start_rotation_[b] = carried[b].rotation;
+    start_orientation_[b] = carried[b].orientation;
+  }
   displacement_ = committed_displacement_ = start_;
+  rotation_ = committed_rotation_ = start_rotation_;
+  orientation_ = start_orientation_;
   offset_.assign(bodies_.count(), {0.0, 0.0, 0.0});
 }
 
@@ -115,6 +123,7 @@ void ImplicitContact::start_friction(const Vector& d_overlap) {
       c.ft_old = {0.0, 0.0, 0.0};
     }
   committed_displacement_ = displacement_;
+  committed_rotation_ = rotation_;
   t_committed_ = t_;
 }
 
@@ -129,6 +138,7 @@ void ImplicitContact::commit(const Vector& d_overlap) {
     }
   }
   committed_displacement_ = displacement_;
+  committed_rotation_ = rotation_;
   t_committed_ = t_;
 }
 
@@ -137,8 +147,12 @@ void ImplicitContact::set_time(double t) {
   t_ = t;
   for (std::size_t b = 0; b < bodies_.count(); ++b) {
     const auto travel = bodies_.prescribed_travel(b, t0_, t);
-    for (std::size_t k = 0; k < 3; ++k)
+    const auto turn = bodies_.prescribed_turn(b, t0_, t);
+    for (std::size_t k = 0; k < 3; ++k) {
       displacement_[b][k] = start_[b][k] + travel[k] + offset_[b][k];
+      rotation_[b][k] = start_rotation_[b][k] + turn[k];
+    }
+    orientation_[b] = contact::turned(start_orientation_[b], turn.data());
   }
 }
 
@@ -154,18 +168,22 @@ ImplicitContact::Touch ImplicitContact::touch(const Pair& p, const Candidate& c,
   const auto& shape = bodies_.shape(p.body);
   const double zero[3] = {0, 0, 0};
   const double* u_body = displacement_.empty() ? zero : displacement_[p.body].data();
-  const auto near = contact::proximity(shape, x.data(), u_body);
+  const auto near = rotation_.empty()
+                        ? contact::proximity(shape, x.data(), u_body)
+                        : contact::proximity_of_body(shape, x.data(), u_body, rotation_[p.body][2],
+                                                     orientation_[p.body]);
   Touch t;
   t.gap = near.gap;
   for (int i = 0; i < 3; ++i) t.normal[i] = near.normal[i];
   contact::normal_derivative(shape, near, t.dn);
   if (rubs(p) && t.gap < 0) {
     // The slip since the last accepted load step: the particle's motion relative to the body.
-    double s[3] = {0, 0, 0};
-    for (std::size_t i = 0; i < 3; ++i)
-      s[i] = (x[i] - c.x_old[i]) -
-             (u_body[i] -
-              (committed_displacement_.empty() ? 0.0 : committed_displacement_[p.body][i]));
+    double s[3] = {0, 0, 0}, u_old[3] = {0, 0, 0}, turn[3] = {0, 0, 0};
+    for (std::size_t i = 0; i < 3 && !committed_displacement_.empty(); ++i) {
+      u_old[i] = committed_displacement_[p.body][i];
+      turn[i] = rotation_[p.body][i] - committed_rotation_[p.body][i];
+    }
+    contact::slip_against_body(shape, x.data(), c.x_old.data(), u_body, u_old, turn, dim_, s);
     const double step = t_ > t_committed_ ? t_ - t_committed_ : 1.0;  // the decay law's rate
     t.coulomb =
         contact::coulomb_return(p.friction, c.ft_old.data(), s, t.normal, stick_stiffness(p, c),

@@ -11,7 +11,9 @@
 //   dr_I/dd_K = phi_I phi_K beta_J A_J (n n^T + g dn/dx),
 // dn/dx = (I - n n^T) / rho for a sphere or 2D cylinder of radius rho at the point (the curved
 // surface's term; 0 for planes and box faces). The active set follows the Newton iterate;
-// load stepping with cutback carries its changes.
+// load stepping with cutback carries its changes. A prescribed spin turns the body by
+// angular_velocity x the curve's integral about its fixed axis (exact): the shape is evaluated
+// turned, and friction sees the particle's slip against the turning surface.
 // Friction (Coulomb, the return map of contact/CoulombFriction.hpp with the stick stiffness
 // k_t = E A_J / h_J, stick_stiffness): the slip increment is the particle's motion relative to the body since the last
 // accepted load step, the tangential force is recomputed from the committed one at every
@@ -67,6 +69,10 @@ class ImplicitContact {
   FirstTouch first_touch(const Vector& d_overlap, std::size_t b, const double* a) const;
   /// Displacements of every body at the last set_time.
   const std::vector<std::array<double, 3>>& body_displacements() const { return displacement_; }
+  /// Rotations (sum of the turns; 2D: the angle about z) and 3D orientations of every body at
+  /// the last set_time: prescribed spins turn the bodies, exactly, about their fixed axes.
+  const std::vector<std::array<double, 3>>& body_rotations() const { return rotation_; }
+  const std::vector<contact::Orientation>& body_orientations() const { return orientation_; }
   /// r -= phi F (overlap) at d.
   void add_residual(const Vector& d_overlap, Vector& r_overlap) const;
   /// K += dr/dd (assembly mode).
@@ -121,6 +127,8 @@ class ImplicitContact {
   double t0_ = 0, t_ = 0, t_committed_ = 0;
   std::vector<std::array<double, 3>> start_, displacement_, committed_displacement_;
   std::vector<std::array<double, 3>> offset_;  ///< force control: beyond the prescribed travel
+  std::vector<std::array<double, 3>> start_rotation_, rotation_, committed_rotation_;
+  std::vector<contact::Orientation> start_orientation_, orientation_;
 };
 
 }  // namespace efg

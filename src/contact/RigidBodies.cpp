@@ -228,6 +228,17 @@ std::array<double, 3> RigidBodies::prescribed_travel(std::size_t b, double t0, d
   return u;
 }
 
+std::array<double, 3> RigidBodies::prescribed_turn(std::size_t b, double t0, double t1) const {
+  std::array<double, 3> turn{};
+  const auto& body = bodies_[b];
+  if (body.motion != "prescribed" || body.angular_velocity.empty()) return turn;
+  const CurveSpec* c = body.curve.empty() ? nullptr : scene_.find_curve(body.curve);
+  const double integral = c ? curve_integral(*c, t0, t1) : t1 - t0;
+  const auto& w = body.angular_velocity;
+  for (std::size_t k = 0; k < w.size(); ++k) turn[w.size() == 1 ? 2 : k] = w[k] * integral;
+  return turn;
+}
+
 double RigidBodies::applied_work(const std::vector<RigidBodyState>& before,
                                  const std::vector<RigidBodyState>& after, double t0,
                                  double t1) const {

@@ -49,6 +49,9 @@ class RigidBodies {
   /// (per component with axis_curves)
   /// (exact for the piecewise-linear curves; zero for fixed and free bodies). Implicit stages.
   std::array<double, 3> prescribed_travel(std::size_t b, double t0, double t1) const;
+  /// The turn of a prescribed spinning body from t0 to t1: angular_velocity x the integral of
+  /// its curve (a rotation vector about a fixed axis, exact; 2D: about z). Implicit stages.
+  std::array<double, 3> prescribed_turn(std::size_t b, double t0, double t1) const;
   /// Kinetic energy of the free bodies (prescribed motions are driven from outside: their
   /// energy is the work they do on the particles).
   double kinetic_energy(const std::vector<RigidBodyState>& states) const;

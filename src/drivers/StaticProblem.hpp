@@ -56,6 +56,14 @@ class StaticProblem : public NonlinearProblem {
   /// contacts' friction state are committed.
   void commit_history(const Vector& d_owned);
 
+  /// Rotations and orientations of the rigid bodies at the last set_time (empty without
+  /// contacts).
+  std::vector<std::array<double, 3>> body_rotations() const {
+    return contact_ ? contact_->body_rotations() : std::vector<std::array<double, 3>>{};
+  }
+  std::vector<contact::Orientation> body_orientations() const {
+    return contact_ ? contact_->body_orientations() : std::vector<contact::Orientation>{};
+  }
   /// The contacts with rigid bodies (null without contacts).
   ImplicitContact* contact() { return contact_.get(); }
   /// The contact force on every rigid body at d (collective; empty without contacts).

@@ -155,11 +155,15 @@ RunOutcome run_stages(const CommPtr& comm, const Model& model, const std::string
           problem->set_time(t);  // the bodies where the recorded step left them
           const auto forces = problem->body_forces(state.d);
           const auto places = problem->body_displacements();
+          const auto turns = problem->body_rotations();
+          const auto orientations = problem->body_orientations();
           if (!forces.empty()) state.bodies.resize(forces.size());
           for (std::size_t b = 0; b < forces.size(); ++b) {
             state.bodies[b].force = forces[b].force;
             state.bodies[b].moment = forces[b].moment;
             state.bodies[b].displacement = places[b];
+            state.bodies[b].rotation = turns[b];
+            state.bodies[b].orientation = orientations[b];
             state.bodies[b].velocity = {0.0, 0.0, 0.0};  // static
           }
           write(state);

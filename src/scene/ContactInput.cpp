@@ -302,12 +302,20 @@ void read_contact_input(Scene& s) {
                path + ".stages)");
     for (const auto& b : s.rigid_bodies) {
       if (b.name != c.rigid_body) continue;
-      if (b.motion == "prescribed" && !b.angular_velocity.empty())
-        fail(s, stage_at, stage_key,
-             "rigid body '" + b.name + "' of contact '" + c.name +
-                 "' turns, which implicit stages do not model yet; expected driver: explicit, or "
-                 "no angular_velocity");
       if (b.motion == "free") check_static_load(s, b, c, stage_at, stage_key);
+      // A springback stage releases the forces out of balance at its start, the body's too,
+      // while force control balances the body's load in full (drivers/BodyForceBalance).
+      for (std::size_t k = 0; k < s.stages.size() && b.motion == "free"; ++k) {
+        const auto& st = s.stages[k];
+        if (st.driver == "implicit" && c.stages.includes(st.name) && st.settings["springback"] &&
+            st.settings["springback"].as<bool>())
+          fail(s, d["stages"][k]["springback"], "stages[" + std::to_string(k) + "].springback",
+               "contact '" + c.name + "' with the free (force-controlled) rigid body '" + b.name +
+                   "' acts in springback stage '" + st.name +
+                   "', which releases what holds the parts; expected the contact's stages: to "
+                   "leave it out (" +
+                   path + ".stages), or motion: fixed or prescribed");
+      }
     }
   }
 }

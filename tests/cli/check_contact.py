@@ -55,6 +55,14 @@ usage: check_contact.py impact|punch|slide|stick HISTORY.csv
           cells (the inscribed N-gon): the 128-gon's force within 0.1 % of the cylinder's, the
           error falling by at least 2x from 64 to 128 cells, no sideways force (|F_x| below
           1e-10 F_y: the polygon is symmetric)
+  spin_implicit  a prescribed roll (R = 0.25) pressed into a clamped block while spinning,
+          implicit, mu = 0.3: every contact particle slips, its friction mu F_n along the
+          surface's motion, tangent to the roll: the moment about the roll's centre
+          M_z = mu sum rho_J F_n,J ~ mu R F_y within 1 % (rho_J = R less the penetration, the
+          patch's tilt), F_x along +x (the surface at the bottom moves along -x; F_x / F_y is
+          0.27 - 0.30, not mu: the friction drags the patch sideways, the normal forces' tilt
+          does not cancel); the base's reaction = the contact force to
+          1e-6 of it (Newton's tolerance with the nonsymmetric slip tangent)
 usage: check_contact.py KIND HISTORY.csv [TWIN_HISTORY.csv] [...]
 """
 import math
@@ -191,6 +199,17 @@ elif kind == "curved_tool":
     check("force of the 128-gon vs the cylinder (relative)", abs(errors[1]), 1e-3)
     check("error reduction from 64 to 128 cells (2 - ratio, below 0)",
           max(0.0, 2.0 - abs(errors[0]) / abs(errors[1])), 0.0)
+elif kind == "spin_implicit":
+    mu, R = 0.3, 0.25
+    late = t > 0
+    Fx, Fy, Mz = col("rb_roll_Fx")[late], col("rb_roll_Fy")[late], col("rb_roll_Mz")[late]
+    check("M_z / (R F_y) vs mu (relative)", np.abs(Mz / (R * Fy) / mu - 1).max(), 1e-2)
+    check("the friction along the surface's motion: 0.5 - min F_x / (mu F_y), below 0",
+          max(0.0, 0.5 - (Fx / (mu * Fy)).min()), 0.0)
+    for axis in "xy":
+        check("|R_base_%s - rb_roll_F%s| / max F_y" % (axis, axis),
+              np.abs(col("R_base_" + axis) - col("rb_roll_F" + axis)).max() / np.abs(Fy).max(),
+              1e-6)
 elif kind == "driven":
     omega, R = -4.0, 0.25
     late = t >= 1.6 - 1e-9
