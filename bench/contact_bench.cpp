@@ -2,7 +2,9 @@
 // basis, SCNI, dilation 1.5) whose whole top face is pressed by a rigid plane (every top particle
 // in contact, with Coulomb friction), then by a rigid sphere (a patch in contact), then by a
 // second deformable block of the same size laid on it, overlapping by 1e-3 (contact between
-// deformable parts, two-way: gathering both surfaces, bins, facet search, reactions). Per step:
+// deformable parts, two-way: gathering both surfaces, bins, facet search, reactions), then by a
+// rigid body of mesh cells over the same face (`shape: mesh`, N/2 x N/2 x 1 hex8: the facet
+// search in the body's frame against the analytic plane's O(1)). Per step:
 // the internal force with the velocity-Verlet updates (bench/ExplicitStep.hpp) and the contact
 // forces with their friction commit (contact/PenaltyContact, contact/SurfaceContact). Prints ns
 // per candidate (surface particle) and per active contact particle, and the contact's share of
@@ -59,6 +61,11 @@ int main(int argc, char** argv) {
                 "  more_blocks:\n    - {element: hex8, lower: [0, 0, 0.999], upper: [4, 4, 1.999], "
                 "cells: [%d, %d, %d], block_name: top}\n",
                 cells, cells, cells / 4);
+  char die[512];
+  std::snprintf(die, sizeof die,
+                "  more_blocks:\n    - {element: hex8, lower: [0, 0, 0.999], upper: [4, 4, 1.999], "
+                "cells: [%d, %d, 1], block_name: die}\n",
+                cells / 2, cells / 2);
   const struct {
     const char* name;
     std::string extra;
@@ -73,6 +80,10 @@ int main(int argc, char** argv) {
                      "radius: 1.91}\ncontacts:\n  - {name: press, rigid_body: tool, parts: "
                      "[b], " +
                      friction + "}\n"},
+      {"mesh", std::string(die) + one_part +
+                   "rigid_bodies:\n  - {name: tool, shape: mesh, blocks: [die]}\ncontacts:\n"
+                   "  - {name: press, rigid_body: tool, parts: [b], " +
+                   friction + "}\n"},
       {"block", std::string(second) + one_part +
                     "  - {name: t, blocks: [top], material: m, section: {dilation: 1.5}}\n"
                     "contacts:\n  - {name: press, parts: [t], target_parts: [b], " +

@@ -72,20 +72,35 @@ MeshSurface::MeshSurface(std::shared_ptr<const RigidSurface> surface)
   const auto dim = static_cast<std::size_t>(s.dim);
   const auto per = static_cast<std::size_t>(s.nodes_per_facet);
   for (double h : s.reference_size) reach_ = std::max(reach_, h);
+  // Each facet's box grown by its own size (its capture depth), at most the median facet's;
+  // bins of the median facet's size (a few large facets, e.g. a die's sides, must not widen
+  // every bin: they are listed in each bin they overlap, which keeps the search exact whatever
+  // the bin size).
+  std::vector<double> sizes = s.reference_size;
+  double median_size = 0;
+  if (!sizes.empty()) {
+    auto middle = sizes.begin() + static_cast<long>(sizes.size() / 2);
+    std::nth_element(sizes.begin(), middle, sizes.end());
+    median_size = *middle;
+  }
   std::vector<double> lower(s.count() * dim), upper(s.count() * dim);
-  double size = 0;
-  for (std::size_t f = 0; f < s.count(); ++f)
+  for (std::size_t f = 0; f < s.count(); ++f) {
+    const double grow = std::min(s.reference_size[f], median_size);
     for (std::size_t k = 0; k < dim; ++k) {
       double lo = 1e300, hi = -1e300;
       for (std::size_t a = 0; a < per; ++a) {
         lo = std::min(lo, s.corners[3 * (per * f + a) + k]);
         hi = std::max(hi, s.corners[3 * (per * f + a) + k]);
       }
-      lower[f * dim + k] = lo - reach_;
-      upper[f * dim + k] = hi + reach_;
-      size = std::max(size, hi - lo + 2 * reach_);
+      lower[f * dim + k] = lo - grow;
+      upper[f * dim + k] = hi + grow;
+      tight_lower_.push_back(lo);
+      tight_upper_.push_back(hi);
     }
-  bins_.build(s.dim, lower, upper, size);
+  }
+  bins_.build(s.dim, lower, upper, median_size);
+  box_lower_ = std::move(lower);
+  box_upper_ = std::move(upper);
 }
 
 Proximity MeshSurface::proximity(const double* y) const {
@@ -94,6 +109,25 @@ Proximity MeshSurface::proximity(const double* y) const {
   Proximity p;
   p.gap = reach_;  // no facet near: at least this far
   const auto [begin, end] = bins_.near(y);
+  const auto dim = static_cast<std::size_t>(s.dim);
+  const auto in_box = [&](int f) {  // the facet's grown box holds y: it may capture it
+    for (std::size_t k = 0; k < dim; ++k) {
+      const auto i = static_cast<std::size_t>(f) * dim + k;
+      if (y[k] < box_lower_[i] || y[k] > box_upper_[i]) return false;
+    }
+    return true;
+  };
+  // A lower bound of y's distance to facet f: to its tight box (a facet farther than the
+  // nearest found so far is not computed).
+  const auto box_distance = [&](int f) {
+    double d2 = 0;
+    for (std::size_t k = 0; k < dim; ++k) {
+      const auto i = static_cast<std::size_t>(f) * dim + k;
+      const double out = std::max({tight_lower_[i] - y[k], 0.0, y[k] - tight_upper_[i]});
+      d2 += out * out;
+    }
+    return std::sqrt(d2);
+  };
   const auto closest = [&](int f) {
     const double* a = &s.corners[3 * per * static_cast<std::size_t>(f)];
     return per == 2 ? closest_on_segment(y, a, a + 3) : closest_on_triangle(y, a, a + 3, a + 6);
@@ -106,6 +140,7 @@ Proximity MeshSurface::proximity(const double* y) const {
   Closest nearest;
   std::size_t nearest_facet = 0;
   for (const int* f = begin; f != end; ++f) {
+    if (!in_box(*f) || box_distance(*f) >= best) continue;
     const auto c = closest(*f);
     const double d = distance_to(c);
     if (d < best) {
@@ -114,7 +149,7 @@ Proximity MeshSurface::proximity(const double* y) const {
       nearest_facet = static_cast<std::size_t>(*f);
     }
   }
-  if (begin == end || !(best <= reach_)) return p;
+  if (!(best < 1e300)) return p;
   const auto unit_normal = [&](std::size_t f, double* n) {
     double corner[3][3] = {};
     for (std::size_t a = 0; a < per; ++a)
@@ -129,7 +164,8 @@ Proximity MeshSurface::proximity(const double* y) const {
   double pseudo[3] = {0, 0, 0};
   int ties = 0;
   for (const int* f = begin; f != end; ++f) {
-    if (distance_to(closest(*f)) > best + tie) continue;
+    if (!in_box(*f) || box_distance(*f) > best + tie || distance_to(closest(*f)) > best + tie)
+      continue;
     double n[3];
     unit_normal(static_cast<std::size_t>(*f), n);
     for (int k = 0; k < 3; ++k) pseudo[k] += n[k];
