@@ -53,14 +53,7 @@ OrientedFacets oriented_boundary_facets(const BackgroundMesh& mesh,
       double out = 0;
       for (std::size_t k = 0; k < 3; ++k) out += (x[0][k] - centroid[k]) * n[k];
       if (out < 0) std::swap(piece[0], piece[1]);
-      double longest = 0;
-      for (std::size_t a = 0; a < piece.size(); ++a)
-        for (std::size_t b = a + 1; b < piece.size(); ++b) {
-          double len2 = 0;
-          for (std::size_t k = 0; k < 3; ++k) len2 += (x[a][k] - x[b][k]) * (x[a][k] - x[b][k]);
-          longest = std::max(longest, std::sqrt(len2));
-        }
-      s.reference_size.push_back(longest);
+      s.reference_size.push_back(longest_edge(x, static_cast<int>(piece.size())));
       s.nodes.insert(s.nodes.end(), piece.begin(), piece.end());
     }
   }

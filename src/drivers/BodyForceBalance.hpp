@@ -10,7 +10,7 @@
 //   dR/ds = a . (dF_c/ds + dF_c/dd dd/ds),   K dd/ds = -dr/ds,
 // the parts' response dd/ds solved with the stage's own linear solver on the Jacobian at d
 // (NewtonSolver::solve_tangent), the derivatives along s taken as differences over a step
-// delta = 1e-7 (|s| + |L| / k), k = sum a^T B_J a the contact's stiffness with the parts held
+// delta = 1e-4 (|s| + |L| / k), k = sum a^T B_J a the contact's stiffness with the parts held
 // rigid (the contact forces are linear in s on a fixed active set). The particles then move with the
 // body, d += dd/ds ds, so that Newton on the parts starts from the coupled problem's own Newton
 // step: the monolithic solution without the body's dof in the particles' matrix (one dense row
@@ -57,11 +57,12 @@ class BodyForceBalance {
     double gap_before_approach = 0;  ///< approaching: the nearest gap before the last move
     bool approaching = false;
     std::array<double, 3> load{};   ///< L at the load step's time
+    double along = 0;               ///< a . L
     Teuchos::RCP<Vector> response;  ///< dd/ds at the last place (null: none)
   };
   void place(const Body& b, double s);
-  /// R of body b at d (collective).
-  double residual(const Body& b, const Vector& d_owned);
+  /// R of body b from the contact forces on every body.
+  static double residual(const Body& b, const std::vector<BodyResultant>& forces);
   /// The next s of body b (Newton on its Schur complement, bisection, or an approach move) at
   /// the converged d; b.response gets dd/ds there (or null).
   double next_place(Body& b, NewtonSolver& newton, const Vector& d);

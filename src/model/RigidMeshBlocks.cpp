@@ -7,6 +7,7 @@
 
 #include "core/Errors.hpp"
 #include "discretization/OrientedFacets.hpp"
+#include "geometry/FacetNormal.hpp"
 #include "scene/SchemaValidator.hpp"
 
 namespace efg {
@@ -37,21 +38,12 @@ void add_surface_cells(const BackgroundMesh& mesh, const std::vector<std::string
       std::vector<std::array<LocalIndex, 3>> pieces = {{cell[0], cell[1], cell[2]}};
       if (per == 4) pieces.push_back({cell[0], cell[2], cell[3]});
       for (const auto& piece : pieces) {
-        double longest = 0;
-        for (std::size_t a = 0; a < 3; ++a) {
-          double len2 = 0;
-          for (std::size_t k = 0; k < dim; ++k) {
-            const double d =
-                mesh.coordinates[static_cast<std::size_t>(piece[a]) * dim + k] -
-                mesh.coordinates[static_cast<std::size_t>(piece[(a + 1) % 3]) * dim + k];
-            len2 += d * d;
-          }
-          longest = std::max(longest, std::sqrt(len2));
-          for (std::size_t k = 0; k < 3; ++k)
-            s.corners.push_back(
-                k < dim ? mesh.coordinates[static_cast<std::size_t>(piece[a]) * dim + k] : 0.0);
-        }
-        s.reference_size.push_back(longest);
+        double x[3][3] = {};
+        for (std::size_t a = 0; a < 3; ++a)
+          for (std::size_t k = 0; k < dim; ++k)
+            x[a][k] = mesh.coordinates[static_cast<std::size_t>(piece[a]) * dim + k];
+        for (const auto& corner : x) s.corners.insert(s.corners.end(), corner, corner + 3);
+        s.reference_size.push_back(longest_edge(x, 3));
       }
     }
   }
@@ -118,14 +110,12 @@ RigidSurface surface_of(const BackgroundMesh& mesh, const std::vector<std::strin
     double area = 0;
     std::array<double, 3> sum{};
     for (std::size_t f = solid_facets; f < s.count(); ++f) {
-      const double* a = &s.corners[9 * f];
-      double u[3], v[3];
-      for (std::size_t k = 0; k < 3; ++k) {
-        u[k] = a[3 + k] - a[k];
-        v[k] = a[6 + k] - a[k];
-      }
-      const double w[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2],
-                           u[0] * v[1] - u[1] * v[0]};
+      double x[3][3];
+      for (std::size_t q = 0; q < 3; ++q)
+        for (std::size_t k = 0; k < 3; ++k) x[q][k] = s.corners[9 * f + 3 * q + k];
+      const double* a = x[0];
+      double w[3];
+      facet_normal(x, 3, w);  // twice the triangle's area, along its normal
       const double piece = 0.5 * std::sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
       area += piece;
       for (std::size_t k = 0; k < 3; ++k) sum[k] += piece * (a[k] + a[3 + k] + a[6 + k]) / 3.0;
