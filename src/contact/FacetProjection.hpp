@@ -17,49 +17,54 @@ namespace efg::contact {
 
 using ::efg::facet_normal;  // geometry/FacetNormal.hpp
 
-struct FacetPoint {
+/// T: double, or a forward-AD number (contact/PairPenalty.hpp differentiates the projection).
+template <class T>
+struct FacetPointOf {
   bool over = false;  ///< the projection falls on the facet (within the tolerance)
-  double gap = 0;     ///< signed distance along the outward normal
-  double normal[3] = {0, 0, 0};
-  double weight[3] = {0, 0, 0};  ///< of the facet's nodes, clipped, summing to one
+  T gap = 0;          ///< signed distance along the outward normal
+  T normal[3] = {0, 0, 0};
+  T weight[3] = {0, 0, 0};  ///< of the facet's nodes, clipped, summing to one
 };
+using FacetPoint = FacetPointOf<double>;
 
 /// x: the particle; nodes: 2 (2D) or 3 (3D) node positions, 3 components each (z = 0 in 2D).
-inline FacetPoint project_on_facet(const double* x, const double (*node)[3], int dim,
-                                   double tolerance) {
-  FacetPoint f;
-  const double* a = node[0];
-  const double ab[3] = {node[1][0] - a[0], node[1][1] - a[1], node[1][2] - a[2]};
-  const double ax[3] = {x[0] - a[0], x[1] - a[1], x[2] - a[2]};
-  double m[3], w[3] = {0, 0, 0};
+template <class T>
+inline FacetPointOf<T> project_on_facet(const T* x, const T (*node)[3], int dim, double tolerance) {
+  using std::sqrt;
+  FacetPointOf<T> f;
+  const T* a = node[0];
+  const T ab[3] = {node[1][0] - a[0], node[1][1] - a[1], node[1][2] - a[2]};
+  const T ax[3] = {x[0] - a[0], x[1] - a[1], x[2] - a[2]};
+  T m[3], w[3] = {0, 0, 0};
   facet_normal(node, dim, m);
-  const double size2 = m[0] * m[0] + m[1] * m[1] + m[2] * m[2];
+  const T size2 = m[0] * m[0] + m[1] * m[1] + m[2] * m[2];
   if (!(size2 > 0)) return f;
-  const double size = std::sqrt(size2);
+  const T size = sqrt(size2);
   for (int k = 0; k < 3; ++k) f.normal[k] = m[k] / size;
   const int count = dim == 2 ? 2 : 3;
   if (dim == 2) {
-    const double t = (ax[0] * ab[0] + ax[1] * ab[1]) / size2;  // |ab|^2 = |m|^2 for a segment
+    const T t = (ax[0] * ab[0] + ax[1] * ab[1]) / size2;  // |ab|^2 = |m|^2 for a segment
     w[0] = 1.0 - t;
     w[1] = t;
   } else {
     // Barycentric coordinates of the projection: the sub-areas (x-a) x ac and ab x (x-a)
     // against m (the projection's normal part drops out of the dot products with m).
-    const double ac[3] = {node[2][0] - a[0], node[2][1] - a[1], node[2][2] - a[2]};
-    const double u[3] = {ax[1] * ac[2] - ax[2] * ac[1], ax[2] * ac[0] - ax[0] * ac[2],
-                         ax[0] * ac[1] - ax[1] * ac[0]};
-    const double v[3] = {ab[1] * ax[2] - ab[2] * ax[1], ab[2] * ax[0] - ab[0] * ax[2],
-                         ab[0] * ax[1] - ab[1] * ax[0]};
+    const T ac[3] = {node[2][0] - a[0], node[2][1] - a[1], node[2][2] - a[2]};
+    const T u[3] = {ax[1] * ac[2] - ax[2] * ac[1], ax[2] * ac[0] - ax[0] * ac[2],
+                    ax[0] * ac[1] - ax[1] * ac[0]};
+    const T v[3] = {ab[1] * ax[2] - ab[2] * ax[1], ab[2] * ax[0] - ab[0] * ax[2],
+                    ab[0] * ax[1] - ab[1] * ax[0]};
     w[1] = (u[0] * m[0] + u[1] * m[1] + u[2] * m[2]) / size2;
     w[2] = (v[0] * m[0] + v[1] * m[1] + v[2] * m[2]) / size2;
     w[0] = 1.0 - w[1] - w[2];
   }
   f.gap = ax[0] * f.normal[0] + ax[1] * f.normal[1] + ax[2] * f.normal[2];
   f.over = true;
-  double sum = 0;
+  T sum = 0;
   for (int k = 0; k < count; ++k) {
     if (w[k] < -tolerance) f.over = false;
-    f.weight[k] = std::fmin(1.0, std::fmax(0.0, w[k]));
+    // clipped to [0, 1] (a clipped weight is a constant: no derivative)
+    f.weight[k] = w[k] < 0.0 ? T(0.0) : (w[k] > 1.0 ? T(1.0) : w[k]);
     sum += f.weight[k];
   }
   for (int k = 0; k < count; ++k) f.weight[k] /= sum;

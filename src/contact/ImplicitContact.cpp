@@ -6,9 +6,8 @@
 #include <cmath>
 #include <limits>
 
+#include "contact/BoundaryShares.hpp"
 #include "contact/PenaltyForce.hpp"
-#include "discretization/SmoothingFacets.hpp"
-#include "mesh/SideMeasures.hpp"
 
 namespace efg {
 
@@ -50,7 +49,7 @@ ImplicitContact::ImplicitContact(const ModelOperators& ops)
   const auto& model = ops.model();
   const auto& mesh = model.mesh;
   for (const auto& spec : model.scene.contacts) {
-    if (spec.rigid_body.empty()) continue;  // between deformable parts: refused by the scene
+    if (spec.rigid_body.empty()) continue;  // between deformable parts: ImplicitSurfaceContact
     Pair pair;
     pair.spec = &spec;
     pair.friction = {spec.static_friction, spec.dynamic_friction, spec.decay};
@@ -60,20 +59,11 @@ ImplicitContact::ImplicitContact(const ModelOperators& ops)
       const auto& part = model.parts[p];
       if (std::find(spec.parts.begin(), spec.parts.end(), part.part->name) == spec.parts.end())
         continue;
-      const double thickness = dim_ == 2 ? part.part->thickness : 1.0;
-      const double E =
-          model.scene.find_material(part.part->material)->constants.at("youngs_modulus");
-      std::vector<double> area(mesh.node_count(), 0.0), size(mesh.node_count(), 0.0);
-      for (const auto& [cell, side] : boundary_sides(mesh, part.part->blocks)) {
-        const auto nodes = mesh.side_node_indices(cell, side);
-        const double share =
-            side_measure(mesh, nodes) * thickness / static_cast<double>(nodes.size());
-        const double h = side_longest_edge(mesh, nodes);
-        for (auto n : nodes) {
-          area[static_cast<std::size_t>(n)] += share;
-          size[static_cast<std::size_t>(n)] = std::max(size[static_cast<std::size_t>(n)], h);
-        }
-      }
+      const double E = part_youngs_modulus(model, p);
+      const auto shares =
+          boundary_shares(mesh, part.part->blocks, dim_ == 2 ? part.part->thickness : 1.0);
+      const auto& area = shares.area;
+      const auto& size = shares.size;
       for (std::size_t j = 0; j < part.cloud.owned_count; ++j) {
         const auto node = static_cast<std::size_t>(part.cloud.mesh_node[j]);
         if (!(area[node] > 0)) continue;  // not on the part's surface

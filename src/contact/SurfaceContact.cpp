@@ -6,22 +6,11 @@
 #include <cmath>
 
 #include "contact/CandidateCounts.hpp"
+#include "contact/FacetChoice.hpp"
 
 namespace efg {
 
 namespace {
-// A projection may fall this far (in facet coordinates) beyond a facet's edge and still count:
-// a particle over the node shared by two facets belongs to one of them, and a particle on the
-// line of an edge keeps its facet when round-off moves it a little past the edge.
-constexpr double kOverTolerance = 0.01;
-// Surfaces face each other when the candidate's normal and the facet's make more than about
-// 100 degrees (n_c . n_f below -0.2). A corner particle (normal between its two faces) then
-// meets a flush target end through the end face, not through the side it merely lies on; and a
-// particle of a base just ahead of a block sliding over it (pressed a little into the base by
-// the penalty) is not pushed out through the block's leading side, which would catch the block
-// on the kerb.
-constexpr double kFacing = -0.2;
-
 const double* at3(const std::vector<double>& v, std::size_t node) {
   return &v[3 * node];
 }
@@ -116,29 +105,11 @@ void SurfaceContact::gather(Surface& surface, const Vector& d_overlap) const {
   if (!mine.empty())
     Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, static_cast<int>(mine.size()), mine.data(),
                        surface.x.data());
-  const auto& f = surface.facets;
-  const auto per = static_cast<std::size_t>(f.nodes_per_facet);
-  std::fill(surface.normal.begin(), surface.normal.end(), 0.0);
-  for (std::size_t k = 0; k < f.count(); ++k) {
-    double corner[3][3] = {}, n[3];
-    surface.corners(k, corner);
-    contact::facet_normal(corner, dim_, n);
-    for (std::size_t a = 0; a < per; ++a)
-      for (std::size_t i = 0; i < 3; ++i)
-        surface.normal[3 * static_cast<std::size_t>(f.facet[k * per + a]) + i] += n[i];
-  }
-  for (std::size_t node = 0; 3 * node < surface.normal.size(); ++node) {
-    double* n = &surface.normal[3 * node];
-    const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-    if (len > 0)
-      for (int i = 0; i < 3; ++i) n[i] /= len;
-  }
+  contact::nodal_normals(surface.facets.facet, surface.facets.nodes_per_facet, surface.x, dim_,
+                         surface.normal);
 }
 
-// Each facet's box in the current configuration, grown by the region a particle caught by it
-// can be in: over the facet (within kOverTolerance of its size) and at most its capture depth
-// (its reference size) along its normal n, i.e. by capture |n_k| per axis, plus a margin. A
-// flat facet's box then stays thin in its plane, and a bin lists a few facets (grown by the
+// Each facet's box grown by its capture region (contact::facet_capture_box; grown by the
 // capture depth in every direction, a 3D block's face listed about 100 facets per bin).
 // Refreshed as needed: while no target node has moved by more than the margin since the last
 // build, every facet is still inside its box (Verlet-list reasoning), so the bins stand.
@@ -156,7 +127,6 @@ void SurfaceContact::build_bins(Pair& pair) const {
     if (std::sqrt(moved) <= pair.bin_margin) return;
   }
   const auto d = static_cast<std::size_t>(dim_);
-  const auto per = static_cast<std::size_t>(s.nodes_per_facet);
   pair.lower.assign(d * s.count(), 0.0);
   pair.upper.assign(d * s.count(), 0.0);
   double edge = 0, smallest = 0;
@@ -166,24 +136,9 @@ void SurfaceContact::build_bins(Pair& pair) const {
   for (std::size_t f = 0; f < s.count(); ++f) {
     double corner[3][3] = {};
     target.corners(f, corner);
-    double normal[3];
-    contact::facet_normal(corner, dim_, normal);
-    const double length =
-        std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
-    const double capture = s.reference_size[f];
-    for (std::size_t k = 0; k < d; ++k) {
-      double lo = corner[0][k], hi = lo;
-      for (std::size_t a = 1; a < per; ++a) {
-        lo = std::min(lo, corner[a][k]);
-        hi = std::max(hi, corner[a][k]);
-      }
-      // (a degenerate facet, of no normal, grows by its capture depth every way)
-      const double along = length > 0 ? std::abs(normal[k]) / length : 1.0;
-      const double grow = capture * (along + kOverTolerance) + pair.bin_margin;
-      pair.lower[f * d + k] = lo - grow;
-      pair.upper[f * d + k] = hi + grow;
-      edge = std::max(edge, hi - lo);
-    }
+    edge = std::max(
+        edge, contact::facet_capture_box(corner, s.nodes_per_facet, dim_, s.reference_size[f],
+                                         pair.bin_margin, &pair.lower[f * d], &pair.upper[f * d]));
   }
   pair.bins.build(dim_, pair.lower, pair.upper, edge);
   pair.x_binned = target.x;
@@ -197,35 +152,10 @@ std::pair<int, contact::FacetPoint> SurfaceContact::choose_facet(const Pair& pai
                                                                  const Candidate& c) const {
   const auto& own = surfaces_[pair.own];
   const auto& target = surfaces_[pair.target];
-  const auto& s = target.facets;
   const auto node = static_cast<std::size_t>(own.row_node[c.row]);
-  const double* x = at3(own.x, node);
-  const double* n_own = at3(own.normal, node);
-  auto project = [&](std::size_t facet) {
-    double corner[3][3] = {};
-    target.corners(facet, corner);
-    return contact::project_on_facet(x, corner, dim_, kOverTolerance);
-  };
-  auto pressing = [&](std::size_t facet, const contact::FacetPoint& p) {
-    return p.over && p.gap < 0 && -p.gap <= s.reference_size[facet] &&
-           p.normal[0] * n_own[0] + p.normal[1] * n_own[1] + p.normal[2] * n_own[2] < kFacing;
-  };
-  if (c.facet_old >= 0) {
-    const auto p = project(static_cast<std::size_t>(c.facet_old));
-    if (pressing(static_cast<std::size_t>(c.facet_old), p)) return {c.facet_old, p};
-  }
-  int best = -1;
-  contact::FacetPoint best_point;
-  const auto [begin, end] = pair.bins.near(x);
-  for (const int* it = begin; it != end; ++it) {
-    const auto p = project(static_cast<std::size_t>(*it));
-    if (pressing(static_cast<std::size_t>(*it), p) &&
-        (best < 0 || std::abs(p.gap) < std::abs(best_point.gap))) {
-      best = *it;
-      best_point = p;
-    }
-  }
-  return {best, best_point};
+  return contact::choose_facet(
+      at3(own.x, node), at3(own.normal, node), c.facet_old, pair.bins, target.facets.reference_size,
+      dim_, [&](std::size_t f, double(&corner)[3][3]) { target.corners(f, corner); });
 }
 
 void SurfaceContact::start(const Vector& d_overlap) {

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <sstream>
 
 #include "core/Errors.hpp"
@@ -23,10 +24,16 @@ StageSummary ImplicitDriver::run(Vector& d, const OutputHook& output) {
   const int steps = stage_.settings["load_steps"].as<int>();
   const double min_step = stage_.settings["min_step_fraction"].as<double>() * span;
   const double interval = stage_.output_interval.value_or(span);
-  NewtonSolver newton(problem_, stage_.settings, scene.file, "stage '" + stage_.name + "'");
+  const auto make_newton = [&] {
+    return std::make_unique<NewtonSolver>(problem_, stage_.settings, scene.file,
+                                          "stage '" + stage_.name + "'");
+  };
+  problem_.take_graph_change();  // a graph rebuilt at the stage start is the one used here
+  auto newton_owner = make_newton();
   Progress progress("stage '" + stage_.name + "'", span);
   StageSummary summary;
-  summary.linear_solver = newton.plan().describe() + " (" + newton.plan().reason + ")";
+  summary.linear_solver =
+      newton_owner->plan().describe() + " (" + newton_owner->plan().reason + ")";
   double t = start_, dt = span / steps, next_output = std::min(end, start_ + interval),
          last_output = start_;
   Vector saved(d, Teuchos::Copy), increment(d.getMap());
@@ -62,6 +69,7 @@ StageSummary ImplicitDriver::run(Vector& d, const OutputHook& output) {
     // the last one, where a plastic step's first iterate overshot (det F <= 0 in a trial,
     // cutbacks).
     const double ratio = previous_dt > 0 ? (target - t) / previous_dt : 0.0;
+    auto& newton = *newton_owner;
     const auto result = bodies.active()
                             ? bodies.solve(newton, d, increment, ratio, target, ramp_at(target))
                             : newton.solve_predicted(d, increment, ratio);
@@ -108,6 +116,9 @@ StageSummary ImplicitDriver::run(Vector& d, const OutputHook& output) {
     // Accepted: the history of the converged state becomes the start of the next load step (a
     // cut-back step above never reaches here and leaves the committed history untouched).
     problem_.commit_history(d);
+    // A contact between deformable parts came within reach of new facets: the graph grew, and
+    // the solver's matrix and preconditioner are made anew on it.
+    if (problem_.take_graph_change()) newton_owner = make_newton();
     bodies.commit();
     increment.update(1.0, d, -1.0, saved, 0.0);
     previous_dt = target - t;

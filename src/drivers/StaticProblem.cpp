@@ -1,9 +1,11 @@
 #include "drivers/StaticProblem.hpp"
 
+#include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_TimeMonitor.hpp>
 
 #include <exception>
 
+#include "core/Log.hpp"
 #include "parallel/Collective.hpp"
 
 namespace efg {
@@ -35,25 +37,44 @@ StaticProblem::StaticProblem(std::shared_ptr<const ModelOperators> operators)
     set_of_stage_[stage] = it->second;
   }
   conditions_ = condition_sets_.front().get();
+  if (!model_.scene.contacts.empty()) contact_ = std::make_unique<ImplicitContact>(*ops_);
+  if (ImplicitSurfaceContact::wanted(model_.scene)) {
+    surfaces_ = std::make_unique<ImplicitSurfaceContact>(*ops_);
+    d_overlap_.putScalar(0.0);
+    surfaces_->refresh_couplings(d_overlap_);  // the reference configuration's reach
+  }
+  build_graph();
+  linear_ = contact_ == nullptr && surfaces_ == nullptr;
+  for (const auto& part : model_.scene.parts)
+    for (const auto& material : model_.scene.materials)
+      if (material.name == part.material && material.model != "linear_elastic") linear_ = false;
+}
+
+void StaticProblem::build_graph() {
   Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewCounter("efg: stiffness graph"));
   CouplingGraph couplings(model_.maps.overlap_nodes->getNodeNumElements());
   ops_->add_couplings(couplings);
   for (const auto& set : condition_sets_) set->add_couplings(couplings);
-  if (!model_.scene.contacts.empty()) {
-    contact_ = std::make_unique<ImplicitContact>(*ops_);
-    contact_->add_couplings(couplings);
-  }
+  if (contact_) contact_->add_couplings(couplings);
+  if (surfaces_) surfaces_->add_couplings(couplings);
   graph_ = couplings.build(model_.maps);
-  linear_ = contact_ == nullptr;
-  for (const auto& part : model_.scene.parts)
-    for (const auto& material : model_.scene.materials)
-      if (material.name == part.material && material.model != "linear_elastic") linear_ = false;
+}
+
+void StaticProblem::refresh_surface_couplings() {
+  if (!surfaces_->refresh_couplings(d_overlap_)) return;
+  build_graph();
+  graph_changed_ = true;
 }
 
 void StaticProblem::commit_history(const Vector& d_owned) {
   if (contact_ && contact_->has_friction()) {
     to_overlap(d_owned, d_overlap_);
     contact_->commit(d_overlap_);
+  }
+  if (surfaces_) {
+    to_overlap(d_owned, d_overlap_);
+    surfaces_->commit(d_overlap_);
+    refresh_surface_couplings();
   }
   auto& history = ops_->solid().history();
   if (!history.any()) return;
@@ -74,6 +95,13 @@ void StaticProblem::begin_stage(const std::vector<RigidBodyState>& bodies, doubl
   if (contact_ && d_owned) {  // begin_stage left the bodies at their stage-start places
     to_overlap(*d_owned, d_overlap_);
     contact_->start_friction(d_overlap_);
+  }
+  if (surfaces_) {
+    surfaces_->begin_stage(stage);
+    if (d_owned) {
+      to_overlap(*d_owned, d_overlap_);
+      refresh_surface_couplings();
+    }
   }
 }
 
@@ -111,6 +139,7 @@ void StaticProblem::unconstrained_residual(const Vector& d_owned, Vector& r_owne
       conditions_->add_boundary_terms(d_overlap_, r_overlap_);
     }
     if (contact_) contact_->add_residual(d_overlap_, r_overlap_);
+    if (surfaces_) surfaces_->add_residual(d_overlap_, r_overlap_);
   });
   ops_->to_owned(r_overlap_, boundary_owned_);
   r_owned.update(1.0, boundary_owned_, 1.0);
@@ -139,12 +168,23 @@ void StaticProblem::jacobian(const Vector& d_owned, FEMatrix& K) {
         conditions_->add_boundary_terms(d_overlap_, K);
       }
       if (contact_) contact_->add_tangent(d_overlap_, K);
+      if (surfaces_) surfaces_->add_tangent(d_overlap_, K);
     });
   } catch (...) {
     failure = std::current_exception();
   }
   K.endAssembly();
   if (failure) std::rethrow_exception(failure);
+  if (surfaces_) {
+    // Pairs that came within reach during this load step, beyond the graph's margin: their
+    // tangent waits for the graph's refresh at the step's end (Newton converges slower).
+    long long mine = surfaces_->take_dropped(), all = 0;
+    Teuchos::reduceAll(*model_.maps.owned_dofs->getComm(), Teuchos::REDUCE_SUM, mine,
+                       Teuchos::outArg(all));
+    if (all > 0)
+      Log::info("    contact between parts: " + std::to_string(all) +
+                " tangent entries outside the stiffness graph (left out this load step)");
+  }
   Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewCounter("efg: essential conditions"));
   K.beginModify();
   conditions_->replace_rows(K);
@@ -157,6 +197,12 @@ std::vector<BodyResultant> StaticProblem::body_forces(const Vector& d_owned) {
   return contact_->body_forces(d_overlap_);
 }
 
+std::vector<double> StaticProblem::part_contact_forces(const Vector& d_owned) {
+  if (!surfaces_) return {};
+  to_overlap(d_owned, d_overlap_);
+  return surfaces_->forces(d_overlap_);
+}
+
 std::vector<std::array<double, 3>> StaticProblem::reactions(const Vector& d_owned) {
   // f_int - f_ext and the contact forces, without the conditions' own terms: what the supports
   // carry (contact forces on particles a condition reaches are not its reaction).
@@ -165,6 +211,7 @@ std::vector<std::array<double, 3>> StaticProblem::reactions(const Vector& d_owne
   r_overlap_.putScalar(0.0);
   ops_->add_internal_force(d_overlap_, r_overlap_);
   if (contact_) contact_->add_residual(d_overlap_, r_overlap_);
+  if (surfaces_) surfaces_->add_residual(d_overlap_, r_overlap_);
   ops_->to_owned(r_overlap_, r);
   r.update(-1.0, f_ext_, 1.0);
   if (released_) r.update(-release_scale_, *released_, 1.0);  // still applied, like a load

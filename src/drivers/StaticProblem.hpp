@@ -1,7 +1,8 @@
 // The discrete equilibrium problem of an implicit stage at one load level:
 //   r(d) = f_int(d) - lambda f_ext (+ penalty springs, + contact forces), with the constrained
 //   rows replaced by the kinematic constraints (transformation method),
-// and its Jacobian on a graph built once. Knows nothing of the nonlinear solver that drives it.
+// and its Jacobian on a graph built once (rebuilt only when a contact between deformable parts
+// comes within reach of new facets: take_graph_change). Knows nothing of the nonlinear solver that drives it.
 #pragma once
 
 #include <algorithm>
@@ -10,6 +11,7 @@
 #include <string>
 
 #include "contact/ImplicitContact.hpp"
+#include "contact/ImplicitSurfaceContact.hpp"
 #include "drivers/NonlinearProblem.hpp"
 #include "operators/EssentialConditions.hpp"
 #include "operators/ModelOperators.hpp"
@@ -66,6 +68,16 @@ class StaticProblem : public NonlinearProblem {
   }
   /// The contacts with rigid bodies (null without contacts).
   ImplicitContact* contact() { return contact_.get(); }
+  /// Per contact between deformable parts (scene order), the force of its parts on its target
+  /// parts at d, 3 components each (collective; empty without such contacts in implicit stages).
+  std::vector<double> part_contact_forces(const Vector& d_owned);
+  /// True once after the stiffness graph was rebuilt (a contact between deformable parts came
+  /// within reach of new facets at an accepted load step): matrices made before are stale.
+  bool take_graph_change() {
+    const bool changed = graph_changed_;
+    graph_changed_ = false;
+    return changed;
+  }
   /// The contact force on every rigid body at d (collective; empty without contacts).
   std::vector<BodyResultant> body_forces(const Vector& d_owned);
 
@@ -90,6 +102,10 @@ class StaticProblem : public NonlinearProblem {
 
  private:
   void unconstrained_residual(const Vector& d_owned, Vector& r_owned);
+  /// The stiffness graph: the operators', the conditions' and the contacts' couplings.
+  void build_graph();
+  /// The contacts between deformable parts at d_overlap_ reach new facets: rebuild the graph.
+  void refresh_surface_couplings();
 
   std::shared_ptr<const ModelOperators> ops_;
   const Model& model_;
@@ -99,6 +115,9 @@ class StaticProblem : public NonlinearProblem {
   std::map<std::string, std::size_t> set_of_stage_;
   EssentialConditions* conditions_ = nullptr;  ///< the current stage's
   std::unique_ptr<ImplicitContact> contact_;   ///< only with contacts in the scene
+  /// Only with contacts between deformable parts acting in implicit stages.
+  std::unique_ptr<ImplicitSurfaceContact> surfaces_;
+  bool graph_changed_ = false;
   Teuchos::RCP<const FEGraph> graph_;
   Vector d_overlap_, r_overlap_, f_ext_;
   Vector boundary_owned_;          ///< the boundary terms' and contacts' share of the residual

@@ -10,16 +10,18 @@
 
 namespace efg {
 
-/// node: 2 or 3 positions, 3 components each (z = 0 in 2D); m: the scaled normal.
-inline void facet_normal(const double (*node)[3], int dim, double* m) {
-  const double ab[3] = {node[1][0] - node[0][0], node[1][1] - node[0][1], node[1][2] - node[0][2]};
+/// node: 2 or 3 positions, 3 components each (z = 0 in 2D); m: the scaled normal. T is double
+/// or a forward-AD number (the implicit contact between deformable parts differentiates it).
+template <class T>
+inline void facet_normal(const T (*node)[3], int dim, T* m) {
+  const T ab[3] = {node[1][0] - node[0][0], node[1][1] - node[0][1], node[1][2] - node[0][2]};
   if (dim == 2) {
     m[0] = ab[1];
     m[1] = -ab[0];
-    m[2] = 0.0;
+    m[2] = T(0.0);
     return;
   }
-  const double ac[3] = {node[2][0] - node[0][0], node[2][1] - node[0][1], node[2][2] - node[0][2]};
+  const T ac[3] = {node[2][0] - node[0][0], node[2][1] - node[0][1], node[2][2] - node[0][2]};
   m[0] = ab[1] * ac[2] - ab[2] * ac[1];
   m[1] = ab[2] * ac[0] - ab[0] * ac[2];
   m[2] = ab[0] * ac[1] - ab[1] * ac[0];

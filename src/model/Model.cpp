@@ -10,6 +10,7 @@
 #include "mesh/MeshGenerator.hpp"
 #include "mesh/MeshValidation.hpp"
 #include "mesh/SurfaceChart.hpp"
+#include "model/ContactGhosts.hpp"
 #include "model/GradedMaterials.hpp"
 #include "model/RigidMeshBlocks.hpp"
 #include "parallel/Collective.hpp"
@@ -95,6 +96,7 @@ Model build_model(const CommPtr& comm, Scene scene) {
   for (const auto& d : model.parts)
     for (std::size_t i = d.cloud.owned_count; i < d.cloud.size(); ++i)
       ghosts.insert(d.cloud.mesh_node[i]);
+  for (auto n : contact_row_ghosts(comm, model)) ghosts.insert(n);
   model.partition.ghosts.assign(ghosts.begin(), ghosts.end());
   model.maps = make_dof_maps(comm, model.partition, model.mesh.dimension);
   memory.mark("ghosts and maps");

@@ -3,6 +3,7 @@
 #include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_TimeMonitor.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -154,6 +155,14 @@ RunOutcome run_stages(const CommPtr& comm, const Model& model, const std::string
           state.time = t;
           problem->set_time(t);  // the bodies where the recorded step left them
           const auto forces = problem->body_forces(state.d);
+          // After the walls' normal forces, 3 per contact between deformable parts.
+          const auto between_parts = problem->part_contact_forces(state.d);
+          if (!between_parts.empty()) {
+            const auto walls = model.scene.rigid_walls.size();
+            state.wall_forces.resize(walls + between_parts.size(), 0.0);
+            std::copy(between_parts.begin(), between_parts.end(),
+                      state.wall_forces.begin() + static_cast<std::ptrdiff_t>(walls));
+          }
           const auto places = problem->body_displacements();
           const auto turns = problem->body_rotations();
           const auto orientations = problem->body_orientations();

@@ -63,6 +63,17 @@ usage: check_contact.py impact|punch|slide|stick HISTORY.csv
           0.27 - 0.30, not mu: the friction drags the patch sideways, the normal forces' tilt
           does not cancel); the base's reaction = the contact force to
           1e-6 of it (Newton's tolerance with the nonsymmetric slip tangent)
+  stacked  two elastic blocks stacked (contact between deformable parts, implicit, two-way,
+          2D plane strain): the contact force of the top on the base equals the floor's reaction
+          and minus the press's to 1e-9 of it; its size P = delta / ((H_base + H_top) / E* +
+          1 / K) (the blocks' uniaxial compliance and the penalty's, K by hand in the scene's
+          header: 10.98375) within 1e-4 (measured 4.4e-5; without the penalty's compliance
+          4.8e-4 off)
+  stacked3d  the same in 3D (uniaxial stress, hex8 faces cut into triangles): P = 9.98984
+          within 1e-3 (measured 5.5e-4: between non-matching faces the penetration is not
+          uniform, the top's coarser face indents the base between its particles)
+          Both: at most 8 Newton iterations over the 2 load steps (the run's report JSON next
+          to the history; 6 measured with the full tangent)
 usage: check_contact.py KIND HISTORY.csv [TWIN_HISTORY.csv] [...]
 """
 import math
@@ -151,6 +162,30 @@ elif kind == "punch_implicit":
         x_f = 0.5 * (1 + 0.3 / 0.7 * 0.01 * t)
         check("contact moment vs (x_F - 1) F (relative to max F)",
               np.abs(col("rb_punch_Mz") - (x_f - 1.0) * F).max() / np.abs(F).max(), 1e-4)
+elif kind in ("stacked", "stacked3d"):
+    up = "Fy" if kind == "stacked" else "Fz"
+    axis = up[-1].lower()
+    F = col("contact_stack_" + up)
+    floor, press = col("R_floor_" + axis), col("R_press_" + axis)
+    P = np.abs(F).max()
+    check("|contact force + floor reaction| / P", np.abs(F + floor).max() / P, 1e-9)
+    check("|contact force - press reaction| / P", np.abs(F - press).max() / P, 1e-9)
+    E, nu, delta = 1000.0, 0.3, 0.01
+    if kind == "stacked":  # plane strain; K = 100 E (9 x 1.1 + 12 x (1 + 1/12))
+        stiff, K = E / (1 - nu ** 2), 100 * E * (9 * 1.1 + 12 * (1 + 1.0 / 12))
+    else:  # uniaxial stress; K = 100 E (4 x (1 + 1/3) + 3 x 1.5)
+        stiff, K = E, 100 * E * (4 * (1 + 1.0 / 3) + 3 * 1.5)
+    hand = delta / (1.0 / stiff + 1.0 / K)
+    check("|P / P_hand - 1|", abs(-F[-1] / hand - 1), 1e-4 if kind == "stacked" else 1e-3)
+    # The consistent tangent: 6 Newton iterations over the 2 load steps (the first iterate
+    # without contact, then a contraction by about 1e-3 per iteration; with the facet's nodes
+    # held in the tangent, as against a rigid surface, it takes NEWTON_WITH_FIXED_FACETS).
+    import glob
+    import json
+    import os
+    reports = glob.glob(os.path.join(os.path.dirname(path), "*.report.json"))
+    stage = json.load(open(reports[0]))["implicit_stages"][0]
+    check("Newton iterations over the stage", stage["newton_iterations"], 8)
 elif kind == "punch_force":
     E, nu, h = 1000.0, 0.3, 1.0 / 12
     F = E / (1 - nu ** 2) * 0.01
