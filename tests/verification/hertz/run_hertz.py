@@ -51,44 +51,30 @@ from exodus_mesh import write_exodus  # noqa: E402
 R, E, NU, DELTA, LOAD_STEPS = 1.0, 1000.0, 0.3, 0.03, 5
 GRADING = 0.3  # contact-point spacing / uniform spacing (make_mesh.graded)
 TOL = 0.05
-TWIN_TOL = 0.005
+TWIN_TOL = 0.002
 
-MIRROR_SCENE = """title: Hertz, two equal elastic cylinders pressed together, {nr} cells across the radius
+# The scene of a level: the cylinder and its supports, then what it is pressed against (the
+# rigid flat, or the mirror image as a second part), then loading and output.
+SCENE_HEAD = """title: {title}, {nr} cells across the radius
 mesh: {{file: {mesh}}}
 parts:
-  - {{name: cyl, blocks: [cylinder], material: m, plane: strain}}
-  - {{name: mirror, blocks: [mirror], material: m, plane: strain}}
+  - {{name: cyl, blocks: [cylinder], material: m, plane: strain}}{more_parts}
 materials:
   - {{name: m, model: linear_elastic, youngs_modulus: {E!r}, poissons_ratio: {nu!r}}}
 boundary_conditions:
   - {{name: sym, type: displacement, node_set: sym, x: 0}}
   - {{name: top, type: displacement, node_set: top, y: {d!r}, curve: load}}
-  - {{name: bottom, type: displacement, node_set: bottom, y: 0}}
-contacts:
-  - {{name: touch, parts: [cyl], target_parts: [mirror], implicit_penalty: {alpha!r}}}
-curves:
-  - {{name: load, time: [0, 1], value: [0, 1]}}
-stages:
-  - {{name: press, driver: implicit, end_time: 1, load_steps: {steps}}}
-output:
-  fields: [displacement]
-  history: history.csv
 """
-
-SCENE = """title: Hertz cylinder on a rigid flat, {nr} cells across the radius
-mesh: {{file: {mesh}}}
-parts:
-  - {{name: cyl, blocks: [cylinder], material: m, plane: strain}}
-materials:
-  - {{name: m, model: linear_elastic, youngs_modulus: {E!r}, poissons_ratio: {nu!r}}}
-boundary_conditions:
-  - {{name: sym, type: displacement, node_set: sym, x: 0}}
-  - {{name: top, type: displacement, node_set: top, y: {d!r}, curve: load}}
-rigid_bodies:
+FLAT = """rigid_bodies:
   - {{name: flat, shape: plane, point: [0, 0], normal: [0, 1]{flat}}}
 contacts:
   - {{name: touch, rigid_body: flat, parts: [cyl], implicit_penalty: {alpha!r}}}
-curves:
+"""
+MIRROR = """  - {{name: bottom, type: displacement, node_set: bottom, y: 0}}
+contacts:
+  - {{name: touch, parts: [cyl], target_parts: [mirror], implicit_penalty: {alpha!r}}}
+"""
+SCENE_TAIL = """curves:
   - {{name: load, time: [0, 1], value: [0, 1]}}
 stages:
   - {{name: press, driver: implicit, end_time: 1, load_steps: {steps}}}
@@ -139,13 +125,15 @@ def run_level(efg, outdir, nr, alpha, grading, force=None, mirror=False):
     with open(scene, "w") as f:
         flat = (", motion: free, mass: 1.0, force: [0, %r], curve: load" % (force / 2)
                 if force else "")
-        if mirror:
-            f.write(MIRROR_SCENE.format(nr=nr, mesh=os.path.basename(mesh), E=E, nu=NU,
-                                        d=-2 * DELTA, alpha=alpha, steps=LOAD_STEPS))
-        else:
-            f.write(SCENE.format(nr=nr, mesh=os.path.basename(mesh), E=E, nu=NU,
-                                 d=0.0 if force else -DELTA, alpha=alpha, steps=LOAD_STEPS,
-                                 flat=flat))
+        scene_text = SCENE_HEAD + (MIRROR if mirror else FLAT) + SCENE_TAIL
+        f.write(scene_text.format(
+            title=("Hertz, two equal elastic cylinders pressed together" if mirror
+                   else "Hertz cylinder on a rigid flat"),
+            more_parts=("\n  - {name: mirror, blocks: [mirror], material: m, plane: strain}"
+                        if mirror else ""),
+            nr=nr, mesh=os.path.basename(mesh), E=E, nu=NU,
+            d=-2 * DELTA if mirror else 0.0 if force else -DELTA, alpha=alpha, steps=LOAD_STEPS,
+            flat=flat))
     out = os.path.join(outdir, tag + "_out")
     start = time.time()
     p = subprocess.run([efg, "run", scene, "-o", out], capture_output=True, text=True)
