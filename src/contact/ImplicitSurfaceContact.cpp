@@ -102,6 +102,9 @@ ImplicitSurfaceContact::Surface ImplicitSurfaceContact::make_surface(
   }
   s.x.assign(3 * nodes, 0.0);
   s.normal = s.x;
+  s.x_old = s.x;
+  for (std::size_t n = 0; n < nodes; ++n)  // the reference configuration until a stage starts
+    for (std::size_t k = 0; k < 3; ++k) s.x_old[3 * n + k] = s.rows[n].X[k];
   return s;
 }
 
@@ -125,6 +128,7 @@ ImplicitSurfaceContact::ImplicitSurfaceContact(const ModelOperators& ops)
       pair.own = from;
       pair.target = to;
       pair.active = true;  // until a stage says otherwise (begin_stage)
+      pair.friction = {spec.static_friction, spec.dynamic_friction, spec.decay};
       const auto& own = surfaces_[from];
       // Each candidate's penalty from its own part (the first of the names holding it).
       std::vector<double> k(model.mesh.node_count(), 0.0);
@@ -153,11 +157,41 @@ ImplicitSurfaceContact::ImplicitSurfaceContact(const ModelOperators& ops)
   }
 }
 
-void ImplicitSurfaceContact::begin_stage(const std::string& stage) {
+void ImplicitSurfaceContact::begin_stage(const std::string& stage, const Vector& d_overlap,
+                                         double t0) {
+  t_ = t0;
+  evaluate(d_overlap, 0.0);
+  for (auto& s : surfaces_) s.x_old = s.x;
   for (auto& pair : pairs_) {
     pair.active = pair.spec->stages.includes(stage);
-    for (auto& c : pair.candidates) c.facet_old = -1;
+    for (auto& c : pair.candidates) {
+      c.facet_old = -1;
+      for (double& f : c.ft_old) f = 0.0;
+    }
   }
+  t_committed_ = t_;
+}
+
+const contact::PairFriction* ImplicitSurfaceContact::friction_of(const Pair& pair,
+                                                                 const Candidate& c, int facet,
+                                                                 double (&corner_old)[3][3],
+                                                                 contact::PairFriction& out) const {
+  if (!pair.rubs()) return nullptr;
+  const auto& target = surfaces_[pair.target];
+  const auto per = static_cast<std::size_t>(target.facets.nodes_per_facet);
+  for (std::size_t a = 0; a < per; ++a)
+    for (std::size_t k = 0; k < 3; ++k)
+      corner_old[a][k] =
+          target.x_old[3 * static_cast<std::size_t>(
+                               target.facets.facet[static_cast<std::size_t>(facet) * per + a]) +
+                       k];
+  out.law = pair.friction;
+  out.x_old = &surfaces_[pair.own].x_old[3 * c.node];
+  out.corner_old = corner_old;
+  out.ft_old = c.ft_old;
+  out.stick_stiffness = c.stiffness / pair.spec->implicit_penalty;
+  out.dt = t_ > t_committed_ ? t_ - t_committed_ : 1.0;  // the decay law's rate
+  return &out;
 }
 
 void ImplicitSurfaceContact::evaluate(const Vector& d_overlap, double reach) const {
@@ -200,9 +234,11 @@ ImplicitSurfaceContact::Press ImplicitSurfaceContact::press(const Pair& pair,
   Press p;
   p.facet = facet;
   if (facet < 0) return p;
-  double corner[3][3] = {};
+  double corner[3][3] = {}, corner_old[3][3] = {};
   corners(static_cast<std::size_t>(facet), corner);
-  contact::pair_penalty_forces(&own.x[3 * c.node], corner, dim_, c.stiffness, p.force);
+  contact::PairFriction friction;
+  contact::pair_penalty_forces(&own.x[3 * c.node], corner, dim_, c.stiffness, p.force,
+                               friction_of(pair, c, facet, corner_old, friction), p.ft);
   return p;
 }
 
@@ -296,7 +332,10 @@ void ImplicitSurfaceContact::add_tangent(const Vector& d_overlap, FEMatrix& K) c
           if (i < udim) corner[a][i].diff(static_cast<int>((a + 1) * udim + i), 12);
         }
       }
-      contact::pair_penalty_forces(x, corner, dim_, c.stiffness, force);
+      double corner_old[3][3] = {};
+      contact::PairFriction friction;
+      contact::pair_penalty_forces<PairFad>(x, corner, dim_, c.stiffness, force,
+                                            friction_of(pair, c, p.facet, corner_old, friction));
       // K_(I i),(K j) += phi_P,I (-dF_P,i / dx_Q,j) phi_Q,K, one column per node K (the
       // facet's nodes share rows: their entries are summed here, once per column).
       nodes.clear();
@@ -335,8 +374,14 @@ void ImplicitSurfaceContact::commit(const Vector& d_overlap) {
   evaluate(d_overlap, 0.0);
   for (auto& pair : pairs_) {
     if (!pair.active) continue;
-    for (auto& c : pair.candidates) c.facet_old = press(pair, c).facet;
+    for (auto& c : pair.candidates) {
+      const auto p = press(pair, c);
+      c.facet_old = p.facet;
+      for (std::size_t i = 0; i < 3; ++i) c.ft_old[i] = p.facet >= 0 ? p.ft[i] : 0.0;
+    }
   }
+  for (auto& s : surfaces_) s.x_old = s.x;
+  t_committed_ = t_;
 }
 
 std::vector<double> ImplicitSurfaceContact::forces(const Vector& d_overlap) const {

@@ -97,11 +97,12 @@ void StaticProblem::begin_stage(const std::vector<RigidBodyState>& bodies, doubl
     contact_->start_friction(d_overlap_);
   }
   if (surfaces_) {
-    surfaces_->begin_stage(stage);
-    if (d_owned) {
+    if (d_owned)
       to_overlap(*d_owned, d_overlap_);
-      refresh_surface_couplings();
-    }
+    else
+      d_overlap_.putScalar(0.0);
+    surfaces_->begin_stage(stage, d_overlap_, t0);
+    refresh_surface_couplings();
   }
 }
 

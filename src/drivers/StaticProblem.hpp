@@ -40,6 +40,7 @@ class StaticProblem : public NonlinearProblem {
   void set_release(double remaining) { release_scale_ = remaining; }
   void set_time(double t) {
     if (contact_) contact_->set_time(t);
+    if (surfaces_) surfaces_->set_time(t);
   }
   /// Displacements of the rigid bodies at the last set_time (empty without contacts).
   std::vector<std::array<double, 3>> body_displacements() const {

@@ -278,7 +278,7 @@ void read_contact_input(Scene& s) {
     s.contacts.push_back(
         read_contact(s, r["contacts"][i], d["contacts"][i], "contacts[" + std::to_string(i) + "]"));
   // Implicit stages: contact with fixed, prescribed or force-controlled (free) bodies, with or
-  // without friction; between deformable parts without friction.
+  // without friction; between deformable parts too.
   std::vector<std::string> stage_names;
   for (const auto& st : s.stages) stage_names.push_back(st.name);
   for (std::size_t i = 0; i < s.contacts.size(); ++i)
@@ -293,17 +293,6 @@ void read_contact_input(Scene& s) {
     const auto stage_key = "stages[" + std::to_string(implicit) + "].driver";
     const YAML::Node stage_at = d["stages"][implicit]["driver"];
     const auto path = "contacts[" + std::to_string(i) + "]";
-    // Between deformable parts: frictionless (contact/ImplicitSurfaceContact).
-    if (!c.target_parts.empty() && (c.static_friction > 0 || c.dynamic_friction > 0))
-      fail(s,
-           d["contacts"][i]["static_friction"] ? d["contacts"][i]["static_friction"]
-                                               : d["contacts"][i]["dynamic_friction"],
-           path + (d["contacts"][i]["static_friction"] ? ".static_friction" : ".dynamic_friction"),
-           "contact '" + c.name + "' is between deformable parts and acts in the implicit stage '" +
-               s.stages[implicit].name +
-               "', where such contacts are frictionless; expected no friction, or its stages: "
-               "naming the explicit stages it acts in (" +
-               path + ".stages)");
     for (const auto& b : s.rigid_bodies) {
       if (b.name != c.rigid_body) continue;
       if (b.motion == "free") check_static_load(s, b, c, stage_at, stage_key);

@@ -92,13 +92,13 @@ SpecPtr contact_spec() {
   return map("Penalty contact between the surface particles of deformable parts and a rigid "
              "body, or the surface of other deformable parts (target_parts), with Coulomb "
              "friction; implicit stages take rigid bodies (free ones force-controlled) and "
-             "frictionless target_parts.")
+             "target_parts.")
       .required("name", string("Contact name, unique."))
       .optional("rigid_body", string("Name of an entry of rigid_bodies."))
       .optional("target_parts",
                 string_list("Deformable parts whose surface (the sides of their boundary, in "
                             "the current configuration) the surface particles of parts touch; "
-                            "bin search; explicit stages, and implicit ones without friction.")
+                            "bin search; explicit and implicit stages.")
                     .items(1, 1000))
       .exactly_one_of({"rigid_body", "target_parts"})
       .required("parts",

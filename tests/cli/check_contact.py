@@ -74,6 +74,11 @@ usage: check_contact.py impact|punch|slide|stick HISTORY.csv
           uniform, the top's coarser face indents the base between its particles)
           Both: at most 8 Newton iterations over the 2 load steps (the run's report JSON next
           to the history; 6 measured with the full tangent)
+  drag_parts  an elastic block pressed (t <= 0.5) then dragged over an elastic base, implicit,
+          friction between deformable parts (mu = 0.3): |F_x| < mu |F_y| while the drag builds
+          up (t in (0.5, 0.75)); F_x = mu |F_y| within 5e-3 for t >= 1.2 (all slipping; measured
+          3.1e-3: the dragged block rocks, its leading edge bears more, and the contact normals
+          tilt by about 1e-3 rad, F_x / |F_y| = mu + tilt (1 + mu^2)); the clamp's reactions equal the contact force to 1e-8
 usage: check_contact.py KIND HISTORY.csv [TWIN_HISTORY.csv] [...]
 """
 import math
@@ -301,6 +306,17 @@ elif kind == "drag_implicit":
           1e-8)
     check("|R_base_x - F_x| / max F_y", np.abs(col("R_base_x") - Fx).max() / scale, 1e-8)
     check("|R_base_y - F_y| / max F_y", np.abs(col("R_base_y") - Fy).max() / scale, 1e-8)
+elif kind == "drag_parts":
+    mu = 0.3
+    Fx, Fy = col("contact_rub_Fx"), col("contact_rub_Fy")  # the block's force on the base
+    scale = np.abs(Fy).max()
+    slip, building = t >= 1.2 - 1e-9, (t > 0.5 + 1e-9) & (t < 0.75)
+    check("building up: largest F_x / (mu |F_y|) - 1 (below 0)",
+          max(0.0, (np.abs(Fx[building]) / (mu * np.abs(Fy[building]))).max() - 1 + 1e-3), 0.0)
+    check("full slip: |F_x / (mu |F_y|) - 1|", np.abs(Fx[slip] / (mu * np.abs(Fy[slip])) - 1).max(),
+          5e-3)
+    check("|R_clamp_x + F_x| / max |F_y|", np.abs(col("R_clamp_x") + Fx).max() / scale, 1e-8)
+    check("|R_clamp_y + F_y| / max |F_y|", np.abs(col("R_clamp_y") + Fy).max() / scale, 1e-8)
 elif kind in ("slide", "stick"):
     tan, mu, g, M = (0.5 if kind == "slide" else 0.2), 0.3, 1.0, 0.5
     th = math.atan(tan)
