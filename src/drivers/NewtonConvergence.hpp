@@ -12,8 +12,9 @@
 //       the unpredicted residual over the predicted increment, so that a predictor that lands on
 //       the answer (a step that stays elastic: the first update is round-off already) is judged
 //       against the step's energy, not against round-off.
-// Fails when the linear solve of an iteration did not converge and reduced the residual of its
-// system by less than 1e-3 (the direction is no Newton direction: a singular or hopeless system),
+// Fails when the linear solve of an iteration did not converge, reduced the residual of its
+// system by less than 1e-3 and ||r|| by less than 10x (the direction is no Newton direction: a
+// singular or hopeless system),
 // or when ||r|| grows above 1e3 ||r_0|| (divergence; 1e3 max(||r_0||, ||r_1||) for problems
 // Newton solves by full steps, NonlinearProblem::residual_norm_is_a_merit). Keeps the
 // per-iteration record the log and the run report print.
