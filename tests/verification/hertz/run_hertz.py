@@ -227,10 +227,16 @@ def main():
         failures.append("the half-width error does not fall with refinement")
     if len(rows) > 1 and not abs(fine["ep"]) < abs(coarse["ep"]):
         failures.append("the peak pressure error does not fall with refinement")
+    finish(failures, rows, "nr")
+
+
+def finish(failures, rows, level):
+    """Adds the reaction check of every level (row[level] names it), prints the failures and
+    exits 1 when there are any (shared with ../hertz_sphere)."""
     for r in rows:
         if not r["reaction_error"] < 1e-8:
             failures.append("%d: reactions differ from the contact force by %.2g of it"
-                            % (r["nr"], r["reaction_error"]))
+                            % (r[level], r["reaction_error"]))
     for f in failures:
         print("FAILED: " + f)
     sys.exit(1 if failures else 0)
