@@ -24,6 +24,11 @@ BoundaryShares boundary_shares(const BackgroundMesh& mesh, const std::vector<std
   return s;
 }
 
+BoundaryShares part_boundary_shares(const Model& model, std::size_t p) {
+  const auto& part = *model.parts[p].part;
+  return boundary_shares(model.mesh, part.blocks, model.mesh.dimension == 2 ? part.thickness : 1.0);
+}
+
 double part_youngs_modulus(const Model& model, std::size_t p) {
   const auto& part = *model.parts[p].part;
   return model.scene.find_material(part.material)->constants.at("youngs_modulus");

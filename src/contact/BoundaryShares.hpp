@@ -20,7 +20,15 @@ struct BoundaryShares {
 BoundaryShares boundary_shares(const BackgroundMesh& mesh, const std::vector<std::string>& blocks,
                                double thickness);
 
+/// Part p's shares (its blocks; its thickness in 2D).
+BoundaryShares part_boundary_shares(const Model& model, std::size_t p);
+
 /// Young's modulus of part p's material (the implicit penalty's E).
 double part_youngs_modulus(const Model& model, std::size_t p);
+
+/// The implicit penalty of boundary node n, k = alpha E / h A (0 off the boundary).
+inline double penalty_stiffness(const BoundaryShares& s, std::size_t n, double alpha, double E) {
+  return s.area[n] > 0 ? alpha * E / s.size[n] * s.area[n] : 0.0;
+}
 
 }  // namespace efg

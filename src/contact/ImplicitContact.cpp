@@ -47,7 +47,6 @@ ImplicitContact::ImplicitContact(const ModelOperators& ops)
       bodies_(ops.model().scene, ops.model().mesh.dimension),
       comm_(ops.model().maps.owned_dofs->getComm()) {
   const auto& model = ops.model();
-  const auto& mesh = model.mesh;
   for (const auto& spec : model.scene.contacts) {
     if (spec.rigid_body.empty()) continue;  // between deformable parts: ImplicitSurfaceContact
     Pair pair;
@@ -60,17 +59,14 @@ ImplicitContact::ImplicitContact(const ModelOperators& ops)
       if (std::find(spec.parts.begin(), spec.parts.end(), part.part->name) == spec.parts.end())
         continue;
       const double E = part_youngs_modulus(model, p);
-      const auto shares =
-          boundary_shares(mesh, part.part->blocks, dim_ == 2 ? part.part->thickness : 1.0);
-      const auto& area = shares.area;
-      const auto& size = shares.size;
+      const auto shares = part_boundary_shares(model, p);
       for (std::size_t j = 0; j < part.cloud.owned_count; ++j) {
         const auto node = static_cast<std::size_t>(part.cloud.mesh_node[j]);
-        if (!(area[node] > 0)) continue;  // not on the part's surface
+        if (!(shares.area[node] > 0)) continue;  // not on the part's surface
         Candidate c;
         c.row = particle_row(ops, p, j);
-        c.stiffness = spec.implicit_penalty * E / size[node] * area[node];
-        c.size = size[node];
+        c.stiffness = penalty_stiffness(shares, node, spec.implicit_penalty, E);
+        c.size = shares.size[node];
         pair.candidates.push_back(std::move(c));
       }
     }

@@ -14,8 +14,6 @@
 namespace efg {
 
 namespace {
-// The capture depth stays the explicit one facet size: 4 sizes did not speed up Newton on the
-// Hertz cylinders and caught a block's far side through a corner particle's diagonal normal.
 // Forward AD over a pair's points: the particle and up to 3 facet nodes, 3 components each.
 using PairFad = Sacado::Fad::SFad<double, 12>;
 
@@ -102,9 +100,8 @@ ImplicitSurfaceContact::Surface ImplicitSurfaceContact::make_surface(
   }
   s.x.assign(3 * nodes, 0.0);
   s.normal = s.x;
-  s.x_old = s.x;
-  for (std::size_t n = 0; n < nodes; ++n)  // the reference configuration until a stage starts
-    for (std::size_t k = 0; k < 3; ++k) s.x_old[3 * n + k] = s.rows[n].X[k];
+  s.x_old.reserve(3 * nodes);  // the reference configuration until a stage starts
+  for (const auto& row : s.rows) s.x_old.insert(s.x_old.end(), row.X.begin(), row.X.end());
   return s;
 }
 
@@ -133,14 +130,11 @@ ImplicitSurfaceContact::ImplicitSurfaceContact(const ModelOperators& ops)
       // Each candidate's penalty from its own part (the first of the names holding it).
       std::vector<double> k(model.mesh.node_count(), 0.0);
       for (std::size_t p = model.parts.size(); p-- > 0;) {
-        const auto& part = *model.parts[p].part;
-        if (!in_parts(names, part.name)) continue;
+        if (!in_parts(names, model.parts[p].part->name)) continue;
         const double E = part_youngs_modulus(model, p);
-        const auto shares =
-            boundary_shares(model.mesh, part.blocks, dim_ == 2 ? part.thickness : 1.0);
+        const auto shares = part_boundary_shares(model, p);
         for (std::size_t n = 0; n < k.size(); ++n)
-          if (shares.area[n] > 0)
-            k[n] = spec.implicit_penalty * E / shares.size[n] * shares.area[n];
+          if (shares.area[n] > 0) k[n] = penalty_stiffness(shares, n, spec.implicit_penalty, E);
       }
       for (std::size_t n = 0; n < own.facets.mesh_node.size(); ++n) {
         const auto node = static_cast<std::size_t>(own.facets.mesh_node[n]);
@@ -228,6 +222,8 @@ ImplicitSurfaceContact::Press ImplicitSurfaceContact::press(const Pair& pair,
   const auto& own = surfaces_[pair.own];
   const auto& target = surfaces_[pair.target];
   const auto corners = [&](std::size_t f, double(&corner)[3][3]) { target.corners(f, corner); };
+  // The explicit capture depth of one facet size: 4 sizes did not speed up Newton on the Hertz
+  // cylinders and caught a block's far side through a corner particle's diagonal normal.
   const auto [facet, point] =
       contact::choose_facet(&own.x[3 * c.node], &own.normal[3 * c.node], c.facet_old, pair.bins,
                             target.facets.reference_size, dim_, corners);

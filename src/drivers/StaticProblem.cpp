@@ -67,12 +67,10 @@ void StaticProblem::refresh_surface_couplings() {
 }
 
 void StaticProblem::commit_history(const Vector& d_owned) {
-  if (contact_ && contact_->has_friction()) {
-    to_overlap(d_owned, d_overlap_);
-    contact_->commit(d_overlap_);
-  }
+  const bool rigid_friction = contact_ && contact_->has_friction();
+  if (rigid_friction || surfaces_) to_overlap(d_owned, d_overlap_);
+  if (rigid_friction) contact_->commit(d_overlap_);
   if (surfaces_) {
-    to_overlap(d_owned, d_overlap_);
     surfaces_->commit(d_overlap_);
     refresh_surface_couplings();
   }
@@ -91,16 +89,15 @@ void StaticProblem::begin_stage(const std::vector<RigidBodyState>& bodies, doubl
   conditions_->load_history();  // an earlier stage may have advanced it
   released_ = Teuchos::null;
   release_scale_ = 0;
-  if (contact_) contact_->begin_stage(bodies, t0, stage);
-  if (contact_ && d_owned) {  // begin_stage left the bodies at their stage-start places
+  // The state the stage starts from (none: the reference configuration).
+  if (d_owned)
     to_overlap(*d_owned, d_overlap_);
-    contact_->start_friction(d_overlap_);
-  }
+  else
+    d_overlap_.putScalar(0.0);
+  if (contact_) contact_->begin_stage(bodies, t0, stage);
+  // (begin_stage left the bodies at their stage-start places)
+  if (contact_ && d_owned) contact_->start_friction(d_overlap_);
   if (surfaces_) {
-    if (d_owned)
-      to_overlap(*d_owned, d_overlap_);
-    else
-      d_overlap_.putScalar(0.0);
     surfaces_->begin_stage(stage, d_overlap_, t0);
     refresh_surface_couplings();
   }
