@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <map>
 #include <string>
 
@@ -43,6 +44,37 @@ void build_nodal(const BackgroundMesh& mesh, const ParticleCloud& cloud, Integra
   ip.gradients = table_from(v, true, cloud.dimension);
 }
 
+// The smoothing points of each batch of kScniBatch owned particles (those next to a particle of
+// the batch on either side), in ascending point order, as compressed rows: one pass over the
+// points instead of one per batch (quadratic in the particle count: 5 % of a 131k-particle
+// setup, measured).
+struct BatchPoints {
+  std::vector<std::size_t> offsets, entries;
+};
+BatchPoints points_by_batch(const ParticleCloud& cloud, const std::vector<SmoothingPoint>& points,
+                            std::size_t node_count) {
+  std::vector<std::int64_t> batch_of(node_count, -1);
+  for (std::size_t l = 0; l < cloud.owned_count; ++l)
+    batch_of[static_cast<std::size_t>(cloud.mesh_node[l])] =
+        static_cast<std::int64_t>(l / kScniBatch);
+  const auto batches = (cloud.owned_count + kScniBatch - 1) / kScniBatch;
+  BatchPoints out;
+  out.offsets.assign(batches + 1, 0);
+  auto for_each_batch = [&](const SmoothingPoint& p, auto&& act) {
+    const auto a = p.plus < 0 ? -1 : batch_of[static_cast<std::size_t>(p.plus)];
+    const auto b = p.minus < 0 ? -1 : batch_of[static_cast<std::size_t>(p.minus)];
+    if (a >= 0) act(static_cast<std::size_t>(a));
+    if (b >= 0 && b != a) act(static_cast<std::size_t>(b));
+  };
+  for (const auto& p : points) for_each_batch(p, [&](std::size_t b) { ++out.offsets[b + 1]; });
+  for (std::size_t b = 0; b < batches; ++b) out.offsets[b + 1] += out.offsets[b];
+  out.entries.resize(out.offsets[batches]);
+  auto next = out.offsets;
+  for (std::size_t i = 0; i < points.size(); ++i)
+    for_each_batch(points[i], [&](std::size_t b) { out.entries[next[b]++] = i; });
+  return out;
+}
+
 void build_scni(const BackgroundMesh& mesh, const PartSpec& part, const ParticleCloud& cloud,
                 const std::vector<int>& owner, int rank, IntegrationPoints& ip) {
   const auto dim = static_cast<std::size_t>(cloud.dimension);
@@ -63,20 +95,18 @@ void build_scni(const BackgroundMesh& mesh, const PartSpec& part, const Particle
   std::vector<LocalIndex> row_index(mesh.node_count(), -1);
   ip.gradients.width = cloud.dimension;
   ip.gradients.offsets.assign(1, 0);
-  for (std::size_t first = 0; first < cloud.owned_count; first += kScniBatch) {
+  const auto batch_points = points_by_batch(cloud, points, mesh.node_count());
+  for (std::size_t first = 0, b = 0; first < cloud.owned_count; first += kScniBatch, ++b) {
     const std::size_t rows = std::min(kScniBatch, cloud.owned_count - first);
     for (std::size_t l = 0; l < rows; ++l)
       row_index[static_cast<std::size_t>(cloud.mesh_node[first + l])] = static_cast<LocalIndex>(l);
-    auto in_batch = [&](LocalIndex node) {
-      return node >= 0 && row_index[static_cast<std::size_t>(node)] >= 0;
-    };
     std::vector<SmoothingPoint> batch;
     std::vector<double> coords;
-    for (const auto& p : points)
-      if (in_batch(p.plus) || in_batch(p.minus)) {
-        batch.push_back(p);
-        coords.insert(coords.end(), p.x.begin(), p.x.begin() + static_cast<std::ptrdiff_t>(dim));
-      }
+    for (auto k = batch_points.offsets[b]; k < batch_points.offsets[b + 1]; ++k) {
+      const auto& p = points[batch_points.entries[k]];
+      batch.push_back(p);
+      coords.insert(coords.end(), p.x.begin(), p.x.begin() + static_cast<std::ptrdiff_t>(dim));
+    }
     const auto phi =
         evaluate_shape_functions(cloud, coords.data(), batch.size(), false, [&](std::size_t p) {
           return "SCNI smoothing point next to particle " + std::to_string(batch[p].plus + 1);

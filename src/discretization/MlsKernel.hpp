@@ -110,6 +110,10 @@ struct MlsKernel {
       const int j = neighbors(k);
       double w;
       weight(j, x, w, dw);
+      // Kept in the output slots for the second pass (same bits as evaluating them again).
+      phi(k) = w;
+      if (with_gradients)
+        for (int d = 0; d < Dim; ++d) grad(k, d) = dw[d];
       basis_at(j, x, s, p, dp);
       for (int m = 0; m < N; ++m)
         for (int n = 0; n < N; ++n) {
@@ -144,8 +148,9 @@ struct MlsKernel {
       }
     for (std::size_t k = begin; k < end; ++k) {
       const int j = neighbors(k);
-      double w;
-      weight(j, x, w, dw);
+      const double w = phi(k);
+      if (with_gradients)
+        for (int d = 0; d < Dim; ++d) dw[d] = grad(k, d);
       basis_at(j, x, s, p, dp);
       double bp = 0.0;
       for (int m = 0; m < N; ++m) bp += b[m] * p[m];

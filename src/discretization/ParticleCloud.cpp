@@ -99,17 +99,13 @@ ParticleCloud make_particle_cloud(const BackgroundMesh& mesh, const PartSpec& pa
   return cloud;
 }
 
-double largest_support_radius(const ParticleCloud& cloud) {
+double largest_support_reach(const ParticleCloud& cloud) {
   double largest = 0;
   const auto dim = static_cast<std::size_t>(cloud.dimension);
-  for (std::size_t i = 0; i < cloud.size(); ++i) {
-    double r2 = 0;
-    for (std::size_t d = 0; d < dim; ++d)
-      r2 += cloud.support[i * dim + d] * cloud.support[i * dim + d];
-    const double reach =
-        cloud.section.support == SupportShape::sphere ? cloud.support[i * dim] : std::sqrt(r2);
-    largest = std::max(largest, reach);
-  }
+  const bool sphere = cloud.section.support == SupportShape::sphere;
+  for (std::size_t i = 0; i < cloud.size(); ++i)
+    for (std::size_t d = 0; d < (sphere ? 1 : dim); ++d)
+      largest = std::max(largest, cloud.support[i * dim + d]);
   return largest;
 }
 

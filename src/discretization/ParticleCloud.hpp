@@ -50,8 +50,10 @@ ParticleCloud make_particle_cloud(const BackgroundMesh& mesh, const PartSpec& pa
                                   const std::vector<int>& owner, int rank,
                                   const std::vector<LocalIndex>& ghost_nodes);
 
-/// Largest distance from a particle at which its support still reaches: the half-diagonal |a|
-/// of a box support, the radius of a sphere.
-double largest_support_radius(const ParticleCloud& cloud);
+/// Largest extent of a support along one coordinate axis from its particle: the largest
+/// half-width a_d of a box support, the radius of a sphere. Every support lies inside the box
+/// x_i +- this reach, so a search box of that half-width around a point finds every particle
+/// whose support covers it.
+double largest_support_reach(const ParticleCloud& cloud);
 
 }  // namespace efg

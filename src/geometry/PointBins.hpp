@@ -20,6 +20,9 @@ class PointBins {
   template <class Visit>
   void for_each_within(const double* x, double radius, Visit&& visit) const;
 
+  /// True when some point lies within Euclidean distance `radius` of `x`.
+  bool any_within(const double* x, double radius) const;
+
   int dimension() const { return grid_.dim; }
   const BinGrid& grid() const { return grid_; }
   const std::vector<std::size_t>& bin_start() const { return start_; }    ///< CSR offsets per bin

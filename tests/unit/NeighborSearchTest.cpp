@@ -26,39 +26,43 @@ bool inside_support(bool sphere, int dim, const double* xi, const double* a, con
 }
 
 TEST(NeighborSearch, MatchesBruteForceOrderedByGlobalId) {
+  // Per-axis dilations as well: box supports much longer along one axis than another (the
+  // search box must reach the largest half-width along every axis).
+  const std::vector<std::vector<double>> dilations = {{1.7}, {1.2, 2.6, 1.5}};
   for (int dim : {2, 3})
-    for (auto shape : {SupportShape::box, SupportShape::sphere}) {
-      GeneratorSpec spec;
-      spec.dimension = dim;
-      spec.element = dim == 2 ? CellType::quad4 : CellType::hex8;
-      spec.cells = {9, 7, 5};
-      spec.upper = {1, 1, 1};
-      spec.perturbation = 0.3;
-      SectionSpec section;
-      section.dilation = {1.7};
-      section.support = shape;
-      auto cloud = test::mesh_cloud(generate_mesh(spec), section);
-      // Shuffle the global ids so that cloud order and id order differ.
-      std::reverse(cloud.mesh_node.begin(), cloud.mesh_node.end());
-      const auto points = test::random_points(dim, {-0.1, -0.1, -0.1}, {1.1, 1.1, 1.1}, 400, 11);
-      const auto lists = find_neighbors(cloud, points.data(), 400);
-      ASSERT_EQ(lists.point_count(), 400u);
-      for (std::size_t p = 0; p < 400; ++p) {
-        const double* x = points.data() + p * static_cast<std::size_t>(dim);
-        std::vector<LocalIndex> expected;
-        for (std::size_t i = 0; i < cloud.size(); ++i)
-          if (inside_support(shape == SupportShape::sphere, dim, cloud.x(i), cloud.a(i), x))
-            expected.push_back(static_cast<LocalIndex>(i));
-        std::sort(expected.begin(), expected.end(), [&](LocalIndex a, LocalIndex b) {
-          return cloud.mesh_node[static_cast<std::size_t>(a)] <
-                 cloud.mesh_node[static_cast<std::size_t>(b)];
-        });
-        const std::vector<LocalIndex> found(
-            lists.particles.begin() + static_cast<std::ptrdiff_t>(lists.offsets[p]),
-            lists.particles.begin() + static_cast<std::ptrdiff_t>(lists.offsets[p + 1]));
-        ASSERT_EQ(found, expected) << "dim " << dim << " point " << p;
+    for (auto shape : {SupportShape::box, SupportShape::sphere})
+      for (const auto& dilation : dilations) {
+        GeneratorSpec spec;
+        spec.dimension = dim;
+        spec.element = dim == 2 ? CellType::quad4 : CellType::hex8;
+        spec.cells = {9, 7, 5};
+        spec.upper = {1, 1, 1};
+        spec.perturbation = 0.3;
+        SectionSpec section;
+        section.dilation = dilation;
+        section.support = shape;
+        auto cloud = test::mesh_cloud(generate_mesh(spec), section);
+        // Shuffle the global ids so that cloud order and id order differ.
+        std::reverse(cloud.mesh_node.begin(), cloud.mesh_node.end());
+        const auto points = test::random_points(dim, {-0.1, -0.1, -0.1}, {1.1, 1.1, 1.1}, 400, 11);
+        const auto lists = find_neighbors(cloud, points.data(), 400);
+        ASSERT_EQ(lists.point_count(), 400u);
+        for (std::size_t p = 0; p < 400; ++p) {
+          const double* x = points.data() + p * static_cast<std::size_t>(dim);
+          std::vector<LocalIndex> expected;
+          for (std::size_t i = 0; i < cloud.size(); ++i)
+            if (inside_support(shape == SupportShape::sphere, dim, cloud.x(i), cloud.a(i), x))
+              expected.push_back(static_cast<LocalIndex>(i));
+          std::sort(expected.begin(), expected.end(), [&](LocalIndex a, LocalIndex b) {
+            return cloud.mesh_node[static_cast<std::size_t>(a)] <
+                   cloud.mesh_node[static_cast<std::size_t>(b)];
+          });
+          const std::vector<LocalIndex> found(
+              lists.particles.begin() + static_cast<std::ptrdiff_t>(lists.offsets[p]),
+              lists.particles.begin() + static_cast<std::ptrdiff_t>(lists.offsets[p + 1]));
+          ASSERT_EQ(found, expected) << "dim " << dim << " point " << p;
+        }
       }
-    }
 }
 
 TEST(NeighborSearch, EmptyCloudAndNoPoints) {
