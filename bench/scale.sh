@@ -1,0 +1,83 @@
+#!/usr/bin/env bash
+# Memory and setup at scale (issue 20): the explicit 3D cantilever block of input/block_explicit.yaml
+# (hex8 cells of aspect 1, box supports of dilation 1.2, SCNI, linear elastic steel) at about
+# 1e4, 1e5 and 1e6 particles, 100 explicit steps each, and the same block with an implicit stage
+# (the stiffness matrix and its preconditioner) at 1e4 (at 1.1e5 particles, 332,928 dofs, the
+# default multigrid ran 500 GMRES iterations per Newton iteration and the run took over 20 min). Prints, per run, the bytes per
+# particle the run keeps (the log's memory account, all phases) and its high-water mark, the
+# setup time (scene, partition, search, shape functions and integration points) and the time
+# per explicit step, and setup in explicit steps (issue 20's target: 3). Runs longer than
+# EFG_BENCH_TIMEOUT seconds (default 1200) are stopped. Not part of the test suite.
+#   bench/scale.sh [--max-particles N]     default 1100000 (the 1e6 run needs about 6 GB, 4 min)
+set -euo pipefail
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+"$here/scripts/setup.sh" >/dev/null
+efg="${EFG_BUILD_DIR:-$here/build}/efg"
+limit="${EFG_BENCH_TIMEOUT:-1200}"
+max=1100000
+if [ "${1:-}" = "--max-particles" ]; then max="$2"; fi
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+
+# scene OUT NX DRIVER: the block with NX x NX/5*... cells (10 x 3.5 x 3.5, cells of edge 10/NX).
+scene() {
+  /usr/bin/python3 - "$here/input/block_explicit.yaml" "$1" "$2" "$3" <<'PY'
+import sys
+src, out, nx, driver = sys.argv[1], sys.argv[2], int(sys.argv[3]), sys.argv[4]
+s = open(src).read()
+ny = max(1, round(nx * 0.35))
+h = 10.0 / nx
+s = s.replace("upper: [10, 2, 2], cells: [20, 4, 4]",
+              "upper: [10, %g, %g], cells: [%d, %d, %d]" % (ny * h, ny * h, nx, ny, ny))
+s = s.replace("dilation: 1.5", "dilation: 1.2")
+if driver == "explicit":
+    # dt is about 1.79e-7 h here (0.9 of the stable step): 100 steps.
+    s = s.replace("end_time: 2.0e-4, output_interval: 1.0e-5",
+                  "end_time: %g, output_interval: 1.0" % (100 * 1.79e-7 * h))
+else:
+    s = s.replace("driver: explicit, end_time: 2.0e-4, output_interval: 1.0e-5",
+                  "driver: implicit, end_time: 1.0")
+    s = s.replace("type: velocity", "type: displacement")
+open(out, "w").write(s)
+PY
+}
+
+row() {  # row NAME SCENE
+  local out="$work/out"
+  rm -rf "$out"
+  if timeout "$limit" "$efg" run "$2" -o "$out" >"$work/log" 2>&1; then
+    /usr/bin/python3 - "$out"/*.report.json "$1" "$work/log" <<'PY'
+import json, re, sys
+r = json.load(open(sys.argv[1]))
+ph = r["phase_seconds"]
+one = lambda v: max(v) if isinstance(v, list) else v
+setup = sum(one(ph.get(k, 0)) for k in ("scene and mesh", "partition (Zoltan2 RCB)",
+            "neighbour search (ghosts, particles)", "shape functions and integration"))
+n = r["particles"]
+kept = sum(p["bytes"] for p in r["memory_by_phase"]) / n
+peak = r["memory_high_water_bytes"] / n
+log = open(sys.argv[3]).read()
+m = re.search(r"stage '[^']*' done: (\d+) steps", log)
+steps = int(m.group(1)) if m and "explicit time steps" in ph else 0
+step_s = one(ph.get("explicit time steps", 0)) / steps if steps else 0
+ratio = "%.0f" % (setup / step_s) if step_s else ""
+print("| %s | %d | %.0f | %.0f | %.1f | %s | %s | %s |" % (
+    sys.argv[2], n, kept, peak, setup, steps or "", "%.3f" % step_s if step_s else "", ratio))
+PY
+  else
+    echo "| $1 | | (stopped or failed) | | > $limit | | | |"
+  fi
+}
+
+echo "| run | particles | kept B/particle | peak B/particle | setup s | steps | s/step | setup in steps |"
+echo "|---|---|---|---|---|---|---|---|"
+for nx in 43 95 200; do  # about 1.1e4, 1.1e5, 1.0e6 particles
+  particles=$(( (nx + 1) * ( $(/usr/bin/python3 -c "print(max(1, round($nx * 0.35)))") + 1 ) ** 2 ))
+  if [ "$particles" -gt "$max" ]; then continue; fi
+  scene "$work/explicit.yaml" "$nx" explicit
+  row "explicit, 100 steps" "$work/explicit.yaml"
+  if [ "$nx" -le 43 ]; then  # at 1.1e5 particles the default multigrid took > 20 min
+    scene "$work/implicit.yaml" "$nx" implicit
+    row "implicit (matrix + preconditioner)" "$work/implicit.yaml"
+  fi
+done
