@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include <algorithm>
+#include <array>
 
 #include "discretization/NeighborSearch.hpp"
 #include "support/Clouds.hpp"
@@ -63,6 +64,52 @@ TEST(NeighborSearch, MatchesBruteForceOrderedByGlobalId) {
           ASSERT_EQ(found, expected) << "dim " << dim << " point " << p;
         }
       }
+}
+
+// On a uniform grid at dilation 1.5, the centre of a cell lies half a spacing from its own
+// corners and exactly 1.5 spacings (the support's edge, weight zero) from the next particles
+// along each axis: 2^d neighbours by hand, whatever the round-off of the coordinates (spacing
+// 10/64, an offset origin: without the edge rule some centres found 3 per axis).
+TEST(NeighborSearch, PointsOnASupportsEdgeAreOutside) {
+  for (int dim : {2, 3}) {
+    GeneratorSpec spec;
+    spec.dimension = dim;
+    spec.element = dim == 2 ? CellType::quad4 : CellType::hex8;
+    spec.cells = {64, 22, 22};
+    spec.lower = {0.3, -1.7, 2.9};
+    spec.upper = {10.3, -1.7 + 22 * 10.0 / 64, 2.9 + 22 * 10.0 / 64};
+    SectionSpec section;
+    section.dilation = {1.5};
+    const auto mesh = generate_mesh(spec);
+    const auto cloud = test::mesh_cloud(mesh, section);
+    // Centres of the cells away from the boundary (two cells in), from their corners.
+    std::vector<double> centres;
+    const auto& block = mesh.blocks.front();
+    const auto npc = static_cast<std::size_t>(cell_node_count(block.type));
+    for (std::size_t c = 0; c < block.cell_count(); ++c) {
+      std::array<double, 3> x{0, 0, 0};
+      for (std::size_t a = 0; a < npc; ++a)
+        for (int d = 0; d < dim; ++d)
+          x[static_cast<std::size_t>(d)] +=
+              mesh.coordinates[static_cast<std::size_t>(block.connectivity[c * npc + a]) *
+                                   static_cast<std::size_t>(dim) +
+                               static_cast<std::size_t>(d)] /
+              static_cast<double>(npc);
+      bool interior = true;
+      for (int d = 0; d < dim; ++d) {
+        const auto k = static_cast<std::size_t>(d);
+        const double h = 10.0 / 64;
+        interior = interior && x[k] > spec.lower[k] + 2 * h && x[k] < spec.upper[k] - 2 * h;
+      }
+      if (interior) centres.insert(centres.end(), x.begin(), x.begin() + dim);
+    }
+    const std::size_t count = centres.size() / static_cast<std::size_t>(dim);
+    ASSERT_GT(count, 100u);
+    const auto lists = find_neighbors(cloud, centres.data(), count);
+    std::size_t wrong = 0;
+    for (std::size_t p = 0; p < count; ++p) wrong += lists.count(p) != (dim == 2 ? 4u : 8u);
+    EXPECT_EQ(wrong, 0u) << "of " << count << " cell centres in " << dim << "D";
+  }
 }
 
 TEST(NeighborSearch, EmptyCloudAndNoPoints) {
