@@ -39,7 +39,7 @@ SpecPtr stage_spec() {
                         "auto"),
            optional_key("direct_limit",
                         integer("Largest dof count that solver: auto factors directly; 0: the "
-                                "default (150000 in 2D, 12000 in 3D).")
+                                "default (150000 in 2D, 30000 in 3D).")
                             .at_least(0),
                         "0"),
            optional_key("residual_tolerance",

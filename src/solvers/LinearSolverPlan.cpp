@@ -61,10 +61,11 @@ std::string LinearSolverPlan::describe() const {
 
 // Direct factor times measured on this machine (docs/implicit.md; MUMPS, UMFPACK up to 1.9x
 // slower): 2D 0.33 s at 8.5k dofs, 1.8 s at 33k, 14 s at 132k (where multigrid did not converge
-// on the beam); 3D (UMFPACK) 3.4 s at 9.3k, 35 s at 31k dofs (multigrid: 22 s). Above these
-// limits multigrid is faster where it converges.
+// on the beam); 3D (MUMPS, the cantilever block, supports without their zero-weight edges):
+// Newton phase 1.2 s at 9.3k dofs (multigrid 1.8 s), 6.5-6.7 s at 31k (multigrid 6.9-7.2 s),
+// 26.7 s at 54k (multigrid 14.7 s). Above these limits multigrid is faster where it converges.
 std::int64_t default_direct_limit(int dimension) {
-  return dimension <= 2 ? 150000 : 12000;
+  return dimension <= 2 ? 150000 : 30000;
 }
 
 LinearSolverPlan plan_linear_solver(const std::string& solver, std::int64_t direct_limit,
