@@ -215,6 +215,21 @@ Teuchos::RCP<Tpetra::CrsMatrix<>> small_spd_matrix(int dimension) {
   return K;
 }
 
+// Node coordinates of small_spd_matrix (node i at x = i), one column per dimension, as the runs
+// hand them to multigrid: options that read them (MueLu's distance-Laplacian dropping) are then
+// checked like any other instead of failing for want of coordinates.
+Teuchos::RCP<Tpetra::MultiVector<>> small_matrix_coordinates(const Tpetra::CrsMatrix<>& K,
+                                                             int dimension) {
+  const auto nodes = K.getGlobalNumRows() / static_cast<std::size_t>(dimension);
+  auto map = Teuchos::rcp(new Tpetra::Map<>(nodes, 0, K.getRowMap()->getComm()));
+  auto x = Teuchos::rcp(new Tpetra::MultiVector<>(map, static_cast<std::size_t>(dimension)));
+  auto view = x->getLocalViewHost(Tpetra::Access::OverwriteAll);
+  for (std::size_t i = 0; i < view.extent(0); ++i)
+    for (std::size_t d = 0; d < view.extent(1); ++d)
+      view(i, d) = d == 0 ? static_cast<double>(map->getGlobalElement(static_cast<int>(i))) : 0.0;
+  return x;
+}
+
 void check_preconditioner(const LinearSolverPlan& plan, int dimension, const Locator& at) {
   if (plan.preconditioner == LinearSolverPlan::Preconditioner::none) return;
   const auto K = small_spd_matrix(dimension);
@@ -222,7 +237,8 @@ void check_preconditioner(const LinearSolverPlan& plan, int dimension, const Loc
   std::ostringstream swallowed;
   const SilencedOutput silence(swallowed);
   try {
-    auto prec = make_matrix_preconditioner(plan, K->getRowMap(), Teuchos::null, Teuchos::null);
+    auto prec = make_matrix_preconditioner(plan, K->getRowMap(), Teuchos::null,
+                                           small_matrix_coordinates(*K, dimension));
     prec->compute(K);
   } catch (const std::exception& e) {
     at.fail("preconditioner", {},
