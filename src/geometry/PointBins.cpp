@@ -48,18 +48,10 @@ PointBins::PointBins(const double* coords, std::size_t count, int dim, double bi
 
 bool PointBins::any_within(const double* x, double radius) const {
   const double r2 = radius * radius;
-  const auto dim = static_cast<std::size_t>(grid_.dim);
   bool found = false;
   grid_.for_each_bin_near(x, radius, [&](std::size_t b) {
-    for (auto p = start_[b]; p < start_[b + 1] && !found; ++p) {
-      const auto n = points_[p];
-      double d2 = 0;
-      for (std::size_t d = 0; d < dim; ++d) {
-        const double dx = coords_[n * dim + d] - x[d];
-        d2 += dx * dx;
-      }
-      found = d2 <= r2;
-    }
+    for (auto p = start_[b]; p < start_[b + 1] && !found; ++p)
+      found = distance2(points_[p], x) <= r2;
   });
   return found;
 }

@@ -29,6 +29,17 @@ class PointBins {
   const std::vector<std::size_t>& bin_points() const { return points_; }  ///< point indices by bin
 
  private:
+  /// Squared distance from point n to x.
+  double distance2(std::size_t n, const double* x) const {
+    const auto dim = static_cast<std::size_t>(grid_.dim);
+    double d2 = 0;
+    for (std::size_t d = 0; d < dim; ++d) {
+      const double dx = coords_[n * dim + d] - x[d];
+      d2 += dx * dx;
+    }
+    return d2;
+  }
+
   const double* coords_;
   BinGrid grid_;
   std::vector<std::size_t> start_;
@@ -38,17 +49,9 @@ class PointBins {
 template <class Visit>
 void PointBins::for_each_within(const double* x, double radius, Visit&& visit) const {
   const double r2 = radius * radius;
-  const auto dim = static_cast<std::size_t>(grid_.dim);
   grid_.for_each_bin_near(x, radius, [&](std::size_t b) {
-    for (auto p = start_[b]; p < start_[b + 1]; ++p) {
-      const auto n = points_[p];
-      double d2 = 0;
-      for (std::size_t d = 0; d < dim; ++d) {
-        const double dx = coords_[n * dim + d] - x[d];
-        d2 += dx * dx;
-      }
-      if (d2 <= r2) visit(n);
-    }
+    for (auto p = start_[b]; p < start_[b + 1]; ++p)
+      if (distance2(points_[p], x) <= r2) visit(points_[p]);
   });
 }
 
