@@ -4,7 +4,6 @@
 #include <array>
 
 #include "core/Errors.hpp"
-#include "discretization/CellOwner.hpp"
 #include "discretization/ShapeFunctions.hpp"
 #include "discretization/SmoothingFacets.hpp"
 
@@ -15,39 +14,57 @@ namespace {
 constexpr std::size_t kCellBatch = 2048;
 
 struct CellBoundary {
-  std::size_t cell = 0;
+  std::size_t group = 0, cell = 0;
   std::vector<SmoothingPoint> points;
 };
 
-}  // namespace
-
-std::vector<std::size_t> owned_cells(const BackgroundMesh& mesh, const PartSpec& part,
-                                     const std::vector<int>& owner, int rank) {
-  std::vector<std::size_t> cells;
-  std::size_t global_cell = 0;
-  for (const auto& b : mesh.blocks) {
-    const bool in_part =
-        std::find(part.blocks.begin(), part.blocks.end(), b.name) != part.blocks.end();
-    const auto npc = static_cast<std::size_t>(cell_node_count(b.type));
-    for (std::size_t c = 0; c < b.cell_count(); ++c, ++global_cell) {
-      if (!in_part) continue;
-      const auto* node = &b.connectivity[c * npc];
-      if (cell_owner(node, npc, owner) == rank) cells.push_back(global_cell);
-    }
-  }
-  return cells;
-}
-
-CellAverages cell_averages(const BackgroundMesh& mesh, const ParticleCloud& cloud,
-                           const std::vector<std::size_t>& cell_list) {
-  const auto dim = static_cast<std::size_t>(cloud.dimension);
-  std::vector<CellBoundary> cells;
-  for (const auto global_cell : cell_list) {
-    CellBoundary cb;
-    cb.cell = global_cell;
-    const auto [block, local] = mesh.locate_cell(global_cell);
+// The sides of a group's cells that no other cell of the group shares: (cell, side) pairs.
+std::vector<std::pair<std::size_t, int>> boundary_sides(const BackgroundMesh& mesh,
+                                                        const PressureCells& groups,
+                                                        std::size_t g) {
+  std::vector<std::pair<std::vector<LocalIndex>, std::pair<std::size_t, int>>> sides;
+  for (auto k = groups.offsets[g]; k < groups.offsets[g + 1]; ++k) {
+    const auto cell = groups.cells[k];
+    const auto [block, local] = mesh.locate_cell(cell);
     (void)local;
     for (int s = 0; s < cell_side_count(block->type); ++s) {
+      auto nodes = mesh.side_node_indices(cell, s);
+      std::sort(nodes.begin(), nodes.end());
+      sides.push_back({std::move(nodes), {cell, s}});
+    }
+  }
+  std::sort(sides.begin(), sides.end());
+  std::vector<std::pair<std::size_t, int>> out;
+  for (std::size_t k = 0; k < sides.size();) {
+    std::size_t end = k + 1;
+    while (end < sides.size() && sides[end].first == sides[k].first) ++end;
+    if (end - k == 1) out.push_back(sides[k].second);
+    k = end;
+  }
+  std::sort(out.begin(), out.end());  // cell and side order, as a single cell's
+  return out;
+}
+
+}  // namespace
+
+CellAverages cell_averages(const BackgroundMesh& mesh, const ParticleCloud& cloud,
+                           const PressureCells& groups, const std::vector<std::size_t>& list) {
+  const auto dim = static_cast<std::size_t>(cloud.dimension);
+  std::vector<CellBoundary> cells;
+  for (const auto g : list) {
+    CellBoundary cb;
+    cb.group = g;
+    cb.cell = groups.cells[groups.offsets[g]];
+    const bool single = groups.offsets[g + 1] - groups.offsets[g] == 1;
+    std::vector<std::pair<std::size_t, int>> sides;
+    if (single) {
+      const auto [block, local] = mesh.locate_cell(cb.cell);
+      (void)local;
+      for (int s = 0; s < cell_side_count(block->type); ++s) sides.push_back({cb.cell, s});
+    } else {
+      sides = boundary_sides(mesh, groups, g);
+    }
+    for (const auto& [global_cell, s] : sides) {
       const auto nodes = mesh.side_node_indices(global_cell, s);
       std::vector<std::array<double, 3>> x(nodes.size(), {0, 0, 0});
       for (std::size_t a = 0; a < nodes.size(); ++a)
@@ -92,8 +109,9 @@ CellAverages cell_averages(const BackgroundMesh& mesh, const ParticleCloud& clou
           centroid[d] += p.x[d] / static_cast<double>(cb.points.size());
         }
       if (!(volume > 0))
-        throw NumericalError("mixed u-p: background cell " + std::to_string(cb.cell + 1) +
-                             " has volume " + std::to_string(volume) + " <= 0");
+        throw NumericalError("mixed u-p: pressure cell of background cell " +
+                             std::to_string(cb.cell + 1) + " has volume " + std::to_string(volume) +
+                             " <= 0");
       std::vector<LocalIndex> row;
       for (const auto& p : cb.points) {
         for (auto k = phi.neighbors.offsets[point]; k < phi.neighbors.offsets[point + 1]; ++k) {
@@ -118,6 +136,7 @@ CellAverages cell_averages(const BackgroundMesh& mesh, const ParticleCloud& clou
         touched[k] = 0;
       }
       out.gradients.offsets.push_back(out.gradients.particles.size());
+      out.group.push_back(cb.group);
       out.cell.push_back(cb.cell);
       out.volume.push_back(volume);
       out.centroid.insert(out.centroid.end(), centroid.begin(),

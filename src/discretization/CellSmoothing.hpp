@@ -8,32 +8,31 @@
 // sum_I b_cI (x) X_I = I exactly (linear fields' divergence is exact on every cell) and
 // sum_c V_c b_cI = the boundary integral of phi_I n (interior sides cancel): the integration
 // constraint a constant pressure field needs to pass the patch test. The mixed u-p operator
-// (operators/MixedPressure) takes the cell's dilatation from these rows.
+// (operators/MixedPressure) takes the cell's dilatation from these rows. A pressure cell may be a
+// group of background cells (discretization/PressureCells): its boundary is then the sides of its
+// cells that no other cell of the group shares (the interior sides' terms cancel).
 #pragma once
 
 #include <vector>
 
 #include "discretization/IntegrationPoints.hpp"
+#include "discretization/PressureCells.hpp"
 
 namespace efg {
 
 struct CellAverages {
-  std::vector<std::size_t> cell;  ///< global cell index (mesh order over blocks)
-  std::vector<double> volume;     ///< V_c (area in 2D, without thickness)
-  std::vector<double> centroid;   ///< dimension per cell, for messages and output
-  CsrTable gradients;             ///< b_cI, dimension values per entry, one row per cell
+  std::vector<std::size_t> group;  ///< the pressure cell (index into PressureCells)
+  std::vector<std::size_t> cell;   ///< its lowest global cell (mesh order), its name in messages
+  std::vector<double> volume;      ///< V_c (area in 2D, without thickness)
+  std::vector<double> centroid;    ///< dimension per cell, for messages and output
+  CsrTable gradients;              ///< b_cI, dimension values per entry, one row per cell
 
   std::size_t size() const { return volume.size(); }
 };
 
-/// The cells of `part` that this rank owns (the owner of a cell's lowest node, as for Gauss
-/// points), in global cell order.
-std::vector<std::size_t> owned_cells(const BackgroundMesh& mesh, const PartSpec& part,
-                                     const std::vector<int>& owner, int rank);
-
-/// The rows of the given global cells, from the cloud's shape functions (owned and ghost
-/// particles; the cloud must reach every point of the cells).
+/// The rows of the given pressure cells (`list`: indices into `groups`), from the cloud's shape
+/// functions (owned and ghost particles; the cloud must reach every point of the groups).
 CellAverages cell_averages(const BackgroundMesh& mesh, const ParticleCloud& cloud,
-                           const std::vector<std::size_t>& cells);
+                           const PressureCells& groups, const std::vector<std::size_t>& list);
 
 }  // namespace efg

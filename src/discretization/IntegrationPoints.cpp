@@ -201,7 +201,7 @@ IntegrationPoints integrate_part(const BackgroundMesh& mesh, const PartSpec& par
   return ip;
 }
 
-double ghost_radius(const BackgroundMesh& mesh, const PartSpec& part) {
+double ghost_radius(const BackgroundMesh& mesh, const PartSpec& part, double group_diameter) {
   const auto a = support_sizes(mesh, part.blocks, part.section);
   const auto dim = static_cast<std::size_t>(mesh.dimension);
   double reach = 0;
@@ -230,8 +230,9 @@ double ghost_radius(const BackgroundMesh& mesh, const PartSpec& part) {
   }
   // Rows of ghost particles are assembled here and added on their owners, whose matrix columns
   // must hold every particle coupled to them: two supports apart (P and G share a point q when
-  // |q - X_P| < a_P and |q - X_G| < a_G). Hence 2 x reach, plus a cell for the points.
-  return 2 * reach + diameter;
+  // |q - X_P| < a_P and |q - X_G| < a_G). Hence 2 x reach, plus a cell (or a group of cells
+  // with one pressure) for the points.
+  return 2 * reach + std::max(diameter, group_diameter);
 }
 
 }  // namespace efg

@@ -46,7 +46,8 @@ IntegrationPoints integrate_part(const BackgroundMesh& mesh, const PartSpec& par
                                  int rank);
 
 /// Distance from an owned node within which every particle that can reach one of this rank's
-/// integration points lies: the largest support reach plus the largest cell diameter of the part.
-double ghost_radius(const BackgroundMesh& mesh, const PartSpec& part);
+/// integration points lies: twice the largest support reach plus the largest cell diameter of the
+/// part, or `group_diameter` when larger (the pressure cells of a mixed u-p part).
+double ghost_radius(const BackgroundMesh& mesh, const PartSpec& part, double group_diameter = 0);
 
 }  // namespace efg

@@ -11,10 +11,14 @@ PartDiscretization discretize_part(const BackgroundMesh& mesh, const PartSpec& p
                                    const NodePartition& partition) {
   PartDiscretization d;
   d.part = &part;
+  const bool mixed = part.formulation == PartFormulation::mixed_up;
+  if (mixed) d.pressure_cells = pressure_cells(mesh, part);
   {
     Teuchos::TimeMonitor timer(
         *Teuchos::TimeMonitor::getNewCounter("efg: neighbour search (ghosts, particles)"));
-    d.ghosts = ghost_layer(mesh, partition.owner, partition.rank, ghost_radius(mesh, part));
+    d.ghosts = ghost_layer(
+        mesh, partition.owner, partition.rank,
+        ghost_radius(mesh, part, mixed ? largest_group_diameter(mesh, d.pressure_cells) : 0.0));
     d.cloud = make_particle_cloud(mesh, part, partition.owner, partition.rank, d.ghosts);
   }
   Teuchos::TimeMonitor timer(
@@ -30,8 +34,9 @@ PartDiscretization discretize_part(const BackgroundMesh& mesh, const PartSpec& p
     d.particle_values = d.points.values;
     d.particle_gradients = d.points.gradients;
   }
-  if (part.formulation == PartFormulation::mixed_up)
-    d.cells = cell_averages(mesh, d.cloud, owned_cells(mesh, part, partition.owner, partition.rank));
+  if (mixed)
+    d.cells = cell_averages(mesh, d.cloud, d.pressure_cells,
+                            owned_groups(mesh, d.pressure_cells, partition.owner, partition.rank));
   return d;
 }
 

@@ -19,8 +19,10 @@ struct PartDiscretization {
   /// displacements u(X_J) = sum_I phi_I(X_J) d_I for output and essential conditions, and the
   /// gradients output strains come from (SCNI: the smoothed ones; Gauss: direct).
   CsrTable particle_values, particle_gradients;
-  /// formulation mixed_up: the cell-averaged gradients of the owned cells (the pressure cells);
-  /// empty otherwise (a displacement part builds no pressure data).
+  /// formulation mixed_up: the part's pressure cells (every group, on every rank) and the
+  /// averaged gradients of the owned ones; empty otherwise (a displacement part builds no
+  /// pressure data).
+  PressureCells pressure_cells;
   CellAverages cells;
 };
 

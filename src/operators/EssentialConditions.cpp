@@ -199,7 +199,8 @@ long long EssentialConditions::add_boundary_points(const Model& model, const Sol
     std::vector<SidePoint> pts;
     std::vector<double> beta;
     std::vector<std::size_t> cell_of;
-    std::map<std::size_t, CellAverages> cell_rows;  // mixed parts: the rows of the points' cells
+    // mixed parts: the rows of the pressure cells of the points' cells
+    std::map<std::size_t, CellAverages> cell_rows;
     const auto sides =
         node_set_sides(mesh, d.part->blocks, in_set, model.partition.owner, model.partition.rank);
     sides_found += sides.count;
@@ -250,10 +251,12 @@ long long EssentialConditions::add_boundary_points(const Model& model, const Sol
         b.grad.insert(b.grad.end(), v.grad.begin() + static_cast<std::ptrdiff_t>(k * udim),
                       v.grad.begin() + static_cast<std::ptrdiff_t>((k + 1) * udim));
       }
-      if (law.mixed()) {  // each cell's row once, for all its boundary points
-        auto row = cell_rows.find(cell_of[q]);
+      if (law.mixed()) {  // each pressure cell's row once, for all its boundary points
+        const std::size_t group = d.pressure_cells.group[cell_of[q]];
+        auto row = cell_rows.find(group);
         if (row == cell_rows.end())
-          row = cell_rows.emplace(cell_of[q], cell_averages(mesh, d.cloud, {cell_of[q]})).first;
+          row = cell_rows.emplace(group, cell_averages(mesh, d.cloud, d.pressure_cells, {group}))
+                    .first;
         b.cell_pressure =
             attach_cell_pressure(row->second, d, op.overlap_node(p), law, b.nodes, b.phi, b.grad);
       }

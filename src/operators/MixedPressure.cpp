@@ -5,6 +5,7 @@
 #include <Tpetra_Import.hpp>
 #include <Tpetra_MultiVector.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -258,14 +259,25 @@ std::vector<double> MixedPressure::particle_pressures(const Vector& d_overlap) c
   {
     auto o = overlap.getLocalViewHost(Tpetra::Access::ReadWrite);
     const auto& mesh = model_.mesh;
+    std::vector<LocalIndex> nodes;
     for (const auto& p : parts_) {
       const auto pressure = cell_pressures(p.model_part, d_overlap);
+      const auto& groups = model_.parts[p.model_part].pressure_cells;
+      const auto& cells = model_.parts[p.model_part].cells;
       for (std::size_t c = 0; c < pressure.size(); ++c) {
-        const auto [block, local] = mesh.locate_cell(p.cell[c]);
-        const auto npc = static_cast<std::size_t>(cell_node_count(block->type));
-        for (std::size_t a = 0; a < npc; ++a) {
-          const auto gid = static_cast<GlobalOrdinal>(block->connectivity[local * npc + a]);
-          const auto lid = maps.overlap_nodes->getLocalElement(gid);
+        // The nodes of the pressure cell's background cells, each once.
+        nodes.clear();
+        const auto g = cells.group[c];
+        for (auto k = groups.offsets[g]; k < groups.offsets[g + 1]; ++k) {
+          const auto [block, local] = mesh.locate_cell(groups.cells[k]);
+          const auto npc = static_cast<std::size_t>(cell_node_count(block->type));
+          nodes.insert(nodes.end(), &block->connectivity[local * npc],
+                       &block->connectivity[local * npc] + npc);
+        }
+        std::sort(nodes.begin(), nodes.end());
+        nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+        for (const auto node : nodes) {
+          const auto lid = maps.overlap_nodes->getLocalElement(static_cast<GlobalOrdinal>(node));
           if (lid == Teuchos::OrdinalTraits<int>::invalid())
             throw std::logic_error("mixed u-p: a cell's node is missing from the overlap map");
           o(static_cast<std::size_t>(lid), 0) += pressure[c] * p.volume[c];

@@ -1,12 +1,13 @@
-// Mixed u-p for nearly incompressible solids: a constant pressure per background cell,
-// condensed cell by cell (the cell pressure is local, so its equation is solved on the cell).
+// Mixed u-p for nearly incompressible solids: a constant pressure per pressure cell (a vertex
+// patch of background cells, or one background cell: discretization/PressureCells), condensed
+// cell by cell (the cell pressure is local, so its equation is solved on the cell).
 //
 // Small strain, Herrmann's functional with the deviatoric/volumetric split of the linear elastic
 // law (Hughes, "The Finite Element Method", 2000, sec. 4.4; Simo & Hughes 1998, sec. 4.2):
 //
 //   Pi(u, p) = integral mu dev eps : dev eps + integral p div u - integral p^2 / (2 kappa) - W_ext,
 //
-// with u^h meshfree and p^h constant on each background cell c. Stationarity in p_c gives
+// with u^h meshfree and p^h constant on each pressure cell c. Stationarity in p_c gives
 // p_c = kappa theta_c, theta_c = b_c . d the cell's average dilatation (discretization/
 // CellSmoothing), so the condensed internal force and tangent are
 //
@@ -68,7 +69,8 @@ class MixedPressure {
   /// theta_c of every owned cell of model part p (mixed), in CellAverages order.
   std::vector<double> cell_dilatations(std::size_t part, const Vector& d_overlap) const;
   /// Pressure at every owned particle (overlap order of the owned nodes; 0 for particles of no
-  /// mixed part): the volume-weighted mean of the pressures of the cells around it (collective).
+  /// mixed part): the volume-weighted mean of the pressures of the pressure cells around it
+  /// (those whose background cells hold it as a node; collective).
   std::vector<double> particle_pressures(const Vector& d_overlap) const;
   /// The same on the overlap nodes (owned then ghost particles), for interpolation with the
   /// shape functions of a point (probes): collective.

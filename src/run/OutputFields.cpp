@@ -77,8 +77,10 @@ std::vector<std::string> cell_columns(const std::vector<std::string>& fields) {
 
 std::vector<GlobalOrdinal> output_cells(const Model& model) {
   std::vector<GlobalOrdinal> cells;
-  for (const auto& part : model.parts)
-    for (auto c : part.cells.cell) cells.push_back(static_cast<GlobalOrdinal>(c));
+  for (const auto& part : model.parts)  // the background cells of each owned pressure cell
+    for (auto g : part.cells.group)
+      for (auto k = part.pressure_cells.offsets[g]; k < part.pressure_cells.offsets[g + 1]; ++k)
+        cells.push_back(static_cast<GlobalOrdinal>(part.pressure_cells.cells[k]));
   return cells;
 }
 
@@ -87,11 +89,17 @@ std::vector<std::vector<double>> cell_values(const Model& model, const MixedPres
   std::vector<std::vector<double>> columns;
   for (const auto& field : cell_columns(model.scene.output.fields)) {
     std::vector<double> values;
-    if (field == "cell_pressure" && mixed)  // the condensed pressure of each cell
+    if (field == "cell_pressure" && mixed)  // the condensed pressure, on each background cell
       for (std::size_t p = 0; p < model.parts.size(); ++p)
         if (mixed->mixed(p)) {
-          const auto cells = mixed->cell_pressures(p, d_overlap);
-          values.insert(values.end(), cells.begin(), cells.end());
+          const auto pressure = mixed->cell_pressures(p, d_overlap);
+          const auto& part = model.parts[p];
+          for (std::size_t c = 0; c < pressure.size(); ++c) {
+            const auto g = part.cells.group[c];
+            values.insert(values.end(),
+                          part.pressure_cells.offsets[g + 1] - part.pressure_cells.offsets[g],
+                          pressure[c]);
+          }
         }
     columns.push_back(std::move(values));
   }

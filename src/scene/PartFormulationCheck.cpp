@@ -17,7 +17,15 @@ void check_part_formulations(const Scene& scene) {
           "cell_pressure is the pressure of mixed_up parts; no part has formulation: mixed_up"));
   for (std::size_t i = 0; i < scene.parts.size(); ++i) {
     const auto& part = scene.parts[i];
-    if (part.formulation != PartFormulation::mixed_up) continue;
+    if (part.formulation != PartFormulation::mixed_up) {
+      if (const YAML::Node key = scene.document["parts"][i]["pressure_cells"]; key)
+        throw InputError(schema::located_message(
+            scene.file, key, "parts[" + std::to_string(i) + "].pressure_cells",
+            "pressure_cells chooses the pressure of a mixed_up part; part '" + part.name +
+                "' has formulation: displacement (expected formulation: mixed_up, or no "
+                "pressure_cells)"));
+      continue;
+    }
     const auto* material = scene.find_material(part.material);
     if (!material) continue;  // reported by the part's own check
     const auto path = "parts[" + std::to_string(i) + "].formulation";

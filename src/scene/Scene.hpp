@@ -26,6 +26,9 @@ enum class Formulation { small_strain, total_lagrangian };
 /// The fields of a part: displacement only, or displacement and a pressure per background cell
 /// (mixed u-p, statically condensed; operators/MixedPressure.hpp).
 enum class PartFormulation { displacement, mixed_up };
+/// What carries one pressure of a mixed_up part (discretization/PressureCells): a vertex patch of
+/// background cells, or each cell.
+enum class PressureCellChoice { cell, patch };
 
 /// A scene value that may vary over position and time: a number, or an expression of x, y, z (and
 /// t where the key allows it) compiled once (src/expressions).
@@ -75,6 +78,7 @@ struct PartSpec {
   double thickness = 1.0;
   bool plane_stress = false;
   PartFormulation formulation = PartFormulation::displacement;
+  PressureCellChoice pressure_cells = PressureCellChoice::cell;
   std::optional<ShellSpec> shell;  ///< a shell part (src/shells); empty: a solid
 };
 

@@ -155,6 +155,8 @@ class SceneBuilder {
     part.plane_stress = p["plane"].as<std::string>() == "stress";
     if (p["formulation"].as<std::string>() == "mixed_up")
       part.formulation = PartFormulation::mixed_up;
+    if (p["pressure_cells"].as<std::string>() == "patch")
+      part.pressure_cells = PressureCellChoice::patch;
     if (const auto& sh = p["shell"]; sh) {
       part.shell = ShellSpec{std::nullopt,
                              sh["thickness_points"].as<int>(),

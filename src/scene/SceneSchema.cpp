@@ -74,12 +74,23 @@ SpecPtr part_spec() {
       .optional("shell", shell_spec())
       .optional("formulation",
                 choice("Fields of the part: displacement only, or mixed_up: displacement and a "
-                       "constant pressure per background cell, condensed cell by cell (nearly "
-                       "incompressible solids, nu up to 0.5; linear_elastic at small strain, or "
-                       "neo_hookean at finite strain with U(J) = kappa/2 (ln J)^2 per cell; plane "
+                       "constant pressure per pressure cell (pressure_cells), condensed cell by "
+                       "cell (nearly incompressible solids, nu up to 0.5; linear_elastic or "
+                       "j2_plasticity at small strain, neo_hookean or j2_plasticity at finite "
+                       "strain with U(J) = kappa/2 (ln J)^2 per cell; plane "
                        "strain or 3D). See docs/mixed.md.",
                        {"displacement", "mixed_up"}),
-                "displacement");
+                "displacement")
+      .optional("pressure_cells",
+                choice("What carries one pressure of a mixed_up part: cell, one pressure per "
+                       "background cell (the default: the most accurate displacements and "
+                       "plastic collapse loads, but the spurious checkerboard mode of Q1/P0 "
+                       "elements), or patch, the background cells around an interior node "
+                       "(2 x 2 quads, 2 x 2 x 2 hexes: inf-sup stable, no spurious mode, smaller "
+                       "pressure errors; too few constraints for perfectly plastic flow). "
+                       "Displacement parts ignore it. See docs/mixed.md.",
+                       {"cell", "patch"}),
+                "cell");
 }
 
 SpecPtr material_spec() {

@@ -40,6 +40,7 @@ struct Case {
   int dim;
   const char* element;
   const char* method;
+  const char* pressure_cells = "cell";  ///< mixed_up parts: cell or patch
 };
 
 class Patch : public ::testing::TestWithParam<Case> {};
@@ -68,12 +69,15 @@ INSTANTIATE_TEST_SUITE_P(
 
 // Mixed u-p at nu = 0.4999 (operators/MixedPressure): the cell dilatations come from each cell's
 // boundary, so a linear field's is exact and a constant pressure balances to round-off; the
-// boundary points' tractions carry the cell pressure (transformation and Nitsche).
+// boundary points' tractions carry the cell pressure (transformation and Nitsche). The same with
+// one pressure per patch of cells (its outer boundary).
 class MixedPatch : public ::testing::TestWithParam<Case> {};
 
 TEST_P(MixedPatch, LinearFieldToRoundOffNearlyIncompressible) {
   const auto c = GetParam();
-  auto s = test::solve_static(patch_scene(c.dim, c.element, c.method, "", "0.4999", "mixed_up"));
+  const std::string formulation = std::string("mixed_up, pressure_cells: ") + c.pressure_cells;
+  auto s = test::solve_static(
+      patch_scene(c.dim, c.element, c.method, "", "0.4999", formulation.c_str()));
   ASSERT_NE(s.problem->operators().mixed(), nullptr);
   const auto exact = make_exact_solution(s.model->scene, c.dim);
   const auto e = error_norms(*s.model, s.problem->solid(), s.problem->operators().mixed(),
@@ -88,14 +92,17 @@ TEST_P(MixedPatch, LinearFieldToRoundOffNearlyIncompressible) {
   EXPECT_LT(residuals.back(), 1e-8 * residuals.front());
 }
 
-INSTANTIATE_TEST_SUITE_P(Methods, MixedPatch,
-                         ::testing::Values(Case{2, "quad4", "transformation"},
-                                           Case{2, "tri3", "transformation"},
-                                           Case{3, "hex8", "transformation"},
-                                           Case{2, "quad4", "nitsche"}, Case{3, "tet4", "nitsche"}),
-                         [](const auto& p) {
-                           return std::string(p.param.element) + "_" + p.param.method;
-                         });
+INSTANTIATE_TEST_SUITE_P(
+    Methods, MixedPatch,
+    ::testing::Values(Case{2, "quad4", "transformation"}, Case{2, "tri3", "transformation"},
+                      Case{3, "hex8", "transformation"}, Case{2, "quad4", "nitsche"},
+                      Case{3, "tet4", "nitsche"}, Case{2, "quad4", "transformation", "patch"},
+                      Case{2, "tri3", "transformation", "patch"},
+                      Case{3, "hex8", "transformation", "patch"},
+                      Case{2, "quad4", "nitsche", "patch"}, Case{3, "tet4", "nitsche", "patch"}),
+    [](const auto& p) {
+      return std::string(p.param.element) + "_" + p.param.method + "_" + p.param.pressure_cells;
+    });
 
 TEST(PatchPenalty, NotConsistentButErrorShrinksWithAlpha) {
   std::vector<double> errors;
