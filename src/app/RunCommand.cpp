@@ -10,12 +10,12 @@
 #include "app/Commands.hpp"
 #include "core/Errors.hpp"
 #include "core/Log.hpp"
-#include "run/RunSummary.hpp"
 #include "core/Threads.hpp"
 #include "core/Version.hpp"
 #include "model/Model.hpp"
 #include "run/OutputPaths.hpp"
 #include "run/RunChecks.hpp"
+#include "run/RunSummary.hpp"
 #include "run/Simulation.hpp"
 #include "scene/SceneEcho.hpp"
 
@@ -46,9 +46,10 @@ void log_discretization(const Model& model, const CommPtr& comm) {
                           static_cast<long long>(d.cloud.size() - d.cloud.owned_count)};
     long long global[4] = {0, 0, 0, 0};
     Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, 4, local, global);
-    const char* scheme = d.points.scheme == Integration::scni    ? "SCNI"
-                         : d.points.scheme == Integration::nodal ? "direct nodal"
-                                                                 : "Gauss";
+    const char* scheme = d.points.scheme == Integration::scni            ? "SCNI"
+                         : d.points.scheme == Integration::scni_subcells ? "SCNI subcell"
+                         : d.points.scheme == Integration::nodal         ? "direct nodal"
+                                                                         : "Gauss";
     std::ostringstream o;
     o << "part '" << d.part->name << "': " << global[0] << " particles, " << global[1] << " "
       << scheme << " integration points, "

@@ -24,7 +24,10 @@ PartDiscretization discretize_part(const BackgroundMesh& mesh, const PartSpec& p
   Teuchos::TimeMonitor timer(
       *Teuchos::TimeMonitor::getNewCounter("efg: shape functions and integration"));
   d.points = integrate_part(mesh, part, d.cloud, partition.owner, partition.rank);
-  if (part.section.integration == Integration::gauss) {
+  // Integration points that are not the particles' own (Gauss, SCNI subcells): the particles'
+  // tables by direct evaluation.
+  if (part.section.integration == Integration::gauss ||
+      part.section.integration == Integration::scni_subcells) {
     const auto v = evaluate_shape_functions(
         d.cloud, d.cloud.position.data(), d.cloud.owned_count, true,
         [&](std::size_t p) { return "particle " + std::to_string(d.cloud.mesh_node[p] + 1); });

@@ -7,7 +7,7 @@
 namespace efg {
 namespace {
 
-// One work item per owned particle L: sums sign * phi_I(x_p) * n_p over L's smoothing points p
+// One work item per domain L (an owned particle's, or a piece of it): sums sign * phi_I(x_p) * n_p over L's smoothing points p
 // (sign -1 where L is the point's `minus` side) into L's row, then divides by V_L.
 template <int Dim>
 struct SmoothedGradientKernel {
@@ -57,11 +57,11 @@ void run(const SmoothedGradientKernel<Dim>& kernel, std::size_t rows) {
 }  // namespace
 
 CsrTable smoothed_gradients(const ParticleCloud& cloud, const std::vector<SmoothingPoint>& points,
-                            const ShapeFunctionValues& phi, const std::vector<double>& volume,
-                            const std::vector<LocalIndex>& row_index, std::size_t first,
-                            std::size_t rows) {
+                            const ShapeFunctionValues& phi,
+                            const std::vector<LocalIndex>& row_index,
+                            const std::vector<double>& row_volume) {
   const auto dim = static_cast<std::size_t>(cloud.dimension);
-  const auto owned = rows;
+  const auto owned = row_volume.size();
   // Slots 2p and 2p + 1 name the particles on either side of point p; sides that are not rows
   // here go to a discarded column `owned` (= rows).
   std::vector<int> side(2 * points.size());
@@ -85,7 +85,6 @@ CsrTable smoothed_gradients(const ParticleCloud& cloud, const std::vector<Smooth
   table.offsets.assign(1, 0);
   std::vector<LocalIndex> row;
   std::vector<LocalIndex> row_gid;
-  std::vector<double> row_volume(owned);
   // Each particle appears in the lists of many of L's points (some 700 entries for 60 distinct
   // particles in 3D): marked on first sight, so only the distinct ones are sorted.
   std::vector<char> seen(cloud.size(), 0);
@@ -111,7 +110,6 @@ CsrTable smoothed_gradients(const ParticleCloud& cloud, const std::vector<Smooth
       row_gid.push_back(cloud.mesh_node[static_cast<std::size_t>(i)]);
     }
     table.offsets.push_back(table.particles.size());
-    row_volume[l] = volume[static_cast<std::size_t>(cloud.mesh_node[first + l])];
   }
 
   std::vector<double> normal(points.size() * dim);

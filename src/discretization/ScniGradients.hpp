@@ -1,6 +1,6 @@
 // The smoothed gradients of SCNI (Chen, Wu, Yoon, You 2001, eq. 25):
 //   B~_I(x_L) = 1/V_L * sum over the smoothing points p of Omega_L's boundary of phi_I(x_p) n_p w_p
-// for every owned particle L. The rows' particle sets (the union of the neighbours of L's
+// for every owned particle L (or every piece of its domain: integration scni_subcells). The rows' particle sets (the union of the neighbours of L's
 // smoothing points, ordered by global id) are built on the host; the sums run as a Kokkos kernel
 // with one work item per particle L that gathers its own points, so no two work items write the
 // same row and every sum runs in the same order (ascending smoothing point) on any number of
@@ -15,15 +15,16 @@
 
 namespace efg {
 
-/// Rows of B~ for the owned particles [first, first + rows) of the cloud: `points` holds every
-/// smoothing point on their domains' boundaries (others may be there too), `phi` the shape
-/// functions at them, `volume` the nodal domain volume of every mesh node, `row_index` the row
-/// (0 .. rows - 1) of every mesh node among them (-1 otherwise). Called on batches of particles
+/// Rows of B~ for `rows` smoothing domains: `points` holds every smoothing point on their
+/// boundaries (others may be there too; `plus` and `minus` name domains), `phi` the shape
+/// functions at them, `row_index` the row (0 .. rows - 1) of every domain id among them (-1
+/// otherwise) and `row_volume` the volume of each row's domain. SCNI's domains are the nodal
+/// domains of the owned particles (domain id = mesh node); Called on batches of domains
 /// (IntegrationPoints), so that the shape functions at the smoothing points, about ten times the
 /// size of the rows they make, are never held for a whole part at once.
 CsrTable smoothed_gradients(const ParticleCloud& cloud, const std::vector<SmoothingPoint>& points,
-                            const ShapeFunctionValues& phi, const std::vector<double>& volume,
-                            const std::vector<LocalIndex>& row_index, std::size_t first,
-                            std::size_t rows);
+                            const ShapeFunctionValues& phi,
+                            const std::vector<LocalIndex>& row_index,
+                            const std::vector<double>& row_volume);
 
 }  // namespace efg

@@ -113,12 +113,17 @@ std::map<std::vector<LocalIndex>, int> count_sides(const BackgroundMesh& mesh,
 
 std::vector<SmoothingPoint> smoothing_points(const BackgroundMesh& mesh,
                                              const std::vector<std::string>& blocks,
-                                             const std::vector<char>& node_wanted) {
+                                             const std::vector<char>& node_wanted,
+                                             std::vector<std::size_t>* cell_of_point,
+                                             bool every_side) {
   std::vector<SmoothingPoint> out;
+  std::size_t global_first = 0;
   Emitter emit(mesh.dimension, out);
   const auto dim = static_cast<std::size_t>(mesh.dimension);
   const auto side_count = count_sides(mesh, blocks);
   for (const auto& b : mesh.blocks) {
+    const std::size_t first_cell = global_first;
+    global_first += b.cell_count();
     if (std::find(blocks.begin(), blocks.end(), b.name) == blocks.end()) continue;
     const int npc = cell_node_count(b.type);
     const int nsides = cell_side_count(b.type);
@@ -182,7 +187,7 @@ std::vector<SmoothingPoint> smoothing_points(const BackgroundMesh& mesh,
         std::vector<LocalIndex> key;
         for (int k : sn) key.push_back(node[k]);
         std::sort(key.begin(), key.end());
-        if (side_count.at(key) != 1) continue;
+        if (!every_side && side_count.at(key) != 1) continue;
         std::vector<Vec> side_x;
         std::vector<LocalIndex> side_nodes;
         for (int k : sn) {
@@ -191,6 +196,7 @@ std::vector<SmoothingPoint> smoothing_points(const BackgroundMesh& mesh,
         }
         emit_side(emit, side_x, side_nodes);
       }
+      if (cell_of_point) cell_of_point->resize(out.size(), first_cell + c);
     }
   }
   return out;

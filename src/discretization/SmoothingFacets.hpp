@@ -25,13 +25,18 @@ struct SmoothingPoint {
 };
 
 /// Smoothing points of the cells of `blocks` for which `wanted(cell's nodes)` holds (all cells
-/// when empty), in a fixed order: cells in global order, facets in cell-topology order. 2D
+/// when empty), in a fixed order: cells in global order, facets in cell-topology order.
+/// `cell_of_point` (optional) receives each point's global cell; `every_side` emits every side of
+/// every cell, split among its nodes, not only the part's boundary (SCNI subcells: the sides
+/// separate the pieces of a nodal domain). 2D
 /// segments get 2 Gauss points; 3D facets are split into 4 triangles about their centre, one
 /// centroid point each (exact for the linear fields of the patch test, and the same points on
 /// every rank).
 std::vector<SmoothingPoint> smoothing_points(const BackgroundMesh& mesh,
                                              const std::vector<std::string>& blocks,
-                                             const std::vector<char>& node_wanted = {});
+                                             const std::vector<char>& node_wanted = {},
+                                             std::vector<std::size_t>* cell_of_point = nullptr,
+                                             bool every_side = false);
 
 /// The boundary part of the same rule for one side of a cell: the side split among its nodes,
 /// 2 Gauss points per half segment (2D) or 4 triangles per node's quarter (3D). `side_x` holds

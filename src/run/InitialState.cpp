@@ -75,10 +75,12 @@ std::optional<RestartRecord> read_initial_state(const Scene& scene, const Backgr
   for (std::size_t p = 0; p < scene.parts.size(); ++p) {
     if (!path_dependent(scene, scene.parts[p])) continue;
     history = true;
-    if (scene.parts[p].section.integration == Integration::gauss)
+    if (scene.parts[p].section.integration == Integration::gauss ||
+        scene.parts[p].section.integration == Integration::scni_subcells)
       fail(nullptr, "part '" + scene.parts[p].name +
-                        "' keeps a material history at Gauss points, which results files do not "
-                        "hold; expected a part integrated at its particles (scni or nodal)");
+                        "' keeps a material history at points other than its particles, which "
+                        "results files do not hold; expected a part integrated at its particles "
+                        "(scni or nodal)");
   }
   if (history) {
     const auto state = field_columns("material_state", mesh.dimension);

@@ -68,12 +68,13 @@ void check_plasticity_input(const Scene& s) {
     if (s.find_material(part.material)->model != "j2_plasticity") continue;
     const YAML::Node doc = s.document["parts"][i];
     // The history lives at the integration points; output reads it at the particle's own point,
-    // which Gauss integration does not have (a projection is not built yet).
-    if (part.section.integration == Integration::gauss)
+    // which Gauss and SCNI subcell integration do not have (a projection is not built yet).
+    if (part.section.integration == Integration::gauss ||
+        part.section.integration == Integration::scni_subcells)
       fail(s, doc["section"] ? doc["section"] : doc, "parts[" + std::to_string(i) + "].section",
            "part '" + part.name +
-               "' has a j2_plasticity material: expected integration scni or nodal (Gauss "
-               "integration is not available for path-dependent materials yet)");
+               "' has a j2_plasticity material: expected integration scni or nodal (Gauss and "
+               "scni_subcells integration are not available for path-dependent materials yet)");
   }
   // The transformation and Nitsche methods add the boundary traction -integral phi_I (P n) over
   // the constrained boundary (Wagner & Liu 2000; docs/boundary_conditions.md), evaluated at

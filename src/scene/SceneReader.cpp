@@ -194,10 +194,11 @@ class SceneBuilder {
         sec["spacing"].as<std::string>(),
         {{"cells", SpacingMeasure::cells}, {"neighbors", SpacingMeasure::neighbors}});
     out.per_part_support = sec["support_size"].as<std::string>() == "per_part";
-    out.integration =
-        enum_of<Integration>(sec["integration"].as<std::string>(), {{"scni", Integration::scni},
-                                                                    {"nodal", Integration::nodal},
-                                                                    {"gauss", Integration::gauss}});
+    out.integration = enum_of<Integration>(sec["integration"].as<std::string>(),
+                                           {{"scni", Integration::scni},
+                                            {"scni_subcells", Integration::scni_subcells},
+                                            {"nodal", Integration::nodal},
+                                            {"gauss", Integration::gauss}});
     out.gauss_order = sec["gauss_order"].as<int>();
     out.formulation = enum_of<Formulation>(sec["formulation"].as<std::string>(),
                                            {{"small_strain", Formulation::small_strain},

@@ -45,8 +45,12 @@ SpecPtr section_spec() {
       .optional(
           "integration",
           choice("Domain integration: stabilized conforming nodal integration (Chen et al. "
-                 "2001), direct nodal (unstable, for comparison) or Gauss on background cells.",
-                 {"scni", "nodal", "gauss"}),
+                 "2001); scni_subcells, SCNI with each nodal domain cut into its pieces by the "
+                 "background cells, one smoothed strain per piece (2^dim x the points; on "
+                 "irregular particles about 10x smaller energy errors, converging at rate 1; "
+                 "elastic and hyperelastic laws); direct nodal (unstable, for comparison); or "
+                 "Gauss on background cells. See docs/discretization.md.",
+                 {"scni", "scni_subcells", "nodal", "gauss"}),
           "scni")
       .optional("gauss_order",
                 integer("Gauss points per direction (integration: gauss).").at_least(1).at_most(6),

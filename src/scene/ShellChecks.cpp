@@ -134,7 +134,8 @@ void check_shell_scene(const Scene& s, const BackgroundMesh& mesh) {
              "material '" + material.name + "' of shell part '" + part.name +
                  "' has a failure_strain: erosion of shells is not built yet");
     }
-    if (part.section.integration == Integration::gauss)
+    if (part.section.integration == Integration::gauss ||
+        part.section.integration == Integration::scni_subcells)
       fail(s, pd["section"]["integration"], path + ".section.integration",
            "shells are integrated at the particles: expected scni or nodal");
     if (part.section.formulation != s.parts.front().section.formulation)

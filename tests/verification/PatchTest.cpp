@@ -14,13 +14,15 @@ namespace {
 
 std::string patch_scene(int dim, const char* element, const char* method,
                         const std::string& extra_bc = "", const char* nu = "0.3",
-                        const char* formulation = "displacement") {
+                        const char* formulation = "displacement",
+                        const char* integration = "scni") {
   std::ostringstream s;
   s << "mesh:\n  generate: {element: " << element
     << ", lower: " << (dim == 2 ? "[0, 0]" : "[0, 0, 0]")
     << ", upper: " << (dim == 2 ? "[2, 1]" : "[2, 1, 1]")
     << ", cells: " << (dim == 2 ? "[8, 4]" : "[4, 2, 2]") << ", perturbation: 0.3, seed: 5}\n"
-    << "parts:\n  - {name: body, blocks: [block_1], material: m, section: {dilation: 1.8}, "
+    << "parts:\n  - {name: body, blocks: [block_1], material: m, section: {dilation: 1.8, "
+    << "integration: " << integration << "}, "
     << "formulation: " << formulation << "}\n"
     << "materials:\n  - {name: m, model: linear_elastic, youngs_modulus: 200, poissons_ratio: "
     << nu << "}\n"
@@ -41,13 +43,20 @@ struct Case {
   const char* element;
   const char* method;
   const char* pressure_cells = "cell";  ///< mixed_up parts: cell or patch
+  const char* integration = "scni";
 };
+
+std::string case_name(const ::testing::TestParamInfo<Case>& p) {
+  return std::string(p.param.element) + "_" + p.param.method + "_" + p.param.pressure_cells + "_" +
+         p.param.integration;
+}
 
 class Patch : public ::testing::TestWithParam<Case> {};
 
 TEST_P(Patch, LinearFieldToRoundOff) {
   const auto c = GetParam();
-  auto s = test::solve_static(patch_scene(c.dim, c.element, c.method));
+  auto s = test::solve_static(
+      patch_scene(c.dim, c.element, c.method, "", "0.3", "displacement", c.integration));
   // A displacement part builds no pressure data at all (cells, operator).
   EXPECT_EQ(s.problem->operators().mixed(), nullptr);
   EXPECT_EQ(s.model->parts[0].cells.size(), 0u);
@@ -64,8 +73,15 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(Case{2, "quad4", "transformation"}, Case{2, "tri3", "transformation"},
                       Case{3, "hex8", "transformation"}, Case{3, "tet4", "transformation"},
                       Case{2, "quad4", "nitsche"}, Case{3, "hex8", "nitsche"},
-                      Case{3, "wedge6", "nitsche"}),
-    [](const auto& p) { return std::string(p.param.element) + "_" + p.param.method; });
+                      Case{3, "wedge6", "nitsche"},
+                      // SCNI subcells: every piece of a nodal domain passes on its own
+                      Case{2, "quad4", "transformation", "cell", "scni_subcells"},
+                      Case{2, "tri3", "transformation", "cell", "scni_subcells"},
+                      Case{3, "hex8", "transformation", "cell", "scni_subcells"},
+                      Case{3, "tet4", "transformation", "cell", "scni_subcells"},
+                      Case{2, "quad4", "nitsche", "cell", "scni_subcells"},
+                      Case{3, "wedge6", "nitsche", "cell", "scni_subcells"}),
+    case_name);
 
 // Mixed u-p at nu = 0.4999 (operators/MixedPressure): the cell dilatations come from each cell's
 // boundary, so a linear field's is exact and a constant pressure balances to round-off; the
@@ -77,7 +93,7 @@ TEST_P(MixedPatch, LinearFieldToRoundOffNearlyIncompressible) {
   const auto c = GetParam();
   const std::string formulation = std::string("mixed_up, pressure_cells: ") + c.pressure_cells;
   auto s = test::solve_static(
-      patch_scene(c.dim, c.element, c.method, "", "0.4999", formulation.c_str()));
+      patch_scene(c.dim, c.element, c.method, "", "0.4999", formulation.c_str(), c.integration));
   ASSERT_NE(s.problem->operators().mixed(), nullptr);
   const auto exact = make_exact_solution(s.model->scene, c.dim);
   const auto e = error_norms(*s.model, s.problem->solid(), s.problem->operators().mixed(),
@@ -99,10 +115,10 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{3, "tet4", "nitsche"}, Case{2, "quad4", "transformation", "patch"},
                       Case{2, "tri3", "transformation", "patch"},
                       Case{3, "hex8", "transformation", "patch"},
-                      Case{2, "quad4", "nitsche", "patch"}, Case{3, "tet4", "nitsche", "patch"}),
-    [](const auto& p) {
-      return std::string(p.param.element) + "_" + p.param.method + "_" + p.param.pressure_cells;
-    });
+                      Case{2, "quad4", "nitsche", "patch"}, Case{3, "tet4", "nitsche", "patch"},
+                      Case{2, "quad4", "transformation", "patch", "scni_subcells"},
+                      Case{3, "hex8", "nitsche", "patch", "scni_subcells"}),
+    case_name);
 
 TEST(PatchPenalty, NotConsistentButErrorShrinksWithAlpha) {
   std::vector<double> errors;
