@@ -21,6 +21,15 @@ namespace {
 // Particles whose SCNI rows are built together (see build_scni).
 constexpr std::size_t kScniBatch = 2048;
 
+// Appends the rows of `rows` (a batch's) to `table`.
+void append_rows(const CsrTable& rows, CsrTable& table) {
+  const auto base = table.particles.size();
+  table.particles.insert(table.particles.end(), rows.particles.begin(), rows.particles.end());
+  table.values.insert(table.values.end(), rows.values.begin(), rows.values.end());
+  for (std::size_t l = 1; l < rows.offsets.size(); ++l)
+    table.offsets.push_back(base + rows.offsets[l]);
+}
+
 // Points at particle positions (SCNI and nodal): the owned particles of the cloud.
 void add_nodal_points(const ParticleCloud& cloud, IntegrationPoints& ip) {
   const auto dim = static_cast<std::size_t>(cloud.dimension);
@@ -163,13 +172,7 @@ void build_scni_subcells(const BackgroundMesh& mesh, const PartSpec& part,
     std::vector<LocalIndex> identity(pieces.size());
     for (std::size_t k = 0; k < pieces.size(); ++k) identity[k] = static_cast<LocalIndex>(k);
     const auto rows_here = smoothed_gradients(cloud, batch, phi, identity, volume);
-    const auto base = ip.gradients.particles.size();
-    ip.gradients.particles.insert(ip.gradients.particles.end(), rows_here.particles.begin(),
-                                  rows_here.particles.end());
-    ip.gradients.values.insert(ip.gradients.values.end(), rows_here.values.begin(),
-                               rows_here.values.end());
-    for (std::size_t l = 1; l < rows_here.offsets.size(); ++l)
-      ip.gradients.offsets.push_back(base + rows_here.offsets[l]);
+    append_rows(rows_here, ip.gradients);
     for (std::size_t k = 0; k < pieces.size(); ++k) {
       const auto i = first + static_cast<std::size_t>(pieces[k].first);
       ip.x.insert(ip.x.end(), cloud.x(i), cloud.x(i) + dim);
@@ -231,13 +234,7 @@ void build_scni(const BackgroundMesh& mesh, const PartSpec& part, const Particle
     for (std::size_t l = 0; l < rows; ++l)
       row_volume[l] = volume[static_cast<std::size_t>(cloud.mesh_node[first + l])];
     const auto rows_here = smoothed_gradients(cloud, batch, phi, row_index, row_volume);
-    const auto base = ip.gradients.particles.size();
-    ip.gradients.particles.insert(ip.gradients.particles.end(), rows_here.particles.begin(),
-                                  rows_here.particles.end());
-    ip.gradients.values.insert(ip.gradients.values.end(), rows_here.values.begin(),
-                               rows_here.values.end());
-    for (std::size_t l = 1; l < rows_here.offsets.size(); ++l)
-      ip.gradients.offsets.push_back(base + rows_here.offsets[l]);
+    append_rows(rows_here, ip.gradients);
     for (std::size_t l = 0; l < rows; ++l)
       row_index[static_cast<std::size_t>(cloud.mesh_node[first + l])] = -1;
   }
