@@ -1,13 +1,13 @@
 // The pressure cells of a mixed u-p part: the groups of background cells that carry one constant
 // pressure each (operators/MixedPressure).
 //
-// `cell` (default): one pressure per background cell. With the meshfree displacement this is the pairing of
-// Q1/P0 finite elements, and it shares their spurious checkerboard mode (the inf-sup test finds
-// an eigenvalue of 1e-5..1e-3 whose eigenvector alternates cell by cell): an implicit solve does
-// not excite it, a sudden impact does (docs/mixed.md).
+// `cell` (default): one pressure per background cell. With the meshfree displacement this is the
+// pairing of Q1/P0 finite elements, and it shares their spurious checkerboard mode (the inf-sup
+// test finds an eigenvalue of 1e-5..1e-3 whose eigenvector alternates cell by cell): an implicit
+// solve does not excite it, a sudden impact does (docs/mixed.md).
 //
-// `patch`: one pressure per vertex patch, the cells around an interior node of the
-// part, chosen greedily in node order (2 x 2 cells on a structured quad mesh, 2 x 2 x 2 on a hex
+// `patch`: one pressure per vertex patch, the cells around an interior node of the part, chosen
+// greedily in node order (2 x 2 cells on a structured quad mesh, 2 x 2 x 2 on a hex
 // mesh). It is the macro-element remedy of Q1/P0 (Stenberg 1990, "Error analysis of some finite
 // element methods for the Stokes problem", Math. Comp. 54; Brezzi & Fortin 1991, ch. VI): on a
 // patch the alternating mode has no dilatation to hide in, and the inf-sup constant stays bounded
@@ -17,7 +17,7 @@
 // The price is a constraint count 2^dim times lower: what the deviatoric stiffness does not
 // control (perfectly plastic flow) may deform within a patch at constant patch volume, and the
 // cell constraints' side effect of steadying SCNI on irregular particles is lost (docs/mixed.md
-// measures both); hence `cell` stays the default.
+// measures both; integration scni_subcells restores the latter); hence `cell` stays the default.
 //
 // Every rank groups the replicated mesh alike; a group belongs to the owner of its lowest node.
 #pragma once
