@@ -4,6 +4,7 @@
 #include <array>
 
 #include "core/Errors.hpp"
+#include "discretization/CellSides.hpp"
 #include "discretization/ShapeFunctions.hpp"
 #include "discretization/SmoothingFacets.hpp"
 
@@ -18,33 +19,6 @@ struct CellBoundary {
   std::vector<SmoothingPoint> points;
 };
 
-// The sides of a group's cells that no other cell of the group shares: (cell, side) pairs.
-std::vector<std::pair<std::size_t, int>> boundary_sides(const BackgroundMesh& mesh,
-                                                        const PressureCells& groups,
-                                                        std::size_t g) {
-  std::vector<std::pair<std::vector<LocalIndex>, std::pair<std::size_t, int>>> sides;
-  for (auto k = groups.offsets[g]; k < groups.offsets[g + 1]; ++k) {
-    const auto cell = groups.cells[k];
-    const auto [block, local] = mesh.locate_cell(cell);
-    (void)local;
-    for (int s = 0; s < cell_side_count(block->type); ++s) {
-      auto nodes = mesh.side_node_indices(cell, s);
-      std::sort(nodes.begin(), nodes.end());
-      sides.push_back({std::move(nodes), {cell, s}});
-    }
-  }
-  std::sort(sides.begin(), sides.end());
-  std::vector<std::pair<std::size_t, int>> out;
-  for (std::size_t k = 0; k < sides.size();) {
-    std::size_t end = k + 1;
-    while (end < sides.size() && sides[end].first == sides[k].first) ++end;
-    if (end - k == 1) out.push_back(sides[k].second);
-    k = end;
-  }
-  std::sort(out.begin(), out.end());  // cell and side order, as a single cell's
-  return out;
-}
-
 }  // namespace
 
 CellAverages cell_averages(const BackgroundMesh& mesh, const ParticleCloud& cloud,
@@ -55,15 +29,10 @@ CellAverages cell_averages(const BackgroundMesh& mesh, const ParticleCloud& clou
     CellBoundary cb;
     cb.group = g;
     cb.cell = groups.cells[groups.offsets[g]];
-    const bool single = groups.offsets[g + 1] - groups.offsets[g] == 1;
-    std::vector<std::pair<std::size_t, int>> sides;
-    if (single) {
-      const auto [block, local] = mesh.locate_cell(cb.cell);
-      (void)local;
-      for (int s = 0; s < cell_side_count(block->type); ++s) sides.push_back({cb.cell, s});
-    } else {
-      sides = boundary_sides(mesh, groups, g);
-    }
+    // The group's outer sides (a single cell's: all of them, in side order).
+    const auto first = groups.cells.begin() + static_cast<std::ptrdiff_t>(groups.offsets[g]);
+    const auto last = groups.cells.begin() + static_cast<std::ptrdiff_t>(groups.offsets[g + 1]);
+    const auto sides = outer_sides(mesh, std::vector<std::size_t>(first, last));
     for (const auto& [global_cell, s] : sides) {
       const auto nodes = mesh.side_node_indices(global_cell, s);
       std::vector<std::array<double, 3>> x(nodes.size(), {0, 0, 0});

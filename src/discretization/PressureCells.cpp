@@ -1,25 +1,13 @@
 #include "discretization/PressureCells.hpp"
 
+#include "discretization/CellSides.hpp"
+
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <limits>
 
 namespace efg {
 namespace {
-
-// The part's cells in ascending global order.
-std::vector<std::size_t> part_cells(const BackgroundMesh& mesh, const PartSpec& part) {
-  std::vector<std::size_t> cells;
-  std::size_t global_cell = 0;
-  for (const auto& b : mesh.blocks) {
-    const bool in_part =
-        std::find(part.blocks.begin(), part.blocks.end(), b.name) != part.blocks.end();
-    for (std::size_t c = 0; c < b.cell_count(); ++c, ++global_cell)
-      if (in_part) cells.push_back(global_cell);
-  }
-  return cells;
-}
 
 const LocalIndex* cell_nodes(const BackgroundMesh& mesh, std::size_t cell, std::size_t& count) {
   const auto [block, local] = mesh.locate_cell(cell);
@@ -35,41 +23,20 @@ struct Adjacency {
 };
 
 Adjacency adjacency(const BackgroundMesh& mesh, const std::vector<std::size_t>& cells) {
-  struct Side {
-    std::array<LocalIndex, 4> key;  // sorted nodes, padded with -1
-    std::uint32_t cell;
-  };
-  std::vector<Side> sides;
-  for (std::size_t i = 0; i < cells.size(); ++i) {
-    const auto [block, local] = mesh.locate_cell(cells[i]);
-    (void)local;
-    for (int s = 0; s < cell_side_count(block->type); ++s) {
-      auto nodes = mesh.side_node_indices(cells[i], s);
-      std::sort(nodes.begin(), nodes.end());
-      Side side{{-1, -1, -1, -1}, static_cast<std::uint32_t>(i)};
-      std::copy(nodes.begin(), nodes.end(), side.key.begin());
-      sides.push_back(side);
-    }
-  }
-  std::sort(sides.begin(), sides.end(), [](const Side& a, const Side& b) {
-    return a.key != b.key ? a.key < b.key : a.cell < b.cell;
-  });
+  const auto sides = matched_sides(mesh, cells);
   Adjacency out;
   out.neighbours.resize(cells.size());
   out.on_boundary.assign(mesh.node_count(), 0);
-  for (std::size_t k = 0; k < sides.size();) {
-    std::size_t end = k + 1;
-    while (end < sides.size() && sides[end].key == sides[k].key) ++end;
-    if (end - k == 1) {
-      for (auto n : sides[k].key)
+  for_each_shared_key(sides, [&](std::size_t first, std::size_t last) {
+    if (last - first == 1) {
+      for (auto n : sides[first].key)
         if (n >= 0) out.on_boundary[static_cast<std::size_t>(n)] = 1;
-    } else {
-      for (std::size_t a = k; a < end; ++a)
-        for (std::size_t b = k; b < end; ++b)
-          if (a != b) out.neighbours[sides[a].cell].push_back(sides[b].cell);
+      return;
     }
-    k = end;
-  }
+    for (std::size_t a = first; a < last; ++a)
+      for (std::size_t b = first; b < last; ++b)
+        if (a != b) out.neighbours[sides[a].cell].push_back(sides[b].cell);
+  });
   return out;
 }
 
@@ -93,7 +60,7 @@ PressureCells collect(const BackgroundMesh& mesh, const std::vector<std::size_t>
 }  // namespace
 
 PressureCells single_cells(const BackgroundMesh& mesh, const PartSpec& part) {
-  const auto cells = part_cells(mesh, part);
+  const auto cells = cells_of_blocks(mesh, part.blocks);
   std::vector<std::vector<std::uint32_t>> groups(cells.size());
   for (std::size_t i = 0; i < cells.size(); ++i) groups[i] = {static_cast<std::uint32_t>(i)};
   return collect(mesh, cells, std::move(groups));
@@ -101,7 +68,7 @@ PressureCells single_cells(const BackgroundMesh& mesh, const PartSpec& part) {
 
 PressureCells pressure_cells(const BackgroundMesh& mesh, const PartSpec& part) {
   if (part.pressure_cells == PressureCellChoice::cell) return single_cells(mesh, part);
-  const auto cells = part_cells(mesh, part);
+  const auto cells = cells_of_blocks(mesh, part.blocks);
   const auto adj = adjacency(mesh, cells);
   // The cells around each node.
   std::vector<std::size_t> start(mesh.node_count() + 1, 0);

@@ -1,5 +1,7 @@
 #include "discretization/SmoothingFacets.hpp"
 
+#include "discretization/CellSides.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -90,25 +92,6 @@ void emit_side(Emitter& emit, const std::vector<Vec>& x, const std::vector<Local
   }
 }
 
-// Sides of the blocks not shared with another cell of the blocks: the part's boundary.
-std::map<std::vector<LocalIndex>, int> count_sides(const BackgroundMesh& mesh,
-                                                   const std::vector<std::string>& blocks) {
-  std::map<std::vector<LocalIndex>, int> count;
-  for (const auto& b : mesh.blocks) {
-    if (std::find(blocks.begin(), blocks.end(), b.name) == blocks.end()) continue;
-    const auto npc = static_cast<std::size_t>(cell_node_count(b.type));
-    for (std::size_t c = 0; c < b.cell_count(); ++c)
-      for (int s = 0; s < cell_side_count(b.type); ++s) {
-        std::vector<LocalIndex> key;
-        for (int a : cell_side_nodes(b.type, s))
-          key.push_back(b.connectivity[c * npc + static_cast<std::size_t>(a)]);
-        std::sort(key.begin(), key.end());
-        ++count[key];
-      }
-  }
-  return count;
-}
-
 }  // namespace
 
 std::vector<SmoothingPoint> smoothing_points(const BackgroundMesh& mesh,
@@ -120,7 +103,9 @@ std::vector<SmoothingPoint> smoothing_points(const BackgroundMesh& mesh,
   std::size_t global_first = 0;
   Emitter emit(mesh.dimension, out);
   const auto dim = static_cast<std::size_t>(mesh.dimension);
-  const auto side_count = count_sides(mesh, blocks);
+  // The part's boundary sides, (global cell, side) ascending.
+  const auto outer = every_side ? std::vector<std::pair<std::size_t, int>>{}
+                                : outer_sides(mesh, cells_of_blocks(mesh, blocks));
   for (const auto& b : mesh.blocks) {
     const std::size_t first_cell = global_first;
     global_first += b.cell_count();
@@ -184,10 +169,9 @@ std::vector<SmoothingPoint> smoothing_points(const BackgroundMesh& mesh,
       // that the right-hand normal points out of the cell.
       for (int s = 0; s < nsides; ++s) {
         const auto sn = cell_side_nodes(b.type, s);
-        std::vector<LocalIndex> key;
-        for (int k : sn) key.push_back(node[k]);
-        std::sort(key.begin(), key.end());
-        if (!every_side && side_count.at(key) != 1) continue;
+        if (!every_side &&
+            !std::binary_search(outer.begin(), outer.end(), std::make_pair(first_cell + c, s)))
+          continue;
         std::vector<Vec> side_x;
         std::vector<LocalIndex> side_nodes;
         for (int k : sn) {
@@ -204,24 +188,7 @@ std::vector<SmoothingPoint> smoothing_points(const BackgroundMesh& mesh,
 
 std::vector<std::pair<std::size_t, int>> boundary_sides(const BackgroundMesh& mesh,
                                                         const std::vector<std::string>& blocks) {
-  const auto count = count_sides(mesh, blocks);
-  std::vector<std::pair<std::size_t, int>> sides;
-  std::size_t global = 0;
-  for (const auto& b : mesh.blocks) {
-    const bool in = std::find(blocks.begin(), blocks.end(), b.name) != blocks.end();
-    const auto npc = static_cast<std::size_t>(cell_node_count(b.type));
-    for (std::size_t c = 0; c < b.cell_count(); ++c, ++global) {
-      if (!in) continue;
-      for (int s = 0; s < cell_side_count(b.type); ++s) {
-        std::vector<LocalIndex> key;
-        for (int k : cell_side_nodes(b.type, s))
-          key.push_back(b.connectivity[c * npc + static_cast<std::size_t>(k)]);
-        std::sort(key.begin(), key.end());
-        if (count.at(key) == 1) sides.emplace_back(global, s);
-      }
-    }
-  }
-  return sides;
+  return outer_sides(mesh, cells_of_blocks(mesh, blocks));
 }
 
 std::vector<SmoothingPoint> side_smoothing_points(const std::vector<std::array<double, 3>>& side_x,

@@ -87,12 +87,12 @@ SpecPtr part_spec() {
                 "displacement")
       .optional("pressure_cells",
                 choice("What carries one pressure of a mixed_up part: cell, one pressure per "
-                       "background cell (the default: the most accurate displacements and "
-                       "plastic collapse loads, but the spurious checkerboard mode of Q1/P0 "
-                       "elements), or patch, the background cells around an interior node "
-                       "(2 x 2 quads, 2 x 2 x 2 hexes: inf-sup stable, no spurious mode, smaller "
-                       "pressure errors; too few constraints for perfectly plastic flow). "
-                       "Displacement parts ignore it. See docs/mixed.md.",
+                       "background cell (the default; it has the spurious checkerboard mode of "
+                       "Q1/P0 elements), or patch, the background cells around an interior node "
+                       "(2 x 2 quads, 2 x 2 x 2 hexes: inf-sup stable, no spurious mode; with "
+                       "integration scni_subcells the most accurate pairing for elastic parts, "
+                       "but too few constraints for perfectly plastic flow). Only for "
+                       "formulation mixed_up. See docs/mixed.md.",
                        {"cell", "patch"}),
                 "cell");
 }
