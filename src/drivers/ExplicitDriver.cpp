@@ -12,6 +12,7 @@
 #include "core/Log.hpp"
 #include "core/Progress.hpp"
 #include "parallel/Collective.hpp"
+#include "parallel/LargestParticle.hpp"
 #include "parallel/NonFinite.hpp"
 #include "parallel/ReproducibleSum.hpp"
 
@@ -52,10 +53,9 @@ ExplicitDriver::ExplicitDriver(const ModelOperators& ops, const StageSpec& stage
       motion_(ops.model(), stage.name),
       supports_(ops, stage.name, stage.settings["transformation_traction"].as<bool>()),
       stable_(ops, mass_, largest_wall_penalty(ops.model().scene),
-              supports_.active() ? StableTimeStep::ExtraStiffness(
-                                       [this](const Vector& d, const Vector& x, Vector& y) {
-                                         supports_.add_stiffness_product(d, x, y);
-                                       })
+              supports_.active() ? StableTimeStep::ExtraStiffness([this](const Vector& d) {
+                return supports_.stiffness_at(d);
+              })
                                  : StableTimeStep::ExtraStiffness{}),
       f_ext_(mass_.getMap()),
       f_ext_old_(mass_.getMap()),
@@ -132,6 +132,21 @@ void ExplicitDriver::report_non_finite(const RunState& state, long long step) co
              .mesh.coordinates[node * static_cast<std::size_t>(dim) + static_cast<std::size_t>(k)];
   o << ")) at step " << step << ", t = " << state.time << "; the last good state is in the results";
   throw NumericalError(o.str());
+}
+
+void ExplicitDriver::report_energy_balance(const EnergyBalanceCheck& check, const RunState& state,
+                                           long long step) const {
+  // The particle where the energy from nowhere shows: the largest m |v|^2.
+  Vector w(mass_.getMap());
+  w.elementWiseMultiply(1.0, mass_, state.v, 0.0);
+  w.elementWiseMultiply(1.0, w, state.v, 0.0);
+  const int dim = ops_.model().mesh.dimension;
+  const auto peak = largest_particle_sum(w, dim);
+  const double* position =
+      peak.particle >= 0 ? &ops_.model().mesh.coordinates[static_cast<std::size_t>(peak.particle) *
+                                                          static_cast<std::size_t>(dim)]
+                         : nullptr;
+  throw NumericalError(check.message(state, step, peak.particle, position, dim));
 }
 
 void ExplicitDriver::refuse_endless(double span, double dt, double dt_crit) const {
@@ -292,6 +307,7 @@ void ExplicitDriver::advance(RunState& state, double step_dt, long long step,
   state.time += step_dt;
   state.dt = step_dt;
   account_energy(state, delta_);
+  state.external_work += motion_.kinetic_energy_change(mass_, previous_v_, state.v);
   if (!finite(state)) {
     // Write the last good state, then name the particle, step and time.
     RunState failed(state.d.getMap());
@@ -344,6 +360,7 @@ ExplicitSummary ExplicitDriver::run(RunState& state, const StateOutput& output, 
   summary.smallest_dt = summary.largest_dt = dt;
   double next_output = std::min(end, start_time + interval);
   double reference_energy = std::max(state.initial_energy, 1e-300);
+  EnergyBalanceCheck balance(stage_.name, stage_.settings["energy_balance_limit"].as<double>());
   // The stable step is re-estimated after 1, 3, 7, ... steps: the interval doubles up to
   // dt_update_interval while the estimate holds, and halves when it fell by more than 5 % since
   // the last one. An impact that shrinks the stable step tenfold within a few dozen steps (the
@@ -369,7 +386,7 @@ ExplicitSummary ExplicitDriver::run(RunState& state, const StateOutput& output, 
     summary.smallest_dt = std::min(summary.smallest_dt, step_dt);
     summary.largest_dt = std::max(summary.largest_dt, step_dt);
     const bool due = state.time >= next_output - 1e-12 * span;
-    if (due || allow_unstable) {
+    if (due || allow_unstable || balance.due(summary.steps)) {
       energies(state);
       summary.worst_balance_error = std::max(summary.worst_balance_error, state.balance_error());
       reference_energy =
@@ -384,6 +401,10 @@ ExplicitSummary ExplicitDriver::run(RunState& state, const StateOutput& output, 
             << reference_energy << ") at step " << summary.steps << ", t = " << state.time
             << " with dt = " << step_dt << " above the stable time step " << dt_crit;
         throw NumericalError(why.str());
+      }
+      if (balance.failed(state)) {
+        output(state);
+        report_energy_balance(balance, state, summary.steps);
       }
     }
     if (due) {

@@ -5,7 +5,7 @@
 // with the same internal force function as the implicit driver. The time step is
 // dt_scale x dt_crit (StableTimeStep), refreshed every dt_update_interval steps, or a fixed dt;
 // a fixed dt above dt_crit runs only with allow_unstable_dt, and then an energy blow-up stops
-// the run. Loads without a curve act at full value from the start (a step load).
+// the run; a balance error above energy_balance_limit stops it too (EnergyBalanceCheck). Loads without a curve act at full value from the start (a step load).
 // Every step checks for NaN or Inf; failures stop the run (exit 3) naming the particle, its
 // position, the step and the time, after the last good state is written.
 #pragma once
@@ -14,6 +14,7 @@
 #include <memory>
 
 #include "contact/RigidContact.hpp"
+#include "drivers/EnergyBalanceCheck.hpp"
 #include "drivers/PrescribedMotion.hpp"
 #include "drivers/RunState.hpp"
 #include "drivers/StableTimeStep.hpp"
@@ -59,6 +60,8 @@ class ExplicitDriver {
  private:
   bool finite(const RunState& state) const;  // collective
   [[noreturn]] void report_non_finite(const RunState& state, long long step) const;
+  [[noreturn]] void report_energy_balance(const EnergyBalanceCheck& check, const RunState& state,
+                                          long long step) const;  // collective
   void account_energy(RunState& state, const Vector& delta_d) const;
   /// E_kin and E_int of the state (and the momentum, with rigid bodies).
   void energies(RunState& state);

@@ -81,4 +81,18 @@ void PrescribedMotion::support_force(const Vector& mass, const Vector& a_free, V
   }
 }
 
+double PrescribedMotion::kinetic_energy_change(const Vector& mass, const Vector& v_start,
+                                               const Vector& v_end) const {
+  const auto m = mass.getLocalViewHost(Tpetra::Access::ReadOnly);
+  const auto v0 = v_start.getLocalViewHost(Tpetra::Access::ReadOnly);
+  const auto v1 = v_end.getLocalViewHost(Tpetra::Access::ReadOnly);
+  double mine = 0.0, all = 0.0;
+  for (const auto& c : dofs_) {
+    const auto k = static_cast<std::size_t>(c.row);
+    mine += 0.5 * m(k, 0) * (v1(k, 0) * v1(k, 0) - v0(k, 0) * v0(k, 0));
+  }
+  Teuchos::reduceAll(*mass.getMap()->getComm(), Teuchos::REDUCE_SUM, mine, Teuchos::outArg(all));
+  return all;
+}
+
 }  // namespace efg

@@ -27,7 +27,7 @@ class ScaledTangent : public Tpetra::Operator<> {
                 const StableTimeStep::ExtraStiffness& extra, const Vector& inv_sqrt_mass,
                 const Vector& d)
       : internal_force_(internal_force),
-        extra_(extra),
+        extra_(extra ? extra(d) : StableTimeStep::StiffnessProduct{}),
         s_(inv_sqrt_mass),
         d_(d),
         f0_(d.getMap()),
@@ -60,14 +60,14 @@ class ScaledTangent : public Tpetra::Operator<> {
       probe.update(e, x, 1.0);
       internal_force_(probe, f);
       f.update(-1.0 / e, f0_, 1.0 / e);
-      if (extra_) extra_(d_, x, f);
+      if (extra_) extra_(x, f);
       y->elementWiseMultiply(alpha, s_, f, beta);
     }
   }
 
  private:
   const StableTimeStep::InternalForce& internal_force_;
-  const StableTimeStep::ExtraStiffness& extra_;
+  StableTimeStep::StiffnessProduct extra_;  ///< linearized at d once
   const Vector& s_;
   const Vector& d_;
   Vector f0_;

@@ -17,6 +17,8 @@
 // Stiffness besides the solid's (the weak supports' boundary terms) enters through `extra`, as an
 // exact product y += K_extra(d) x (symmetric; differences of nonlinear boundary terms are not
 // exactly symmetric, and Anasazi's Hermitian Krylov-Schur then fails on complex Ritz values).
+// A nonsymmetric term enters by its symmetric part, which bounds every real eigenvalue; complex
+// ones (flutter, which no step size cures) are for the driver's energy balance to catch.
 #pragma once
 
 #include <functional>
@@ -30,8 +32,10 @@ class StableTimeStep {
  public:
   /// `wall_penalty`: the largest share P + 2 D of walls and contacts in the stability condition
   /// (their spring and damper; 0 without any): the step falls by sqrt(1 - wall_penalty / 4);
-  /// `extra(d, x, y)` adds a further stiffness times x to y.
-  using ExtraStiffness = std::function<void(const Vector& d, const Vector& x, Vector& y)>;
+  /// `extra(d)` linearizes a further stiffness at d once per estimate; the product it returns
+  /// adds K_extra(d) x to y.
+  using StiffnessProduct = std::function<void(const Vector& x, Vector& y)>;
+  using ExtraStiffness = std::function<StiffnessProduct(const Vector& d)>;
   StableTimeStep(const ModelOperators& ops, const Vector& mass_owned, double wall_penalty = 0.0,
                  ExtraStiffness extra = {});
   /// Any internal force f(d) (owned dofs; e.g. the shells'), its stiffness probed the same way.

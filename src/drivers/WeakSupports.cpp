@@ -78,15 +78,19 @@ const Vector& WeakSupports::resistance(const Vector& d_owned) {
   return last_;
 }
 
-void WeakSupports::add_stiffness_product(const Vector& d_owned, const Vector& x_owned,
-                                         Vector& y_owned) const {
-  if (!conditions_) return;
+std::function<void(const Vector&, Vector&)> WeakSupports::stiffness_at(
+    const Vector& d_owned) const {
+  if (!conditions_) return [](const Vector&, Vector&) {};
   ops_.to_overlap(d_owned, d_overlap_);
-  ops_.to_overlap(x_owned, x_overlap_);
-  r_overlap_.putScalar(0.0);
-  conditions_->apply_boundary_stiffness(d_overlap_, x_overlap_, r_overlap_);
-  ops_.to_owned(r_overlap_, scratch_);
-  y_owned.update(1.0, scratch_, 1.0);
+  std::shared_ptr<const EssentialConditions::BoundaryTangent> tangent =
+      conditions_->boundary_tangent(d_overlap_);
+  return [this, tangent](const Vector& x_owned, Vector& y_owned) {
+    ops_.to_overlap(x_owned, x_overlap_);
+    r_overlap_.putScalar(0.0);
+    conditions_->apply_boundary_stiffness(*tangent, x_overlap_, r_overlap_);
+    ops_.to_owned(r_overlap_, scratch_);
+    y_owned.update(1.0, scratch_, 1.0);
+  };
 }
 
 std::vector<std::array<double, 3>> WeakSupports::reactions() const {

@@ -13,6 +13,7 @@
 #pragma once
 
 #include <array>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -44,8 +45,11 @@ class WeakSupports {
   /// r(d): the boundary terms as a resistance (added to f_int; the force on the body is -r),
   /// owned dofs; also kept as last() and its per-condition totals for the reactions.
   const Vector& resistance(const Vector& d_owned);
-  /// y += K(d) x, the boundary terms' stiffness (exactly symmetric; the stable-step estimate).
-  void add_stiffness_product(const Vector& d_owned, const Vector& x_owned, Vector& y_owned) const;
+  /// The boundary terms' stiffness at d as a product y += K(d) x, the transformation traction
+  /// term by its symmetric part (exactly symmetric; the stable-step estimate). The product
+  /// keeps the points' tangents at d and the overlap vectors of this object.
+  std::function<void(const Vector& x_owned, Vector& y_owned)> stiffness_at(
+      const Vector& d_owned) const;
   const Vector& last() const { return last_; }
   /// The force each condition applies to the body at the last resistance(), summed over ranks
   /// (collective), with the implicit drivers' sign.

@@ -10,6 +10,7 @@
 #include "contact/ShellRigidContact.hpp"
 #include "core/Errors.hpp"
 #include "core/Log.hpp"
+#include "drivers/EnergyBalanceCheck.hpp"
 #include "drivers/StableTimeStep.hpp"
 #include "parallel/NonFinite.hpp"
 #include "parallel/ReproducibleSum.hpp"
@@ -192,13 +193,26 @@ ShellExplicitSummary run_shell_explicit_stage(const Model& model, const FlatShel
   // (relative to each record's own energies, the first records of a stage starting at rest
   // would divide the round-off of the first step's work by nearly nothing).
   double largest_energy = energy0, worst_imbalance = 0;
+  EnergyBalanceCheck balance(stage.name, settings["energy_balance_limit"].as<double>());
   const auto account = [&](double kin) {
     double e = op.strain_energy(d), strain = 0;
     Teuchos::reduceAll(*map->getComm(), Teuchos::REDUCE_SUM, 1, &e, &strain);
     largest_energy = std::max({largest_energy, kin, strain, std::abs(external_work)});
-    worst_imbalance = std::max(worst_imbalance, std::abs(kin + strain - energy0 - external_work));
+    const double imbalance = std::abs(kin + strain - energy0 - external_work);
+    worst_imbalance = std::max(worst_imbalance, imbalance);
     summary.energy_error = largest_energy > 0 ? worst_imbalance / largest_energy : 0.0;
     if (weak && !op.plastic()) refuse_non_coercive_supports(strain, kin);
+    const double error = largest_energy > 0 ? imbalance / largest_energy : 0.0;
+    if (balance.failed(error)) {
+      std::ostringstream o;
+      o << "stage '" << stage.name << "' (shells, explicit): energy balance error " << 100 * error
+        << " % exceeds energy_balance_limit (" << 100 * balance.limit() << " %) at step "
+        << summary.steps << ", t = " << t << ": kinetic " << kin << " + strain " << strain
+        << " against initial " << energy0 << " + work of loads and supports " << external_work
+        << "; energy without work is an instability the stable time step does not bound, or a "
+           "force whose work is not accounted. Raise energy_balance_limit (0: off) to run on";
+      throw NumericalError(o.str());
+    }
   };
   // The supports' forces written at a record are their mean since the previous record (the
   // impulse over the time between): a moving support drives the particles next to it at the

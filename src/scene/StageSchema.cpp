@@ -103,6 +103,16 @@ SpecPtr stage_spec() {
                    "Run a fixed dt above the stable limit (detected and stopped if it blows up)."),
                "false"),
            optional_key(
+               "energy_balance_limit",
+               real("Largest energy balance error, |E_kin + E_int - E_0 - W_ext - W_wall| over "
+                    "the largest of them, before the stage stops (exit 3, naming the step, time "
+                    "and the particle with the largest kinetic energy): checked every 100 steps "
+                    "and at every record, stopped when two checks in a row exceed it (energy "
+                    "without work is an instability the stable step does not bound). 0: off.",
+                    "-")
+                   .at_least(0),
+               "0.1"),
+           optional_key(
                "dt_update_interval",
                integer("Longest interval, in steps, between re-estimates of the stable time step "
                        "(the interval doubles from 1 while the estimate holds and "
