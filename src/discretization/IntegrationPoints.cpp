@@ -176,7 +176,8 @@ void build_scni_subcells(const BackgroundMesh& mesh, const PartSpec& part,
     for (std::size_t k = 0; k < pieces.size(); ++k) {
       const auto i = first + static_cast<std::size_t>(pieces[k].first);
       ip.x.insert(ip.x.end(), cloud.x(i), cloud.x(i) + dim);
-      ip.node.push_back(-1);  // not the particle's own point: no history output there
+      ip.node.push_back(-1);                    // not the particle's own point ...
+      ip.domain.push_back(cloud.mesh_node[i]);  // ... but a piece of its domain
       ip.weight.push_back(volume[k]);
       const auto from = at_particles.neighbors.offsets[i],
                  to = at_particles.neighbors.offsets[i + 1];

@@ -28,8 +28,11 @@ struct IntegrationPoints {
   std::vector<double> x;         ///< dimension per point (reference configuration)
   std::vector<double> weight;    ///< volume represented by the point
   std::vector<LocalIndex> node;  ///< SCNI and nodal: the mesh node of the point; Gauss: -1
-  CsrTable values;               ///< phi_I at the point
-  CsrTable gradients;            ///< grad phi_I (SCNI: smoothed B~_I), dimension per entry
+  /// SCNI subcells: the mesh node whose nodal domain holds the piece (its history is averaged
+  /// there for output); empty when every point is a particle's own (node) or a Gauss point.
+  std::vector<LocalIndex> domain;
+  CsrTable values;     ///< phi_I at the point
+  CsrTable gradients;  ///< grad phi_I (SCNI: smoothed B~_I), dimension per entry
 
   std::size_t size() const { return weight.size(); }
 };

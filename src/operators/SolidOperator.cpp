@@ -76,6 +76,8 @@ SolidOperator::SolidOperator(const Model& model) : dim_(model.mesh.dimension), h
     p.points = ip.size();
     p.x = ip.x;
     p.node = ip.node;
+    p.domain = ip.domain;
+    if (!p.domain.empty()) p.weight = ip.weight;
     parts_.push_back(std::move(p));
   }
 }
@@ -93,6 +95,8 @@ std::string SolidOperator::point_location(const PartData& part, int point) const
   std::ostringstream o;
   if (part.node[static_cast<std::size_t>(point)] >= 0)
     o << "the integration point of particle " << part.node[static_cast<std::size_t>(point)] + 1;
+  else if (!part.domain.empty())
+    o << "a subcell point of particle " << part.domain[static_cast<std::size_t>(point)] + 1;
   else
     o << "a Gauss point";
   o << " at (";
@@ -222,6 +226,8 @@ std::vector<SolidOperator::HistoryOutput> SolidOperator::history_output(
                            PointHistoryOutput<3, decltype(u)>{device(p), u, out});
     const auto host = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), out);
     result[i].node = p.node;
+    result[i].domain = p.domain;
+    result[i].weight = p.weight;
     result[i].values.assign(host.data(), host.data() + p.points * history_columns);
   }
   return result;

@@ -40,8 +40,11 @@ class SolidOperator {
   /// node (SCNI and nodal integration) and history_columns values, the Cauchy stress (row major),
   /// the effective plastic strain and the erosion flag at the committed state.
   static constexpr std::size_t history_columns = 11;
+  /// Each point's history columns, with the particle it is (node) or whose domain it is a
+  /// piece of (domain, weighted by the piece's volume), -1 for neither.
   struct HistoryOutput {
-    std::vector<LocalIndex> node;
+    std::vector<LocalIndex> node, domain;
+    std::vector<double> weight;
     std::vector<double> values;  // points x history_columns
   };
   std::vector<HistoryOutput> history_output(const Vector& d_overlap) const;
@@ -72,8 +75,10 @@ class SolidOperator {
     std::size_t points = 0;
     std::size_t slot_count = 0;  // entries of the point table
     std::string name;
-    std::vector<double> x;         // point coordinates, for messages
-    std::vector<LocalIndex> node;  // the particle of each point (SCNI, nodal), -1 for Gauss
+    std::vector<double> x;           // point coordinates, for messages
+    std::vector<LocalIndex> node;    // the particle of each point (SCNI, nodal), -1 for Gauss
+    std::vector<LocalIndex> domain;  // subcells: the particle whose domain holds the piece
+    std::vector<double> weight;      // subcells: the pieces' volumes
     bool small_strain = true;
   };
   /// The part's device data with the current step time.

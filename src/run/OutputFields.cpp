@@ -218,7 +218,8 @@ void particle_tensors(const Model& model, const ParticleValues& values,
 }
 
 // Path-dependent parts: stress, plastic strain and erosion flag from the committed history of
-// each particle's integration point (SCNI and nodal integration: one point per particle). Mixed
+// each particle's integration point (SCNI and nodal integration: one point per particle; SCNI
+// subcells: the volume-weighted mean over the pieces of its nodal domain). Mixed
 // u-p parts: the history stress is the deviatoric law's, and -p I (the particle's pressure, as in
 // particle_tensors) completes it.
 void history_values(const Model& model, const SolidOperator& op, const Vector& d_overlap,
@@ -227,20 +228,37 @@ void history_values(const Model& model, const SolidOperator& op, const Vector& d
                     std::vector<double>& plastic, std::vector<double>& eroded) {
   const auto slot = owned_slots(model);
   const std::size_t none = model.partition.owned.size();
-  for (const auto& h : op.history_output(d_overlap))
-    for (std::size_t q = 0; q < h.node.size(); ++q) {
-      const auto s = h.node[q] >= 0 ? slot[static_cast<std::size_t>(h.node[q])] : none;
+  constexpr std::size_t columns = SolidOperator::history_columns;
+  for (const auto& h : op.history_output(d_overlap)) {
+    // Subcells: the volume-weighted mean of the pieces of each particle's domain.
+    std::vector<double> sum(h.domain.empty() ? 0 : none * columns, 0.0),
+        volume(h.domain.empty() ? 0 : none, 0.0);
+    for (std::size_t q = 0; q < h.domain.size(); ++q) {
+      const auto s = h.domain[q] >= 0 ? slot[static_cast<std::size_t>(h.domain[q])] : none;
       if (s == none) continue;
-      const std::size_t row = q * SolidOperator::history_columns;
+      volume[s] += h.weight[q];
+      for (std::size_t c = 0; c < columns; ++c)
+        sum[s * columns + c] += h.weight[q] * h.values[q * columns + c];
+    }
+    const auto put = [&](std::size_t s, const double* row) {
       const bool with_pressure =
           mixed && values.part[s] >= 0 && mixed->mixed(static_cast<std::size_t>(values.part[s]));
       for (std::size_t i = 0; i < 3; ++i)
         for (std::size_t j = 0; j < 3; ++j)
-          stresses[s][i][j] =
-              h.values[row + i * 3 + j] - (i == j && with_pressure ? pressure[s] : 0.0);
-      plastic[s] = h.values[row + 9];
-      eroded[s] = h.values[row + 10];
+          stresses[s][i][j] = row[i * 3 + j] - (i == j && with_pressure ? pressure[s] : 0.0);
+      plastic[s] = row[9];
+      eroded[s] = row[10];
+    };
+    for (std::size_t s = 0; s < volume.size(); ++s)
+      if (volume[s] > 0) {
+        for (std::size_t c = 0; c < columns; ++c) sum[s * columns + c] /= volume[s];
+        put(s, &sum[s * columns]);
+      }
+    for (std::size_t q = 0; q < h.node.size(); ++q) {
+      const auto s = h.node[q] >= 0 ? slot[static_cast<std::size_t>(h.node[q])] : none;
+      if (s != none) put(s, &h.values[q * columns]);
     }
+  }
 }
 
 // The committed material state at every owned particle (column after column, kLargestStateCount

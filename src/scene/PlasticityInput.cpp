@@ -67,14 +67,14 @@ void check_plasticity_input(const Scene& s) {
     const auto& part = s.parts[i];
     if (s.find_material(part.material)->model != "j2_plasticity") continue;
     const YAML::Node doc = s.document["parts"][i];
-    // The history lives at the integration points; output reads it at the particle's own point,
-    // which Gauss and SCNI subcell integration do not have (a projection is not built yet).
-    if (part.section.integration == Integration::gauss ||
-        part.section.integration == Integration::scni_subcells)
+    // The history lives at the integration points; output reads it at the particle's own point
+    // (SCNI, nodal) or averages the pieces of its domain (SCNI subcells). A Gauss point belongs
+    // to no particle's domain (a projection is not built yet).
+    if (part.section.integration == Integration::gauss)
       fail(s, doc["section"] ? doc["section"] : doc, "parts[" + std::to_string(i) + "].section",
            "part '" + part.name +
-               "' has a j2_plasticity material: expected integration scni or nodal (Gauss and "
-               "scni_subcells integration are not available for path-dependent materials yet)");
+               "' has a j2_plasticity material: expected integration scni, scni_subcells or "
+               "nodal (Gauss integration is not available for path-dependent materials yet)");
   }
   // The transformation and Nitsche methods add the boundary traction -integral phi_I (P n) over
   // the constrained boundary (Wagner & Liu 2000; docs/boundary_conditions.md), evaluated at

@@ -64,6 +64,7 @@ S_TOL_INTERIOR = 1.5e-2
 S_TOL_BOUNDARY = 8e-2
 # Plastic.
 PLASTIC_TOL = 0.02
+C_TOL = PLASTIC_TOL
 # u_r(b) against the exact J2 answer of the radial 1D model (hill_solution.j2_radial_reference),
 # which has no sigma_z = mean approximation: measured at most 0.24 % at 20 x 30.
 EXACT_U_TOL = 0.01
@@ -80,14 +81,16 @@ def has_j2(efg):
 
 
 def write_scene(path, mesh, plastic, fields, pressure, fractions, bc_method, dilation,
-                formulation="displacement"):
+                formulation="displacement", integration="scni", pressure_cells="cell"):
     n = len(fractions)
     template = string.Template(open(os.path.join(HERE, "cylinder.yaml")).read())
     plastic_keys = ("\n    yield_stress: %r\n    hardening_modulus: 0.0" % SIGMA_Y) if plastic else ""
     text = template.substitute(
         title="thick cylinder, %s" % ("j2_plasticity" if plastic else "linear_elastic"),
         mesh=os.path.basename(mesh), dilation=dilation, bc_method=bc_method, nu=repr(NU),
-        formulation=formulation,
+        formulation=formulation, integration=integration,
+        pressure_cells=("\n    pressure_cells: %s" % pressure_cells
+                        if formulation == "mixed_up" else ""),
         model="j2_plasticity" if plastic else "linear_elastic", plastic_keys=plastic_keys,
         pressure=repr(pressure),
         curve_time="[%s]" % ", ".join(str(i) for i in range(n + 1)),
@@ -265,7 +268,7 @@ def check_plastic(x, y, times, f, nr, p_limit, fractions, attempts, code, e_ref,
                 failures.append("p = %.2f: no plastic strain, Hill's c = %.2f" % (p, c_h))
         else:
             c_err = c / c_h - 1
-            if compared and not abs(c_err) <= PLASTIC_TOL:
+            if compared and not abs(c_err) <= C_TOL:
                 failures.append("p = %.2f: c = %.2f vs Hill %.2f (%.2f %%)"
                                 % (p, c, c_h, 100 * c_err))
         if compared and not abs(u_err) <= PLASTIC_TOL:
@@ -297,7 +300,7 @@ def check_plastic(x, y, times, f, nr, p_limit, fractions, attempts, code, e_ref,
 
 
 def main():
-    global NU, PLASTIC_TOL
+    global NU, PLASTIC_TOL, C_TOL
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("efg")
     ap.add_argument("outdir")
@@ -312,11 +315,17 @@ def main():
     ap.add_argument("--poissons-ratio", type=float, default=NU,
                     help="nu of the scene and of every reference (default 0.3)")
     ap.add_argument("--formulation", choices=["displacement", "mixed_up"], default="displacement")
+    ap.add_argument("--integration", choices=["scni", "scni_subcells"], default="scni")
+    ap.add_argument("--pressure-cells", choices=["cell", "patch"], default="cell",
+                    help="mixed_up only: one pressure per background cell or per patch")
     ap.add_argument("--plastic-tolerance", type=float, default=PLASTIC_TOL,
                     help="relative tolerance of c and u(b) against Hill (default 0.02)")
+    ap.add_argument("--c-tolerance", type=float, default=None,
+                    help="relative tolerance of c against Hill (default: --plastic-tolerance)")
     args = ap.parse_args()
     NU = args.poissons_ratio
     PLASTIC_TOL = args.plastic_tolerance
+    C_TOL = args.c_tolerance if args.c_tolerance is not None else PLASTIC_TOL
     efg = os.path.abspath(args.efg)
     plastic = args.material == "plastic" or (args.material == "auto" and has_j2(efg))
     os.makedirs(args.outdir, exist_ok=True)
@@ -330,11 +339,13 @@ def main():
     if plastic:
         fractions = PLASTIC_FRACTIONS
         write_scene(scene, mesh, True, ["displacement", "stress", "plastic_strain"], p_l, fractions,
-                    args.bc_method or "transformation", args.dilation, args.formulation)
+                    args.bc_method or "transformation", args.dilation, args.formulation,
+                    args.integration, args.pressure_cells)
     else:
         fractions = [0.5, 1.0]
         write_scene(scene, mesh, False, ["displacement", "stress"], 100.0, fractions,
-                    args.bc_method or "transformation", args.dilation, args.formulation)
+                    args.bc_method or "transformation", args.dilation, args.formulation,
+                    args.integration, args.pressure_cells)
     prefix = shlex.split(args.np2) if args.np2 else []
     log = os.path.join(args.outdir, name + ".log")
     results = os.path.join(args.outdir, name + ".e")
@@ -344,8 +355,10 @@ def main():
     code, seconds = run_efg(prefix + [efg, "run", scene, "-o", args.outdir], log)
     if code == 3:  # a failed run leaves its records, up to the last converged state, in .part
         results += ".part"
-    print("## thick cylinder, %s, nu = %g, %s, %d x %d cells, %d particles, %s, efg %.1f s (log %s)"
-          % ("j2_plasticity" if plastic else "linear_elastic", NU, args.formulation, args.radial,
+    print("## thick cylinder, %s, nu = %g, %s (%s, pressure per %s), %d x %d cells, %d particles, "
+          "%s, efg %.1f s (log %s)"
+          % ("j2_plasticity" if plastic else "linear_elastic", NU, args.formulation,
+             args.integration, args.pressure_cells, args.radial,
              args.hoop, len(xs), "2 ranks" if prefix else "1 rank", seconds, log))
     if args.reference_youngs != E or args.reference_yield != SIGMA_Y:
         print("reference with E = %g, sigma_y = %g (the scene has %g, %g)"
