@@ -122,10 +122,11 @@ NewtonSolver::NewtonSolver(NonlinearProblem& problem, const YAML::Node& stage,
   const std::string solver = !problem.displacement_dofs() ? "direct"
                              : stage["solver"]            ? stage["solver"].as<std::string>()
                                                           : "auto";
-  plan_ = plan_linear_solver(
-      solver, stage["direct_limit"] ? stage["direct_limit"].as<std::int64_t>() : 0,
-      from_stage(stage, "linear_solver", file, where),
-      from_stage(stage, "preconditioner", file, where), dofs, model.mesh.dimension, ranks);
+  plan_ = plan_linear_solver(solver,
+                             stage["direct_limit"] ? stage["direct_limit"].as<std::int64_t>() : 0,
+                             from_stage(stage, "linear_solver", file, where),
+                             from_stage(stage, "preconditioner", file, where), dofs,
+                             model.mesh.dimension, ranks, model.scene.largest_poissons_ratio());
   if (stage["residual_tolerance"]) tolerance_ = stage["residual_tolerance"].as<double>();
   try {
     nox_params_ = nonlinear_parameters(from_stage(stage, "nonlinear_solver", file, where),

@@ -251,7 +251,7 @@ void check_preconditioner(const LinearSolverPlan& plan, int dimension, const Loc
 
 void check_solver_settings(const YAML::Node& stage, const YAML::Node& written,
                            const std::string& file, const std::string& path, std::int64_t dofs,
-                           int dimension) {
+                           int dimension, double poissons_ratio) {
   const Locator at(written, file, path);
   auto list = [&](const char* key) {
     return parameter_list_from_yaml(stage[key], key, file, path + "." + key);
@@ -260,7 +260,7 @@ void check_solver_settings(const YAML::Node& stage, const YAML::Node& written,
   const auto plan =
       plan_linear_solver(stage["solver"] ? stage["solver"].as<std::string>() : "auto",
                          stage["direct_limit"] ? stage["direct_limit"].as<std::int64_t>() : 0,
-                         linear, list("preconditioner"), dofs, dimension, 1);
+                         linear, list("preconditioner"), dofs, dimension, 1, poissons_ratio);
   check_linear(linear, plan, at);
   check_nonlinear(nonlinear, at);
   check_preconditioner(plan, dimension, at);

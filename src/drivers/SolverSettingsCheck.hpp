@@ -20,10 +20,11 @@
 namespace efg {
 
 /// `stage` the resolved stage, `written` the stage as written (for line numbers), `path` its key
-/// path ("stages[0]"). `dofs` the model's displacement dofs (the automatic choice depends on it).
-/// Throws InputError "FILE:LINE:COL: PATH.KEY: what is wrong".
+/// path ("stages[0]"). `dofs` the model's displacement dofs and `poissons_ratio` its largest
+/// (the automatic choice depends on both). Throws InputError "FILE:LINE:COL: PATH.KEY: what is
+/// wrong".
 void check_solver_settings(const YAML::Node& stage, const YAML::Node& written,
                            const std::string& file, const std::string& path, std::int64_t dofs,
-                           int dimension);
+                           int dimension, double poissons_ratio = 0.0);
 
 }  // namespace efg

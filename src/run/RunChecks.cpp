@@ -68,7 +68,8 @@ void check_run_inputs(const CommPtr& comm, const Scene& scene, const BackgroundM
   for (std::size_t i = 0; i < scene.stages.size(); ++i)
     if (scene.stages[i].driver == "implicit")
       check_solver_settings(scene.stages[i].settings, scene.document["stages"][i], scene.file,
-                            "stages[" + std::to_string(i) + "]", dofs, mesh.dimension);
+                            "stages[" + std::to_string(i) + "]", dofs, mesh.dimension,
+                            scene.largest_poissons_ratio());
 }
 
 void check_model_setup(const CommPtr& comm, const Model& model) {

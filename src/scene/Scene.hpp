@@ -275,6 +275,9 @@ struct Scene {
 
   const MaterialSpec* find_material(const std::string& name) const;
   const CurveSpec* find_curve(const std::string& name) const;
+  /// The largest Poisson's ratio of the parts' materials (0 when none has one): how close to
+  /// incompressible the model is (the automatic linear solver choice depends on it).
+  double largest_poissons_ratio() const;
   /// True when a part is a shell (the run then takes the shell path, src/shells).
   bool has_shells() const {
     for (const auto& p : parts)

@@ -476,6 +476,17 @@ const CurveSpec* Scene::find_curve(const std::string& curve_name) const {
   return nullptr;
 }
 
+double Scene::largest_poissons_ratio() const {
+  double largest = 0.0;
+  for (const auto& part : parts) {
+    const auto* material = find_material(part.material);
+    if (!material) continue;
+    const auto nu = material->constants.find("poissons_ratio");
+    if (nu != material->constants.end()) largest = std::max(largest, nu->second);
+  }
+  return largest;
+}
+
 const MaterialSpec* Scene::find_material(const std::string& material_name) const {
   for (const auto& m : materials)
     if (m.name == material_name) return &m;

@@ -39,7 +39,9 @@ SpecPtr stage_spec() {
                         "auto"),
            optional_key("direct_limit",
                         integer("Largest dof count that solver: auto factors directly; 0: the "
-                                "default (150000 in 2D, 30000 in 3D).")
+                                "default (150000 in 2D, 30000 in 3D; 300000 and 120000 when a "
+                                "part's Poisson's ratio is 0.49 or more, where multigrid "
+                                "stalls).")
                             .at_least(0),
                         "0"),
            optional_key("residual_tolerance",

@@ -64,18 +64,32 @@ std::string LinearSolverPlan::describe() const {
 // on the beam); 3D (MUMPS, the cantilever block, supports without their zero-weight edges):
 // Newton phase 1.2 s at 9.3k dofs (multigrid 1.8 s), 6.5-6.7 s at 31k (multigrid 6.9-7.2 s),
 // 26.7 s at 54k (multigrid 14.7 s). Above these limits multigrid is faster where it converges.
-std::int64_t default_direct_limit(int dimension) {
-  return dimension <= 2 ? 150000 : 30000;
+// Nearly incompressible models (nu >= 0.49, mixed u-p or not) are factored up to 4x that in 3D
+// and 2x in 2D: multigrid stalled on a mixed u-p block at nu = 0.4999 and 33,516 dofs (500
+// GMRES iterations, the residual 21x its start, exit 3 after 160 s), which the direct path
+// solves in 53 s (2.9 GB peak); 3D factorization memory grows about like n^(4/3) (2.7 GB at 54k dofs, about 8 GB at
+// 120k on this 23 GB machine), 2D about like n^1.3 (2.9 GB at 132k, about 7 GB at 300k).
+std::int64_t default_direct_limit(int dimension, bool nearly_incompressible) {
+  const std::int64_t limit = dimension <= 2 ? 150000 : 30000;
+  return nearly_incompressible ? limit * (dimension <= 2 ? 2 : 4) : limit;
 }
 
 LinearSolverPlan plan_linear_solver(const std::string& solver, std::int64_t direct_limit,
                                     const Teuchos::ParameterList& linear_solver,
                                     const Teuchos::ParameterList& preconditioner,
-                                    std::int64_t global_dofs, int dimension, int ranks) {
+                                    std::int64_t global_dofs, int dimension, int ranks,
+                                    double poissons_ratio) {
   Plan plan;
   const bool typed = preconditioner.isParameter("Type");
   const std::string type = typed ? preconditioner.get<std::string>("Type") : "";
-  const std::int64_t limit = direct_limit > 0 ? direct_limit : default_direct_limit(dimension);
+  const bool incompressible = poissons_ratio >= kNearlyIncompressible;
+  const std::int64_t limit =
+      direct_limit > 0 ? direct_limit : default_direct_limit(dimension, incompressible);
+  const std::string why_limit =
+      direct_limit <= 0 && incompressible
+          ? " (nearly incompressible, nu = " + std::to_string(poissons_ratio).substr(0, 8) +
+                ": multigrid stalls there)"
+          : "";
   if (typed) {
     plan.preconditioner = from_type(type);
     plan.reason = "preconditioner.Type: " + type;
@@ -87,10 +101,12 @@ LinearSolverPlan plan_linear_solver(const std::string& solver, std::int64_t dire
     plan.reason = "solver: iterative";
   } else if (global_dofs <= limit) {
     plan.preconditioner = Plan::Preconditioner::direct;
-    plan.reason = "auto: " + std::to_string(global_dofs) + " dofs <= " + std::to_string(limit);
+    plan.reason =
+        "auto: " + std::to_string(global_dofs) + " dofs <= " + std::to_string(limit) + why_limit;
   } else {
     plan.preconditioner = Plan::Preconditioner::multigrid;
-    plan.reason = "auto: " + std::to_string(global_dofs) + " dofs > " + std::to_string(limit);
+    plan.reason =
+        "auto: " + std::to_string(global_dofs) + " dofs > " + std::to_string(limit) + why_limit;
   }
   // Krylov method: GMRES (the transformation method makes the Jacobian nonsymmetric). With the
   // direct preconditioner it converges in one iteration; otherwise the iteration count is

@@ -31,16 +31,23 @@ struct LinearSolverPlan {
   std::string describe() const;
 };
 
+/// From this Poisson's ratio on, a model counts as nearly incompressible for the automatic
+/// choice: multigrid on the displacement (or condensed mixed u-p) Jacobian stalls there.
+inline constexpr double kNearlyIncompressible = 0.49;
+
 /// Largest number of dofs the automatic choice factors directly on one rank, per dimension
-/// (measured on this machine: docs/implicit.md).
-std::int64_t default_direct_limit(int dimension);
+/// (measured on this machine: docs/implicit.md); 4x in 3D and 2x in 2D for a nearly
+/// incompressible model, where the iterative path has nothing that works.
+std::int64_t default_direct_limit(int dimension, bool nearly_incompressible = false);
 
 /// `solver` is the stage's `solver` key (auto, direct, iterative), `direct_limit` its key of that
 /// name (<= 0: the default), `linear_solver` and `preconditioner` its pass-through maps, as the
-/// scene reader checked them.
+/// scene reader checked them. `poissons_ratio`: the model's largest (nearly incompressible from
+/// kNearlyIncompressible on).
 LinearSolverPlan plan_linear_solver(const std::string& solver, std::int64_t direct_limit,
                                     const Teuchos::ParameterList& linear_solver,
                                     const Teuchos::ParameterList& preconditioner,
-                                    std::int64_t global_dofs, int dimension, int ranks);
+                                    std::int64_t global_dofs, int dimension, int ranks,
+                                    double poissons_ratio = 0.0);
 
 }  // namespace efg

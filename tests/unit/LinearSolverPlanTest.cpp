@@ -1,0 +1,43 @@
+// The automatic linear solver choice (solvers/LinearSolverPlan): direct up to a dof limit,
+// multigrid above; nearly incompressible models (nu >= 0.49) are factored up to 4x the limit in
+// 3D and 2x in 2D, because multigrid stalls on them (a mixed u-p block at nu = 0.4999 and
+// 33,516 dofs: 500 GMRES iterations, exit 3; direct: solved in 53 s).
+#include <gtest/gtest.h>
+
+#include "solvers/LinearSolverPlan.hpp"
+
+namespace efg {
+namespace {
+
+LinearSolverPlan automatic(std::int64_t dofs, int dim, double nu, std::int64_t limit = 0) {
+  return plan_linear_solver("auto", limit, Teuchos::ParameterList(), Teuchos::ParameterList(), dofs,
+                            dim, 1, nu);
+}
+
+using P = LinearSolverPlan::Preconditioner;
+
+TEST(LinearSolverPlan, CompressibleModelsSwitchToMultigridAboveTheLimit) {
+  EXPECT_EQ(automatic(30000, 3, 0.3).preconditioner, P::direct);
+  EXPECT_EQ(automatic(33516, 3, 0.3).preconditioner, P::multigrid);
+  EXPECT_EQ(automatic(150000, 2, 0.3).preconditioner, P::direct);
+  EXPECT_EQ(automatic(150001, 2, 0.3).preconditioner, P::multigrid);
+}
+
+TEST(LinearSolverPlan, NearlyIncompressibleModelsAreFactoredFurther) {
+  const auto plan = automatic(33516, 3, 0.4999);
+  EXPECT_EQ(plan.preconditioner, P::direct);
+  EXPECT_NE(plan.reason.find("nearly incompressible"), std::string::npos) << plan.reason;
+  EXPECT_EQ(automatic(120000, 3, 0.49).preconditioner, P::direct);
+  EXPECT_EQ(automatic(120001, 3, 0.49).preconditioner, P::multigrid);
+  EXPECT_EQ(automatic(300000, 2, 0.4999).preconditioner, P::direct);
+  EXPECT_EQ(automatic(300001, 2, 0.4999).preconditioner, P::multigrid);
+  EXPECT_EQ(automatic(33516, 3, 0.489).preconditioner, P::multigrid);  // below the threshold
+}
+
+TEST(LinearSolverPlan, AWrittenLimitWins) {
+  EXPECT_EQ(automatic(33516, 3, 0.4999, 1000).preconditioner, P::multigrid);
+  EXPECT_EQ(automatic(33516, 3, 0.3, 40000).preconditioner, P::direct);
+}
+
+}  // namespace
+}  // namespace efg
