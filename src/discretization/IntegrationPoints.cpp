@@ -1,6 +1,7 @@
 #include "discretization/IntegrationPoints.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -120,6 +121,16 @@ void build_scni_subcells(const BackgroundMesh& mesh, const PartSpec& part,
   ip.gradients.offsets.assign(1, 0);
   std::vector<LocalIndex> batch_row(mesh.node_count(), -1);
   const auto batch_points = points_by_batch(cloud, points, mesh.node_count());
+  double extent = 0;  // the part's size, for matching coincident points
+  for (std::size_t d = 0; d < dim; ++d) {
+    double lo = std::numeric_limits<double>::max(), hi = -lo;
+    for (std::size_t i = 0; i < cloud.owned_count; ++i) {
+      lo = std::min(lo, cloud.x(i)[d]);
+      hi = std::max(hi, cloud.x(i)[d]);
+    }
+    extent = std::max(extent, hi - lo);
+  }
+  const double match_grid = 1e-10 * std::max(extent, std::numeric_limits<double>::min());
   for (std::size_t first = 0, b = 0; first < cloud.owned_count; first += kScniBatch, ++b) {
     const std::size_t rows = std::min(kScniBatch, cloud.owned_count - first);
     for (std::size_t l = 0; l < rows; ++l)
@@ -163,12 +174,39 @@ void build_scni_subcells(const BackgroundMesh& mesh, const PartSpec& part,
             " around particle " +
             std::to_string(cloud.mesh_node[first + static_cast<std::size_t>(pieces[k].first)] + 1) +
             " has volume " + std::to_string(volume[k]) + " <= 0 (an inverted cell?)");
-    const auto phi =
-        evaluate_shape_functions(cloud, coords.data(), batch.size(), false, [&](std::size_t p) {
-          return "SCNI subcell smoothing point of background cell " +
-                 std::to_string(cell_of_point[batch_points.entries[batch_points.offsets[b] + p]] +
-                                1);
-        });
+    // A cell side inside the part is emitted by both its cells (for each one's pieces): its
+    // points are evaluated once (a third of the points in 2D and 3D). Coincident points differ
+    // in the last bits (computed from either cell's node order): matched on a grid 1e-10 of
+    // the part's size, which separates distinct points (a fraction of a spacing apart).
+    std::vector<std::size_t> evaluated;  // per point: its row among the unique ones
+    std::vector<std::size_t> first_of;   // per unique point: the first point there
+    std::vector<double> unique_coords;
+    {
+      std::map<std::array<long long, 3>, std::size_t> seen;
+      for (std::size_t k = 0; k < batch.size(); ++k) {
+        std::array<long long, 3> key{0, 0, 0};
+        for (std::size_t d = 0; d < dim; ++d)
+          key[d] = std::llround(coords[k * dim + d] / match_grid);
+        const auto [at, fresh] = seen.emplace(key, first_of.size());
+        if (fresh) {
+          first_of.push_back(k);
+          unique_coords.insert(unique_coords.end(),
+                               coords.begin() + static_cast<std::ptrdiff_t>(k * dim),
+                               coords.begin() + static_cast<std::ptrdiff_t>((k + 1) * dim));
+        }
+        evaluated.push_back(at->second);
+      }
+    }
+    const auto phi = select_rows(
+        evaluate_shape_functions(
+            cloud, unique_coords.data(), first_of.size(), false,
+            [&](std::size_t u) {
+              return "SCNI subcell smoothing point of background cell " +
+                     std::to_string(cell_of_point[batch_points.entries[batch_points.offsets[b] +
+                                                                       first_of[u]]] +
+                                    1);
+            }),
+        evaluated, cloud.dimension);
     std::vector<LocalIndex> identity(pieces.size());
     for (std::size_t k = 0; k < pieces.size(); ++k) identity[k] = static_cast<LocalIndex>(k);
     const auto rows_here = smoothed_gradients(cloud, batch, phi, identity, volume);

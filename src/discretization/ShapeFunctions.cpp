@@ -118,4 +118,28 @@ ShapeFunctionValues evaluate_shape_functions(const ParticleCloud& cloud, const d
   return out;
 }
 
+ShapeFunctionValues select_rows(const ShapeFunctionValues& v, const std::vector<std::size_t>& rows,
+                                int dim) {
+  ShapeFunctionValues out;
+  const auto d = static_cast<std::size_t>(dim);
+  const bool gradients = !v.grad.empty();
+  out.neighbors.offsets.assign(1, 0);
+  for (const auto r : rows) {
+    const auto from = v.neighbors.offsets[r], to = v.neighbors.offsets[r + 1];
+    out.neighbors.particles.insert(
+        out.neighbors.particles.end(),
+        v.neighbors.particles.begin() + static_cast<std::ptrdiff_t>(from),
+        v.neighbors.particles.begin() + static_cast<std::ptrdiff_t>(to));
+    out.phi.insert(out.phi.end(), v.phi.begin() + static_cast<std::ptrdiff_t>(from),
+                   v.phi.begin() + static_cast<std::ptrdiff_t>(to));
+    if (gradients)
+      out.grad.insert(out.grad.end(), v.grad.begin() + static_cast<std::ptrdiff_t>(from * d),
+                      v.grad.begin() + static_cast<std::ptrdiff_t>(to * d));
+    if (!v.condition.empty()) out.condition.push_back(v.condition[r]);
+    out.neighbors.offsets.push_back(out.neighbors.particles.size());
+  }
+  out.ill_conditioned = v.ill_conditioned;
+  return out;
+}
+
 }  // namespace efg

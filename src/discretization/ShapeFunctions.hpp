@@ -39,4 +39,9 @@ ShapeFunctionValues evaluate_shape_functions(const ParticleCloud& cloud, const d
                                              std::size_t count, bool gradients,
                                              const PointLabel& label = {});
 
+/// The rows `rows[k]` of `v`, in that order (a row may be taken more than once): the values at
+/// points that coincide with evaluated ones.
+ShapeFunctionValues select_rows(const ShapeFunctionValues& v, const std::vector<std::size_t>& rows,
+                                int dim);
+
 }  // namespace efg

@@ -196,8 +196,9 @@ void MixedPressure::add_tangent(const Vector& d_overlap, FEMatrix& K) const {
               const auto b = (l - first) * udim;
               vals[b + j] = s * (st.g[a + i] * st.g[b + j] - m * st.g[a + j] * st.g[b + i]);
             }
+          // Sorted rows (filled graph): binary search (SolidKernels.hpp, NodalTangentKernel).
           local.sumIntoValues(p.node[k] * dim_ + static_cast<int>(i), cols.data(),
-                              static_cast<int>(cols.size()), vals.data(), false, false);
+                              static_cast<int>(cols.size()), vals.data(), true, false);
         }
     }
 }

@@ -174,6 +174,9 @@ struct NodalTangentKernel {
           }
       // One sumIntoValues per row and chunk of 32 column particles: far fewer sorted-row
       // searches than one call per entry block, with a fixed-size scratch for any execution space.
+      // The rows of the filled graph are sorted: a column the hint misses is found by binary
+      // search, not by a scan of the whole row (3D rows hold 300-1,000 columns; the tangent of a
+      // 40 x 8 x 8 block with SCNI subcells took 1.0-1.2 s that way, 0.30-0.39 s now).
       constexpr int chunk = 32;
       int cols[chunk * Dim];
       double vals[chunk * Dim];
@@ -191,7 +194,7 @@ struct NodalTangentKernel {
               vals[m] = w * s;
             }
           }
-          K.sumIntoValues(n * Dim + i, cols, m, vals, false, false);
+          K.sumIntoValues(n * Dim + i, cols, m, vals, true, false);
         }
     }
   }
