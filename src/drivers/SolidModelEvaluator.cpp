@@ -101,10 +101,15 @@ void SolidModelEvaluator::evalModelImpl(
   // after W_op, before the linear solve), on every rank or none (MUMPS factors collectively). A
   // singular factorization is no failure of the evaluation point but of the linear system: it
   // propagates as a NumericalError.
+  // A linear problem (small-strain linear elastic, no contact) keeps its first factorization:
+  // when round-off makes Newton take a second iteration (a nearly incompressible block at
+  // nu = 0.4999, 33,516 dofs: 16 s per MUMPS factorization), or over the stage's load steps.
   if (!any && out.supports(Thyra::ModelEvaluatorBase::OUT_ARG_W_prec) &&
-      !out.get_W_prec().is_null() && !preconditioner_.is_null() && !last_jacobian_.is_null()) {
+      !out.get_W_prec().is_null() && !preconditioner_.is_null() && !last_jacobian_.is_null() &&
+      !(problem_.linear() && computed_for_linear_)) {
     Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewCounter("efg: linear solver setup"));
     preconditioner_->compute(last_jacobian_);
+    computed_for_linear_ = problem_.linear();
   }
   if (any && !f_thyra.is_null())
     Thyra::assign(f_thyra.ptr(), std::numeric_limits<double>::quiet_NaN());

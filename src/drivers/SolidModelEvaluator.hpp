@@ -57,6 +57,9 @@ class SolidModelEvaluator : public Thyra::StateFuncModelEvaluatorBase<double> {
   Teuchos::RCP<const Thyra::LinearOpWithSolveFactoryBase<double>> w_factory_;
   Thyra::ModelEvaluatorBase::InArgs<double> nominal_;
   Teuchos::RCP<MatrixPreconditioner> preconditioner_;
+  /// A linear problem's Jacobian is the same at every d: its first factorization (or multigrid
+  /// hierarchy) serves every later solve of the stage.
+  mutable bool computed_for_linear_ = false;
   mutable Teuchos::RCP<FEMatrix> last_jacobian_;  ///< the W_op evaluated last (W_prec's source)
   mutable std::string failure_;
 };
