@@ -12,19 +12,14 @@ bool EnergyBalanceCheck::failed(double balance_error) {
   return both;
 }
 
-std::string EnergyBalanceCheck::message(const RunState& state, long long step, long long particle,
-                                        const double* position, int dim) const {
+std::string EnergyBalanceCheck::message(double error, long long step, double time,
+                                        const std::string& energies,
+                                        const std::string& where) const {
   std::ostringstream o;
-  o << "stage '" << stage_ << "': energy balance error " << 100 * state.balance_error()
+  o << "stage '" << stage_ << "': energy balance error " << 100 * error
     << " % exceeds energy_balance_limit (" << 100 * limit_ << " %) at step " << step
-    << ", t = " << state.time << ": kinetic " << state.kinetic << " + internal " << state.internal
-    << " against initial " << state.initial_energy << " + work of loads and "
-    << "supports " << state.external_work << " + walls " << state.wall_work;
-  if (particle >= 0) {
-    o << "; the largest kinetic energy is at particle " << particle + 1 << " (X = (";
-    for (int k = 0; k < dim; ++k) o << (k ? ", " : "") << position[k];
-    o << "))";
-  }
+    << ", t = " << time << ": " << energies;
+  if (!where.empty()) o << "; " << where;
   o << ". Energy without work is an instability the stable time step does not bound (a "
        "nonsymmetric operator: the traction term of transformation supports on irregular "
        "particles flutters, method nitsche does not), or a force whose work is not accounted; "

@@ -27,11 +27,10 @@ class EnergyBalanceCheck {
   /// Records this check's balance error; true when it and the previous check's exceed the limit.
   bool failed(double balance_error);
   bool failed(const RunState& state) { return failed(state.balance_error()); }
-  double limit() const { return limit_; }
-  /// The message: the error, the energies, the step, time and the particle with the largest
-  /// kinetic energy (its id and reference position), what may cause it and how to go on.
-  std::string message(const RunState& state, long long step, long long particle,
-                      const double* position, int dim) const;
+  /// The message: the error, `energies` (what was compared), the step, time, `where` (e.g. the
+  /// particle with the largest kinetic energy; may be empty), what may cause it and how to go on.
+  std::string message(double error, long long step, double time, const std::string& energies,
+                      const std::string& where) const;
 
  private:
   std::string stage_;

@@ -119,18 +119,25 @@ bool ExplicitDriver::finite(const RunState& state) const {
   return all == 1;
 }
 
-void ExplicitDriver::report_non_finite(const RunState& state, long long step) const {
-  const long long any = non_finite_dof(state.d, &state.v);
+std::string ExplicitDriver::particle_label(long long particle) const {
   const int dim = ops_.model().mesh.dimension;
-  const auto node = static_cast<std::size_t>(any / dim);
+  const auto node = static_cast<std::size_t>(particle);
   std::ostringstream o;
-  o << "stage '" << stage_.name << "': a displacement or velocity is not finite at particle "
-    << node + 1 << " (X = (";
+  o << "particle " << node + 1 << " (X = (";
   for (int k = 0; k < dim; ++k)
     o << (k ? ", " : "")
       << ops_.model()
              .mesh.coordinates[node * static_cast<std::size_t>(dim) + static_cast<std::size_t>(k)];
-  o << ")) at step " << step << ", t = " << state.time << "; the last good state is in the results";
+  o << "))";
+  return o.str();
+}
+
+void ExplicitDriver::report_non_finite(const RunState& state, long long step) const {
+  const long long any = non_finite_dof(state.d, &state.v);
+  std::ostringstream o;
+  o << "stage '" << stage_.name << "': a displacement or velocity is not finite at "
+    << particle_label(any / ops_.model().mesh.dimension) << " at step " << step
+    << ", t = " << state.time << "; the last good state is in the results";
   throw NumericalError(o.str());
 }
 
@@ -140,13 +147,15 @@ void ExplicitDriver::report_energy_balance(const EnergyBalanceCheck& check, cons
   Vector w(mass_.getMap());
   w.elementWiseMultiply(1.0, mass_, state.v, 0.0);
   w.elementWiseMultiply(1.0, w, state.v, 0.0);
-  const int dim = ops_.model().mesh.dimension;
-  const auto peak = largest_particle_sum(w, dim);
-  const double* position =
-      peak.particle >= 0 ? &ops_.model().mesh.coordinates[static_cast<std::size_t>(peak.particle) *
-                                                          static_cast<std::size_t>(dim)]
-                         : nullptr;
-  throw NumericalError(check.message(state, step, peak.particle, position, dim));
+  const auto peak = largest_particle_sum(w, ops_.model().mesh.dimension);
+  std::ostringstream energies;
+  energies << "kinetic " << state.kinetic << " + internal " << state.internal << " against initial "
+           << state.initial_energy << " + work of loads and supports " << state.external_work
+           << " + walls " << state.wall_work;
+  throw NumericalError(check.message(
+      state.balance_error(), step, state.time, energies.str(),
+      peak.particle >= 0 ? "the largest kinetic energy is at " + particle_label(peak.particle)
+                         : ""));
 }
 
 void ExplicitDriver::refuse_endless(double span, double dt, double dt_crit) const {

@@ -12,6 +12,7 @@
 
 #include <functional>
 #include <memory>
+#include <string>
 
 #include "contact/RigidContact.hpp"
 #include "drivers/EnergyBalanceCheck.hpp"
@@ -59,6 +60,8 @@ class ExplicitDriver {
 
  private:
   bool finite(const RunState& state) const;  // collective
+  /// "particle N (X = (x, y, z))" of a global particle id, for messages.
+  std::string particle_label(long long particle) const;
   [[noreturn]] void report_non_finite(const RunState& state, long long step) const;
   [[noreturn]] void report_energy_balance(const EnergyBalanceCheck& check, const RunState& state,
                                           long long step) const;  // collective

@@ -197,4 +197,9 @@ class EssentialConditions {
                              double (&H)[Dim][Dim]);
 };
 
+/// The boundary points' states at one d (EssentialConditions::boundary_tangent).
+struct EssentialConditions::BoundaryTangent {
+  std::vector<PointState> points;  ///< one per boundary point, in points_' order
+};
+
 }  // namespace efg

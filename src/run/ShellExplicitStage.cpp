@@ -204,14 +204,10 @@ ShellExplicitSummary run_shell_explicit_stage(const Model& model, const FlatShel
     if (weak && !op.plastic()) refuse_non_coercive_supports(strain, kin);
     const double error = largest_energy > 0 ? imbalance / largest_energy : 0.0;
     if (balance.failed(error)) {
-      std::ostringstream o;
-      o << "stage '" << stage.name << "' (shells, explicit): energy balance error " << 100 * error
-        << " % exceeds energy_balance_limit (" << 100 * balance.limit() << " %) at step "
-        << summary.steps << ", t = " << t << ": kinetic " << kin << " + strain " << strain
-        << " against initial " << energy0 << " + work of loads and supports " << external_work
-        << "; energy without work is an instability the stable time step does not bound, or a "
-           "force whose work is not accounted. Raise energy_balance_limit (0: off) to run on";
-      throw NumericalError(o.str());
+      std::ostringstream energies;
+      energies << "kinetic " << kin << " + strain " << strain << " against initial " << energy0
+               << " + work of loads and supports " << external_work;
+      throw NumericalError(balance.message(error, summary.steps, t, energies.str(), ""));
     }
   };
   // The supports' forces written at a record are their mean since the previous record (the

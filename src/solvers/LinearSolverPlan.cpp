@@ -67,8 +67,9 @@ std::string LinearSolverPlan::describe() const {
 // Nearly incompressible models (nu >= 0.49, mixed u-p or not) are factored up to 4x that in 3D
 // and 2x in 2D: multigrid stalled on a mixed u-p block at nu = 0.4999 and 33,516 dofs (500
 // GMRES iterations, the residual 21x its start, exit 3 after 160 s), which the direct path
-// solves in 53 s (2.9 GB peak); 3D factorization memory grows about like n^(4/3) (2.7 GB at 54k dofs, about 8 GB at
-// 120k on this 23 GB machine), 2D about like n^1.3 (2.9 GB at 132k, about 7 GB at 300k).
+// solves in 33 s (2.7 GB peak); 3D factorization memory grows about like n^(4/3) (2.7 GB at
+// 54k dofs, about 8 GB at 120k on this 23 GB machine), 2D about like n^1.3 (2.9 GB at 132k,
+// about 7 GB at 300k).
 std::int64_t default_direct_limit(int dimension, bool nearly_incompressible) {
   const std::int64_t limit = dimension <= 2 ? 150000 : 30000;
   return nearly_incompressible ? limit * (dimension <= 2 ? 2 : 4) : limit;

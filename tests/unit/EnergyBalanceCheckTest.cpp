@@ -34,11 +34,10 @@ TEST(EnergyBalanceCheck, MessageNamesTheErrorStepTimeAndParticle) {
   state.kinetic = 3.0;  // 3 + 9 - 0 - 10 = 2 of the largest 10: 20 %
   state.internal = 9.0;
   state.external_work = 10.0;
-  state.time = 0.5;
-  const double X[2] = {0.25, 0.75};
-  const auto text = check.message(state, 42, 6, X, 2);
+  const auto text = check.message(state.balance_error(), 42, 0.5, "kinetic 3 + internal 9",
+                                  "the largest kinetic energy is at particle 7 (X = (0.25, 0.75))");
   for (const char* part : {"stage 'pull': energy balance error 20 % exceeds energy_balance_limit "
-                           "(10 %) at step 42, t = 0.5",
+                           "(10 %) at step 42, t = 0.5: kinetic 3 + internal 9",
                            "particle 7 (X = (0.25, 0.75))"})
     EXPECT_NE(text.find(part), std::string::npos) << text;
 }
