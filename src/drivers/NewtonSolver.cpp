@@ -126,7 +126,13 @@ NewtonSolver::NewtonSolver(NonlinearProblem& problem, const YAML::Node& stage,
                              stage["direct_limit"] ? stage["direct_limit"].as<std::int64_t>() : 0,
                              from_stage(stage, "linear_solver", file, where),
                              from_stage(stage, "preconditioner", file, where), dofs,
-                             model.mesh.dimension, ranks, model.scene.largest_poissons_ratio());
+                             model.mesh.dimension, ranks, model.scene.largest_poissons_ratio(),
+                             problem.auxiliary_misfit());
+  if (plan_.preconditioner == LinearSolverPlan::Preconditioner::auxiliary &&
+      !problem.auxiliary_impossible().empty())
+    throw InputError(file + ": " + where + ".preconditioner.Type: 'auxiliary' (multigrid on the "
+                     "background cells' finite elements) cannot stand in for this model: " +
+                     problem.auxiliary_impossible() + " (use MueLu, Ifpack2 or direct)");
   if (stage["residual_tolerance"]) tolerance_ = stage["residual_tolerance"].as<double>();
   try {
     nox_params_ = nonlinear_parameters(from_stage(stage, "nonlinear_solver", file, where),
@@ -141,11 +147,16 @@ NewtonSolver::NewtonSolver(NonlinearProblem& problem, const YAML::Node& stage,
                      ": the solver parameters were rejected by Trilinos: " + e.what());
   }
   Teuchos::RCP<Tpetra::MultiVector<>> modes, coordinates;
-  if (plan_.preconditioner == LinearSolverPlan::Preconditioner::multigrid) {
+  AuxiliaryMatrix auxiliary;
+  if (plan_.preconditioner == LinearSolverPlan::Preconditioner::auxiliary)
+    auxiliary = [&problem](const Tpetra::CrsMatrix<>& K) { return problem.auxiliary_matrix(K); };
+  if (plan_.preconditioner == LinearSolverPlan::Preconditioner::multigrid ||
+      plan_.preconditioner == LinearSolverPlan::Preconditioner::auxiliary) {
     modes = rigid_body_modes(model.maps, model.mesh.dimension, model.mesh.coordinates);
     coordinates = particle_coordinates(model.maps, model.mesh.dimension, model.mesh.coordinates);
   }
-  preconditioner_ = make_matrix_preconditioner(plan_, problem.owned_dofs(), modes, coordinates);
+  preconditioner_ =
+      make_matrix_preconditioner(plan_, problem.owned_dofs(), modes, coordinates, auxiliary);
   Vector zero(problem.owned_dofs());
   model_ = Teuchos::rcp(new SolidModelEvaluator(problem_, zero));
   model_->set_W_factory(lows_factory_);

@@ -7,6 +7,8 @@
 #include <Tpetra_FECrsMatrix.hpp>
 #include <Tpetra_Vector.hpp>
 
+#include <string>
+
 #include "model/Model.hpp"
 
 namespace efg {
@@ -39,6 +41,15 @@ class NonlinearProblem {
   /// residual leaves a second-order membrane residual larger than it; Newton's full step
   /// removes that one next, a line search on ||r|| crawls (docs/shells.md).
   virtual bool residual_norm_is_a_merit() const { return true; }
+  /// The auxiliary space of the iterative solver (operators/AuxiliaryStiffness): whether it fits
+  /// (empty) or why not, whether it cannot stand in at all (empty: it can), and its matrix from
+  /// the Jacobian K of the current stage.
+  virtual std::string auxiliary_misfit() const { return "not a solid model"; }
+  virtual std::string auxiliary_impossible() const { return "not a solid model"; }
+  virtual Teuchos::RCP<const Tpetra::CrsMatrix<>> auxiliary_matrix(
+      const Tpetra::CrsMatrix<>& /*K*/) const {
+    return Teuchos::null;
+  }
 };
 
 }  // namespace efg

@@ -13,6 +13,7 @@
 #include "contact/ImplicitContact.hpp"
 #include "contact/ImplicitSurfaceContact.hpp"
 #include "drivers/NonlinearProblem.hpp"
+#include "operators/AuxiliaryStiffness.hpp"
 #include "operators/EssentialConditions.hpp"
 #include "operators/ModelOperators.hpp"
 
@@ -89,6 +90,15 @@ class StaticProblem : public NonlinearProblem {
   const SolidOperator& solid() const { return ops_->solid(); }
   const ModelOperators& operators() const { return *ops_; }
   const Model& model() const override { return model_; }
+  std::string auxiliary_misfit() const override { return auxiliary_space_misfit(model_.scene); }
+  std::string auxiliary_impossible() const override {
+    return auxiliary_space_impossible(model_.scene);
+  }
+  /// The background cells' stiffness, with the current stage's constraint rows from K.
+  Teuchos::RCP<const Tpetra::CrsMatrix<>> auxiliary_matrix(
+      const Tpetra::CrsMatrix<>& K) const override {
+    return auxiliary_stiffness(model_, K, conditions_->constrained_rows());
+  }
 
   /// The force scale of the last residual evaluation: max(||f_ext||, ||f_int(d)||) (2-norms over
   /// the owned dofs; f_int without the boundary terms, so that it carries the reactions).

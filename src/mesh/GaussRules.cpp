@@ -147,6 +147,38 @@ double map_to_cell(CellType type, const double* x, const double* xi, double* poi
          j[0][2] * (j[1][0] * j[2][1] - j[1][1] * j[2][0]);
 }
 
+double shape_gradients(CellType type, const double* x, const double* xi, double* grad) {
+  double n[8], dn[8][3];
+  const int nodes = shape(type, xi, n, dn);
+  const int dim = cell_dimension(type);
+  double j[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 1}};  // J_dr = dx_d / dxi_r
+  for (int a = 0; a < nodes; ++a)
+    for (int d = 0; d < dim; ++d)
+      for (int r = 0; r < dim; ++r) j[d][r] += x[a * dim + d] * dn[a][r];
+  // inverse of J by cofactors (3 x 3; the 2D case has j[2][2] = 1)
+  const double det = j[0][0] * (j[1][1] * j[2][2] - j[1][2] * j[2][1]) -
+                     j[0][1] * (j[1][0] * j[2][2] - j[1][2] * j[2][0]) +
+                     j[0][2] * (j[1][0] * j[2][1] - j[1][1] * j[2][0]);
+  double inv[3][3];
+  inv[0][0] = (j[1][1] * j[2][2] - j[1][2] * j[2][1]) / det;
+  inv[0][1] = (j[0][2] * j[2][1] - j[0][1] * j[2][2]) / det;
+  inv[0][2] = (j[0][1] * j[1][2] - j[0][2] * j[1][1]) / det;
+  inv[1][0] = (j[1][2] * j[2][0] - j[1][0] * j[2][2]) / det;
+  inv[1][1] = (j[0][0] * j[2][2] - j[0][2] * j[2][0]) / det;
+  inv[1][2] = (j[0][2] * j[1][0] - j[0][0] * j[1][2]) / det;
+  inv[2][0] = (j[1][0] * j[2][1] - j[1][1] * j[2][0]) / det;
+  inv[2][1] = (j[0][1] * j[2][0] - j[0][0] * j[2][1]) / det;
+  inv[2][2] = (j[0][0] * j[1][1] - j[0][1] * j[1][0]) / det;
+  // dN/dx_d = sum_r dN/dxi_r dxi_r/dx_d
+  for (int a = 0; a < nodes; ++a)
+    for (int d = 0; d < dim; ++d) {
+      double g = 0;
+      for (int r = 0; r < dim; ++r) g += dn[a][r] * inv[r][d];
+      grad[a * dim + d] = g;
+    }
+  return det;
+}
+
 std::vector<double> reference_corners(CellType type) {
   switch (type) {
     case CellType::quad4:

@@ -26,6 +26,12 @@ ReferenceRule reference_rule(CellType type, int n);
 /// coordinates `point` and returns det J there (isoparametric map of the cell's nodes).
 double map_to_cell(CellType type, const double* x, const double* xi, double* point);
 
+/// The gradients of the cell's isoparametric shape functions at reference point xi, in physical
+/// coordinates (`grad`: dim per node, node after node), for node coordinates x; returns det J
+/// there (as map_to_cell). The finite element space of the background cells
+/// (operators/AuxiliaryStiffness).
+double shape_gradients(CellType type, const double* x, const double* xi, double* grad);
+
 /// Reference coordinates of the cell's corner nodes, dim per node.
 std::vector<double> reference_corners(CellType type);
 

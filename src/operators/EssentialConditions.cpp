@@ -466,6 +466,12 @@ void EssentialConditions::replace_rows(FEMatrix& K) const {
   }
 }
 
+std::vector<int> EssentialConditions::constrained_rows() const {
+  std::vector<int> rows;
+  for (const auto& c : nodes_) rows.push_back(c.owned_row);
+  return rows;
+}
+
 void EssentialConditions::build_reaction_weights(const Model& model) {
   // s_Ick = integral over condition c's boundary of |phi_I| (or |phi_I(X_J)| at its collocated
   // nodes when it covers no side), for each component k the condition constrains: every

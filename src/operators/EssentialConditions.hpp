@@ -77,6 +77,8 @@ class EssentialConditions {
   void replace_rows(const Vector& d_overlap, Vector& r_owned) const;
   /// ... and the owned matrix rows (after endAssembly).
   void replace_rows(FEMatrix& K) const;
+  /// The owned rows (local) that replace_rows replaces.
+  std::vector<int> constrained_rows() const;
 
   /// Path-dependent parts: the boundary points keep a plastic history of their own (the
   /// traction term needs the stress there); the last evaluation's state becomes the committed one

@@ -422,9 +422,10 @@ class SceneBuilder {
     const YAML::Node written = doc["preconditioner"];
     if (prec["Type"]) {
       const auto type = prec["Type"].as<std::string>();
-      if (type != "direct" && type != "MueLu" && type != "Ifpack2" && type != "None")
+      if (type != "direct" && type != "MueLu" && type != "auxiliary" && type != "Ifpack2" &&
+          type != "None")
         fail(written["Type"], at + ".Type",
-             "expected one of direct, MueLu, Ifpack2, None; found '" + type + "'");
+             "expected one of direct, MueLu, auxiliary, Ifpack2, None; found '" + type + "'");
       if (st["solver"].as<std::string>() == "direct" && type != "direct")
         fail(written["Type"], at + ".Type",
              "'" + type + "' contradicts solver: direct (remove one of them)");

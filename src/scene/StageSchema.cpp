@@ -58,7 +58,8 @@ SpecPtr stage_spec() {
                         passthrough("Belos parameter list; 'Solver Type' picks the method."), "{}"),
            optional_key(
                "preconditioner",
-               passthrough("'Type': direct, MueLu, Ifpack2 or None; the other keys go "
+               passthrough("'Type': direct, MueLu (on the Jacobian), auxiliary (MueLu on the "
+                           "background cells' finite elements), Ifpack2 or None; the other keys go "
                            "to that package's list ('solver': MUMPS, UMFPACK or KLU2 for direct)."),
                "{}")})
       .variant(

@@ -27,11 +27,29 @@ Teuchos::ParameterList multigrid_defaults(int dimension) {
   return p;
 }
 
+// The auxiliary space's matrix is symmetric positive definite (operators/AuxiliaryStiffness: the
+// constrained dofs eliminated symmetrically): smoothed aggregation with Chebyshev smoothing, the
+// textbook setting for elasticity.
+Teuchos::ParameterList auxiliary_defaults(int dimension) {
+  Teuchos::ParameterList p;
+  p.set("verbosity", "none");
+  p.set("multigrid algorithm", "sa");
+  p.set("number of equations", dimension);
+  p.set("max levels", 10);
+  p.set("coarse: max size", 1000);
+  p.set("smoother: type", "CHEBYSHEV");
+  p.set("coarse: type", "RILUK");
+  p.sublist("coarse: params").set("fact: iluk level-of-fill", 1);
+  p.set("aggregation: type", "uncoupled");
+  return p;
+}
+
 // The scene reader has checked the names, the contradictions and the direct solver's name
 // (SceneReader check_linear_solver), so `efg check` reports them; here they are known good.
 Plan::Preconditioner from_type(const std::string& type) {
   if (type == "direct") return Plan::Preconditioner::direct;
   if (type == "MueLu") return Plan::Preconditioner::multigrid;
+  if (type == "auxiliary") return Plan::Preconditioner::auxiliary;
   if (type == "Ifpack2") return Plan::Preconditioner::ifpack2;
   if (type == "None") return Plan::Preconditioner::none;
   throw std::logic_error("unchecked preconditioner type '" + type + "'");
@@ -51,6 +69,8 @@ std::string LinearSolverPlan::describe() const {
       return "direct (" + text(settings, "solver", "MUMPS") + " LU)";
     case Preconditioner::multigrid:
       return krylov_name + " + MueLu smoothed aggregation with rigid-body modes";
+    case Preconditioner::auxiliary:
+      return krylov_name + " + MueLu smoothed aggregation on the background cells' finite elements";
     case Preconditioner::ifpack2:
       return krylov_name + " + Ifpack2 " + text(settings, "Prec Type", "RILUK");
     case Preconditioner::none:
@@ -79,7 +99,7 @@ LinearSolverPlan plan_linear_solver(const std::string& solver, std::int64_t dire
                                     const Teuchos::ParameterList& linear_solver,
                                     const Teuchos::ParameterList& preconditioner,
                                     std::int64_t global_dofs, int dimension, int ranks,
-                                    double poissons_ratio) {
+                                    double poissons_ratio, const std::string& auxiliary_misfit) {
   Plan plan;
   const bool typed = preconditioner.isParameter("Type");
   const std::string type = typed ? preconditioner.get<std::string>("Type") : "";
@@ -109,6 +129,16 @@ LinearSolverPlan plan_linear_solver(const std::string& solver, std::int64_t dire
     plan.reason =
         "auto: " + std::to_string(global_dofs) + " dofs > " + std::to_string(limit) + why_limit;
   }
+  // The iterative path's multigrid goes on the background cells' finite elements where they fit
+  // (iterations flat under refinement there; docs/implicit.md, "Auxiliary space").
+  if (!typed && plan.preconditioner == Plan::Preconditioner::multigrid) {
+    if (auxiliary_misfit.empty()) {
+      plan.preconditioner = Plan::Preconditioner::auxiliary;
+      plan.reason += "; multigrid on the background cells' finite elements";
+    } else {
+      plan.reason += "; multigrid on the Jacobian: " + auxiliary_misfit;
+    }
+  }
   // Krylov method: GMRES (the transformation method makes the Jacobian nonsymmetric). With the
   // direct preconditioner it converges in one iteration; otherwise the iteration count is
   // bounded so that a hopeless solve stops with a message instead of running for hours.
@@ -133,6 +163,9 @@ LinearSolverPlan plan_linear_solver(const std::string& solver, std::int64_t dire
     case Plan::Preconditioner::multigrid:
       plan.settings = multigrid_defaults(dimension);
       break;
+    case Plan::Preconditioner::auxiliary:
+      plan.settings = auxiliary_defaults(dimension);
+      break;
     case Plan::Preconditioner::ifpack2:
       plan.settings.set("Prec Type", "RILUK");
       plan.settings.set("fact: iluk level-of-fill", 2);
@@ -146,7 +179,8 @@ LinearSolverPlan plan_linear_solver(const std::string& solver, std::int64_t dire
     return preconditioner.isParameter(key) &&
            preconditioner.get<std::string>(key) != plan.settings.get<std::string>(key);
   };
-  if (plan.preconditioner == Plan::Preconditioner::multigrid) {
+  if (plan.preconditioner == Plan::Preconditioner::multigrid ||
+      plan.preconditioner == Plan::Preconditioner::auxiliary) {
     if (replaced("smoother: type")) plan.settings.remove("smoother: params");
     if (replaced("coarse: type")) plan.settings.remove("coarse: params");
   }

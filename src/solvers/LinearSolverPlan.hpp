@@ -6,7 +6,10 @@
 //                of the whole Jacobian, used as the preconditioner of GMRES, which then
 //                converges in one iteration.
 //   iterative  - GMRES preconditioned by smoothed-aggregation multigrid (MueLu) with the
-//                rigid-body modes as near-null space, or by the preconditioner the stage names.
+//                rigid-body modes as near-null space, built on the finite elements of the
+//                background cells where they fit the model (auxiliary space:
+//                operators/AuxiliaryStiffness.hpp), else on the Jacobian; or by the
+//                preconditioner the stage names.
 //   auto       - direct up to `direct_limit` dofs, iterative above.
 //
 // Plain data: resolving the plan needs the stage settings, the dof count and the rank count.
@@ -20,7 +23,7 @@
 namespace efg {
 
 struct LinearSolverPlan {
-  enum class Preconditioner { direct, multigrid, ifpack2, none };
+  enum class Preconditioner { direct, multigrid, auxiliary, ifpack2, none };
   Preconditioner preconditioner = Preconditioner::direct;
   std::string reason;               ///< why this one (for the log)
   Teuchos::ParameterList krylov;    ///< the Belos list for the chosen method
@@ -43,11 +46,13 @@ std::int64_t default_direct_limit(int dimension, bool nearly_incompressible = fa
 /// `solver` is the stage's `solver` key (auto, direct, iterative), `direct_limit` its key of that
 /// name (<= 0: the default), `linear_solver` and `preconditioner` its pass-through maps, as the
 /// scene reader checked them. `poissons_ratio`: the model's largest (nearly incompressible from
-/// kNearlyIncompressible on).
+/// kNearlyIncompressible on). `auxiliary_misfit`: empty when the auxiliary space fits the model
+/// (the iterative path then uses it), else why not.
 LinearSolverPlan plan_linear_solver(const std::string& solver, std::int64_t direct_limit,
                                     const Teuchos::ParameterList& linear_solver,
                                     const Teuchos::ParameterList& preconditioner,
                                     std::int64_t global_dofs, int dimension, int ranks,
-                                    double poissons_ratio = 0.0);
+                                    double poissons_ratio = 0.0,
+                                    const std::string& auxiliary_misfit = "no model");
 
 }  // namespace efg

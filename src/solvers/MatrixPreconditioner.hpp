@@ -1,14 +1,16 @@
 // A preconditioner rebuilt from each new Jacobian, seen by Belos as a plain Tpetra operator
 // (applied on the right, so GMRES measures the true residual). The model evaluator hands it to
 // NOX as W_prec; `compute` runs once per Newton iteration, after the Jacobian is assembled.
-// Three kinds (solvers/LinearSolverPlan.hpp): a direct LU factorization (Amesos2), smoothed
-// aggregation multigrid with rigid-body modes (MueLu), an Ifpack2 preconditioner.
+// Four kinds (solvers/LinearSolverPlan.hpp): a direct LU factorization (MUMPS, UMFPACK, Amesos2),
+// smoothed aggregation multigrid with rigid-body modes (MueLu) on the Jacobian or on an
+// auxiliary finite element matrix, an Ifpack2 preconditioner.
 #pragma once
 
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_MultiVector.hpp>
 #include <Tpetra_Operator.hpp>
 
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -46,11 +48,18 @@ class MatrixPreconditioner : public Tpetra::Operator<> {
   Teuchos::RCP<Tpetra::Operator<>> built_;  ///< set by compute() of package preconditioners
 };
 
-/// The preconditioner of `plan`; `near_null_space` (the rigid-body modes) is used by multigrid.
+/// The matrix the auxiliary-space multigrid is built on, from the Jacobian K (its rows and
+/// maps): operators/AuxiliaryStiffness. Empty: K itself.
+using AuxiliaryMatrix =
+    std::function<Teuchos::RCP<const Tpetra::CrsMatrix<>>(const Tpetra::CrsMatrix<>& K)>;
+
+/// The preconditioner of `plan`; `near_null_space` (the rigid-body modes) is used by multigrid,
+/// `auxiliary` by the auxiliary-space multigrid.
 Teuchos::RCP<MatrixPreconditioner> make_matrix_preconditioner(
     const LinearSolverPlan& plan, const Teuchos::RCP<const Tpetra::Map<>>& dofs,
     const Teuchos::RCP<Tpetra::MultiVector<>>& near_null_space,
-    const Teuchos::RCP<Tpetra::MultiVector<>>& coordinates);
+    const Teuchos::RCP<Tpetra::MultiVector<>>& coordinates,
+    const AuxiliaryMatrix& auxiliary = {});
 
 Teuchos::RCP<MatrixPreconditioner> make_direct_preconditioner(
     const Teuchos::ParameterList& settings);
@@ -58,6 +67,12 @@ Teuchos::RCP<MatrixPreconditioner> make_multigrid_preconditioner(
     const Teuchos::ParameterList& settings,
     const Teuchos::RCP<Tpetra::MultiVector<>>& near_null_space,
     const Teuchos::RCP<Tpetra::MultiVector<>>& coordinates);
+/// Multigrid built once from the auxiliary matrix of the first Jacobian (the stage's), then
+/// kept: the matrix does not depend on the state (solvers/AuxiliaryPreconditioner.cpp).
+Teuchos::RCP<MatrixPreconditioner> make_auxiliary_preconditioner(
+    const Teuchos::ParameterList& settings,
+    const Teuchos::RCP<Tpetra::MultiVector<>>& near_null_space,
+    const Teuchos::RCP<Tpetra::MultiVector<>>& coordinates, AuxiliaryMatrix auxiliary);
 Teuchos::RCP<MatrixPreconditioner> make_ifpack2_preconditioner(
     const Teuchos::ParameterList& settings);
 
