@@ -127,12 +127,7 @@ NewtonSolver::NewtonSolver(NonlinearProblem& problem, const YAML::Node& stage,
                              from_stage(stage, "linear_solver", file, where),
                              from_stage(stage, "preconditioner", file, where), dofs,
                              model.mesh.dimension, ranks, model.scene.largest_poissons_ratio(),
-                             problem.auxiliary_misfit());
-  if (plan_.preconditioner == LinearSolverPlan::Preconditioner::auxiliary &&
-      !problem.auxiliary_impossible().empty())
-    throw InputError(file + ": " + where + ".preconditioner.Type: 'auxiliary' (multigrid on the "
-                     "background cells' finite elements) cannot stand in for this model: " +
-                     problem.auxiliary_impossible() + " (use MueLu, Ifpack2 or direct)");
+                             problem.auxiliary_misfit(), problem.auxiliary_impossible());
   if (stage["residual_tolerance"]) tolerance_ = stage["residual_tolerance"].as<double>();
   try {
     nox_params_ = nonlinear_parameters(from_stage(stage, "nonlinear_solver", file, where),

@@ -151,11 +151,12 @@ double shape_gradients(CellType type, const double* x, const double* xi, double*
   double n[8], dn[8][3];
   const int nodes = shape(type, xi, n, dn);
   const int dim = cell_dimension(type);
-  double j[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 1}};  // J_dr = dx_d / dxi_r
+  double j[3][3] = {};  // J_dr = dx_d / dxi_r (in 2D j[2][2] = 1, so the 3 x 3 formulas apply)
+  if (dim == 2) j[2][2] = 1.0;
   for (int a = 0; a < nodes; ++a)
     for (int d = 0; d < dim; ++d)
       for (int r = 0; r < dim; ++r) j[d][r] += x[a * dim + d] * dn[a][r];
-  // inverse of J by cofactors (3 x 3; the 2D case has j[2][2] = 1)
+  // inverse of J by cofactors
   const double det = j[0][0] * (j[1][1] * j[2][2] - j[1][2] * j[2][1]) -
                      j[0][1] * (j[1][0] * j[2][2] - j[1][2] * j[2][0]) +
                      j[0][2] * (j[1][0] * j[2][1] - j[1][1] * j[2][0]);

@@ -1,9 +1,12 @@
-// The auxiliary-space preconditioner (operators/AuxiliaryStiffness.hpp): smoothed-aggregation
-// multigrid (the multigrid path's MueLu settings, with the rigid-body modes) built on a finite
-// element matrix of the background cells instead of the meshfree Jacobian. The matrix depends on
-// the reference configuration and the elastic moduli only, so the hierarchy is built once, from
-// the stage's first Jacobian, and kept for every Newton iteration and load step after it (a
-// tangent that softens - plasticity, large rotations - costs Krylov iterations, not setups).
+// The auxiliary-space preconditioner (operators/AuxiliaryStiffness.hpp): one smoothed-aggregation
+// multigrid cycle (MueLu, Chebyshev smoothing: the matrix is symmetric positive definite) on the
+// finite element matrix of the background cells instead of the meshfree Jacobian. The matrix
+// depends on the reference configuration and the elastic moduli only, so it and its hierarchy
+// are built once, from the stage's first Jacobian, and kept for every Newton iteration and load
+// step after it (a tangent that softens - plasticity, large rotations - costs Krylov
+// iterations, not setups). A few inner Krylov iterations per application (flexible GMRES
+// outside) were measured: fewer outer iterations (block 30,927 dofs: 29 against 46), no less
+// time (4.5 against 3.0 s).
 #include <Teuchos_Time.hpp>
 
 #include "solvers/MatrixPreconditioner.hpp"
@@ -23,8 +26,7 @@ class AuxiliaryPreconditioner : public MatrixPreconditioner {
   void compute(const Teuchos::RCP<const Matrix>& K) override {
     if (built_once_) return;
     Teuchos::Time clock("auxiliary setup", true);
-    const auto A = auxiliary_ ? auxiliary_(*K) : K;
-    multigrid_->compute(A);
+    multigrid_->compute(auxiliary_ ? auxiliary_(*K) : K);
     built_once_ = true;
     setup_seconds_ += clock.stop();
   }

@@ -47,12 +47,15 @@ std::int64_t default_direct_limit(int dimension, bool nearly_incompressible = fa
 /// name (<= 0: the default), `linear_solver` and `preconditioner` its pass-through maps, as the
 /// scene reader checked them. `poissons_ratio`: the model's largest (nearly incompressible from
 /// kNearlyIncompressible on). `auxiliary_misfit`: empty when the auxiliary space fits the model
-/// (the iterative path then uses it), else why not.
+/// (the iterative path then uses it in 3D), else why not; `auxiliary_impossible`: empty when it
+/// can stand in at all (a stage's `Type: auxiliary` falls back to multigrid on the Jacobian
+/// otherwise).
 LinearSolverPlan plan_linear_solver(const std::string& solver, std::int64_t direct_limit,
                                     const Teuchos::ParameterList& linear_solver,
                                     const Teuchos::ParameterList& preconditioner,
                                     std::int64_t global_dofs, int dimension, int ranks,
                                     double poissons_ratio = 0.0,
-                                    const std::string& auxiliary_misfit = "no model");
+                                    const std::string& auxiliary_misfit = "no model",
+                                    const std::string& auxiliary_impossible = "no model");
 
 }  // namespace efg

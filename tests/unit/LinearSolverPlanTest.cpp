@@ -39,5 +39,36 @@ TEST(LinearSolverPlan, AWrittenLimitWins) {
   EXPECT_EQ(automatic(33516, 3, 0.3, 40000).preconditioner, P::direct);
 }
 
+// The auxiliary space (operators/AuxiliaryStiffness): taken by the 3D iterative path where it
+// fits the model, never in 2D (the Jacobian's own multigrid was as fast there), refused with a
+// fallback where it cannot stand in.
+TEST(LinearSolverPlan, TheIterativePathUsesTheAuxiliarySpaceIn3DWhereItFits) {
+  const auto fits = [](std::int64_t dofs, int dim, const std::string& misfit,
+                       const std::string& solver = "auto") {
+    return plan_linear_solver(solver, 0, Teuchos::ParameterList(), Teuchos::ParameterList(), dofs,
+                              dim, 1, 0.3, misfit, misfit);
+  };
+  EXPECT_EQ(fits(33516, 3, "").preconditioner, P::auxiliary);
+  EXPECT_EQ(fits(1000, 3, "", "iterative").preconditioner, P::auxiliary);
+  EXPECT_EQ(fits(30000, 3, "").preconditioner, P::direct);
+  const auto scni = fits(33516, 3, "part 'p' is integrated by scni");
+  EXPECT_EQ(scni.preconditioner, P::multigrid);
+  EXPECT_NE(scni.reason.find("integrated by scni"), std::string::npos) << scni.reason;
+  EXPECT_EQ(fits(150001, 2, "").preconditioner, P::multigrid);
+  // Asked for by name: taken where it can stand in, else multigrid on the Jacobian.
+  Teuchos::ParameterList asked;
+  asked.set("Type", std::string("auxiliary"));
+  const auto named = plan_linear_solver("iterative", 0, Teuchos::ParameterList(), asked, 1000, 2, 1,
+                                        0.3, "part 'p' is integrated by scni", "");
+  EXPECT_EQ(named.preconditioner, P::auxiliary);
+  EXPECT_EQ(named.settings.get<std::string>("smoother: type"), "CHEBYSHEV");
+  const auto refused = plan_linear_solver("iterative", 0, Teuchos::ParameterList(), asked, 1000, 3,
+                                          1, 0.3, "condition 'c' is imposed by nitsche",
+                                          "condition 'c' is imposed by nitsche");
+  EXPECT_EQ(refused.preconditioner, P::multigrid);
+  EXPECT_EQ(refused.settings.get<std::string>("smoother: type"), "RILUK");
+  EXPECT_NE(refused.reason.find("nitsche"), std::string::npos) << refused.reason;
+}
+
 }  // namespace
 }  // namespace efg
