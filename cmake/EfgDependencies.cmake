@@ -52,9 +52,16 @@ efg_debian_library(efg_exodus exodusII.h "exodusii" "exoIIv2;exodus;exoIIv2c" "E
                    libexodusii-dev)
 # UMFPACK (Debian's libsuitesparse-dev): the default sparse direct solver (solvers/SparseLU).
 efg_debian_library(efg_umfpack suitesparse/umfpack.h "" "umfpack" UMFPACK libsuitesparse-dev)
-# MUMPS with Scotch / PT-Scotch orderings (Debian's libmumps-ptscotch-dev): the distributed
-# sparse direct solver (solvers/DistributedLU).
-efg_debian_library(efg_mumps dmumps_c.h "" "dmumps_ptscotch" MUMPS libmumps-ptscotch-dev)
+# MUMPS (Debian's libmumps-dev): the distributed sparse direct solver (solvers/DistributedLU).
+# The build Trilinos' own link interface names (Amesos2's TPL), so it is the one the process
+# binds dmumps_c to whatever is listed here: PORD, AMD, AMF and QAMD orderings, sequential
+# analysis. (Sessions 10-23 asked for libmumps-ptscotch-dev here and still ran this one, the
+# linker resolving dmumps_c from Trilinos' earlier libdmumps. The PT-Scotch build, put first in
+# the link, was measured in session 24 and is not better: its automatic ordering is Scotch, 3.09
+# GFlop against PORD's 2.39 on the 8,514-dof beam and 15.7 against 14.3 on the 9,300-dof block;
+# its parallel analysis works (ICNTL(28) = 2, 29 = 1) but orders the 132,354-dof beam for 3.0e11
+# flops against 1.97e11: 2 ranks 12.8 s against PORD's 11.3 s Newton phase.)
+efg_debian_library(efg_mumps dmumps_c.h "" "dmumps" MUMPS libmumps-dev)
 
 # yaml-cpp as a SYSTEM include as well.
 add_library(efg_yaml INTERFACE)

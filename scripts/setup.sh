@@ -12,7 +12,7 @@ packages=(
   libyaml-cpp-dev libgtest-dev python3-yaml
   libmuparser-dev        # expressions in scene values (issue 19)
   libsuitesparse-dev     # UMFPACK, the one-process direct solver
-  libmumps-ptscotch-dev  # MUMPS, the distributed direct solver
+  libmumps-dev           # MUMPS, the distributed direct solver (the build Trilinos links)
   libopenblas0-serial    # one-thread optimized BLAS: UMFPACK's frontal matrices 1.7x faster than reference
   python3-netcdf4 python3-matplotlib python3-numpy
   python3-scipy          # tests/verification/shells/clamped_plate_fd.py (the plate reference values)

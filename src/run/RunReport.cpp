@@ -75,6 +75,7 @@ const std::vector<std::string>& report_phases() {
                                                   "partition (Zoltan2 RCB)",
                                                   "neighbour search (ghosts, particles)",
                                                   "shape functions and integration",
+                                                  "stiffness graph",
                                                   "internal force",
                                                   "tangent assembly",
                                                   "essential conditions",
@@ -82,7 +83,8 @@ const std::vector<std::string>& report_phases() {
                                                   "linear solver setup",
                                                   "stable time step",
                                                   "explicit time steps",
-                                                  "output"};
+                                                  "output",
+                                                  "verification (error norms)"};
   return phases;
 }
 

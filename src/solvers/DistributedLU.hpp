@@ -1,7 +1,7 @@
 // A sparse LU factorization of a matrix distributed over the processes of a communicator, by
 // MUMPS (Amestoy, Duff, L'Excellent, Koster, "A fully asynchronous multifrontal solver using
 // distributed dynamic scheduling", SIAM J. Matrix Anal. Appl. 23(1), 2001; Debian's
-// libmumps-ptscotch-dev). Multifrontal like UMFPACK (BLAS 3 on the dense fronts), but the fronts
+// libmumps-dev). Multifrontal like UMFPACK (BLAS 3 on the dense fronts), but the fronts
 // of the elimination tree are factored by all processes together, so a 2-rank run factors in
 // about half the time where the one-process UMFPACK path gains nothing (docs/implicit.md).
 //
