@@ -3,6 +3,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "tensor/Tensor.hpp"
+
 namespace efg {
 namespace {
 
@@ -151,25 +153,14 @@ double shape_gradients(CellType type, const double* x, const double* xi, double*
   double n[8], dn[8][3];
   const int nodes = shape(type, xi, n, dn);
   const int dim = cell_dimension(type);
-  double j[3][3] = {};  // J_dr = dx_d / dxi_r (in 2D j[2][2] = 1, so the 3 x 3 formulas apply)
+  double j[3][3] = {};  // J_dr = dx_d / dxi_r; in 2D j[2][2] = 1, so the 3 x 3 inverse applies
   if (dim == 2) j[2][2] = 1.0;
   for (int a = 0; a < nodes; ++a)
     for (int d = 0; d < dim; ++d)
       for (int r = 0; r < dim; ++r) j[d][r] += x[a * dim + d] * dn[a][r];
-  // inverse of J by cofactors
-  const double det = j[0][0] * (j[1][1] * j[2][2] - j[1][2] * j[2][1]) -
-                     j[0][1] * (j[1][0] * j[2][2] - j[1][2] * j[2][0]) +
-                     j[0][2] * (j[1][0] * j[2][1] - j[1][1] * j[2][0]);
+  const double det = physics::determinant<3>(j);
   double inv[3][3];
-  inv[0][0] = (j[1][1] * j[2][2] - j[1][2] * j[2][1]) / det;
-  inv[0][1] = (j[0][2] * j[2][1] - j[0][1] * j[2][2]) / det;
-  inv[0][2] = (j[0][1] * j[1][2] - j[0][2] * j[1][1]) / det;
-  inv[1][0] = (j[1][2] * j[2][0] - j[1][0] * j[2][2]) / det;
-  inv[1][1] = (j[0][0] * j[2][2] - j[0][2] * j[2][0]) / det;
-  inv[1][2] = (j[0][2] * j[1][0] - j[0][0] * j[1][2]) / det;
-  inv[2][0] = (j[1][0] * j[2][1] - j[1][1] * j[2][0]) / det;
-  inv[2][1] = (j[0][1] * j[2][0] - j[0][0] * j[2][1]) / det;
-  inv[2][2] = (j[0][0] * j[1][1] - j[0][1] * j[1][0]) / det;
+  physics::inverse<3>(j, det, inv);
   // dN/dx_d = sum_r dN/dxi_r dxi_r/dx_d
   for (int a = 0; a < nodes; ++a)
     for (int d = 0; d < dim; ++d) {

@@ -28,19 +28,12 @@ Teuchos::ParameterList multigrid_defaults(int dimension) {
 }
 
 // The auxiliary space's matrix is symmetric positive definite (operators/AuxiliaryStiffness: the
-// constrained dofs eliminated symmetrically): smoothed aggregation with Chebyshev smoothing, the
-// textbook setting for elasticity.
+// constrained dofs eliminated symmetrically): Chebyshev smoothing, the textbook setting for
+// elasticity, where the Jacobian's collocated rows need ILU.
 Teuchos::ParameterList auxiliary_defaults(int dimension) {
-  Teuchos::ParameterList p;
-  p.set("verbosity", "none");
-  p.set("multigrid algorithm", "sa");
-  p.set("number of equations", dimension);
-  p.set("max levels", 10);
-  p.set("coarse: max size", 1000);
+  auto p = multigrid_defaults(dimension);
   p.set("smoother: type", "CHEBYSHEV");
-  p.set("coarse: type", "RILUK");
-  p.sublist("coarse: params").set("fact: iluk level-of-fill", 1);
-  p.set("aggregation: type", "uncoupled");
+  p.remove("smoother: params");
   return p;
 }
 

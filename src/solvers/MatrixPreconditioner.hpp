@@ -58,8 +58,7 @@ using AuxiliaryMatrix =
 Teuchos::RCP<MatrixPreconditioner> make_matrix_preconditioner(
     const LinearSolverPlan& plan, const Teuchos::RCP<const Tpetra::Map<>>& dofs,
     const Teuchos::RCP<Tpetra::MultiVector<>>& near_null_space,
-    const Teuchos::RCP<Tpetra::MultiVector<>>& coordinates,
-    const AuxiliaryMatrix& auxiliary = {});
+    const Teuchos::RCP<Tpetra::MultiVector<>>& coordinates, const AuxiliaryMatrix& auxiliary = {});
 
 Teuchos::RCP<MatrixPreconditioner> make_direct_preconditioner(
     const Teuchos::ParameterList& settings);
