@@ -2,15 +2,17 @@
 // solver (Xu, "The auxiliary space method and optimal multigrid preconditioning techniques for
 // unstructured grids", Computing 56, 1996): the small-strain elastic stiffness of the
 // background cells of every part (operators/CellStiffness) on the same nodes, so the same dofs,
-// with the part's elastic moduli, and the meshfree Jacobian's own rows where it has constraint
-// rows (the transformation method's collocated conditions). Multigrid on it is cheap (27
-// couplings per node on hexes against 60-130 of the meshfree rows) and scales, and where the
-// meshfree integration has no spurious low-energy modes (Gauss cells, SCNI subcells) the two
-// are spectrally equivalent: with the exact inverse of this matrix as preconditioner GMRES took
-// 11 iterations on the cantilever block at 297, 1,575 and 9,963 dofs with Gauss cells and 17-19
-// with subcells; with plain SCNI 65 / 120 / 238 (its smoothing points see no strain of nodal
-// modes near the grid's highest frequency: the meshfree matrix has energies down to h^2 of the
-// finite elements' there). docs/implicit.md, "Auxiliary space".
+// with the part's elastic moduli; the dofs the transformation method constrains are eliminated
+// symmetrically (row and column dropped, the collocated row's own diagonal kept), so the matrix
+// is symmetric positive definite. Multigrid on it is cheap (27 couplings per node on hexes
+// against some 90 of the meshfree rows at dilation 1.5) and scales, and where the meshfree
+// integration has no spurious low-energy modes (Gauss cells, SCNI subcells) the two are
+// spectrally equivalent:
+// with the exact inverse of this matrix as preconditioner GMRES took 12-14 iterations on the
+// cantilever block at 297, 1,575 and 9,963 dofs with Gauss cells and 19-22 with subcells; with
+// plain SCNI 65 / 120 / 238 (its smoothing points see no strain of nodal modes near the grid's
+// highest frequency: the meshfree matrix has energies down to h^2 of the finite elements'
+// there). docs/implicit.md, "Auxiliary space".
 #pragma once
 
 #include <Tpetra_CrsMatrix.hpp>
@@ -32,9 +34,9 @@ std::string auxiliary_space_impossible(const Scene& scene);
 /// integration (spurious low-energy modes: iterations grow under refinement).
 std::string auxiliary_space_misfit(const Scene& scene);
 
-/// The matrix on K's owned rows (the model's owned dofs): the background cells' stiffness, and
-/// K's own rows at `copied_rows` (local owned rows: the constraint rows) and wherever no cell
-/// reaches. Collective.
+/// The matrix on K's owned rows (the model's owned dofs): the background cells' stiffness with
+/// the dofs of `copied_rows` (local owned rows: the constraint rows, on every rank) eliminated
+/// symmetrically, their diagonal K's; K's own row wherever no cell reaches. Collective.
 Teuchos::RCP<Tpetra::CrsMatrix<>> auxiliary_stiffness(const Model& model,
                                                       const Tpetra::CrsMatrix<>& K,
                                                       const std::vector<int>& copied_rows);
