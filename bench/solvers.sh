@@ -2,7 +2,8 @@
 # Implicit solve time, today's default solver against the previous defaults, side by side in one
 # run (docs/implicit.md): the Timoshenko beam at 8,514 dofs (default MUMPS, the previous direct
 # default UMFPACK, the first default GMRES + Ifpack2 ILU(2)), at 33,410 and 132,354 dofs on 1 and
-# 2 ranks (MUMPS; UMFPACK on 1), and the cantilever block at about 10,000 and 75,000 particles.
+# 2 ranks (MUMPS; UMFPACK on 1), the cantilever block at about 10,000 and 75,000 particles, and
+# the block with SCNI subcells at 30,927 dofs (auxiliary space against multigrid on the Jacobian).
 # Prints, per model and solver, the Newton phase (linear solver setup + Krylov + assembly inside
 # Newton), the setup share and the linear iterations. Runs longer than EFG_BENCH_TIMEOUT seconds
 # (default 600) are stopped and shown as "> limit". Not part of the test suite.
@@ -79,3 +80,15 @@ for cells in "${models[@]}"; do
   run "$tag, default" "$work/block.yaml"
   run "$tag, previous" "$work/block_old.yaml"
 done
+# The auxiliary space (docs/implicit.md): the block with SCNI subcells above the direct limit,
+# the default (multigrid on the background cells' finite elements) against multigrid on the
+# Jacobian, side by side.
+subcells() {  # subcells FILE CELLS STAGE_EXTRA
+  scene "$here/input/block.yaml" "$1" "$2" "$3"
+  sed -i 's/integration: scni/integration: scni_subcells/' "$1"
+}
+subcells "$work/aux.yaml" "60, 12, 12" ""
+subcells "$work/aux_jacobian.yaml" "60, 12, 12" "
+    preconditioner: {Type: MueLu}"
+run "block 60x12x12 subcells, default (auxiliary space)" "$work/aux.yaml"
+run "block 60x12x12 subcells, multigrid on the Jacobian" "$work/aux_jacobian.yaml"
