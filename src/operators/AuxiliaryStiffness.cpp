@@ -15,20 +15,6 @@ namespace {
 using GO = Tpetra::CrsMatrix<>::global_ordinal_type;
 using Entries = std::vector<std::pair<GO, double>>;  // (column gid, value), one row
 
-const char* integration_name(Integration i) {
-  switch (i) {
-    case Integration::scni:
-      return "scni";
-    case Integration::scni_subcells:
-      return "scni_subcells";
-    case Integration::nodal:
-      return "nodal";
-    case Integration::gauss:
-      return "gauss";
-  }
-  return "?";
-}
-
 // Sorts a row by column and sums repeated columns.
 void merge(Entries& row) {
   std::sort(row.begin(), row.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
@@ -50,7 +36,8 @@ std::string auxiliary_space_misfit(const Scene& scene) {
   for (const auto& part : scene.parts) {
     const auto integration = part.section.integration;
     if (integration != Integration::gauss && integration != Integration::scni_subcells)
-      return "part '" + part.name + "' is integrated by " + integration_name(integration) +
+      return "part '" + part.name + "' is integrated by " +
+             (integration == Integration::scni ? "scni" : "nodal") +
              " (only gauss and scni_subcells are free of spurious low-energy modes)";
   }
   return "";
