@@ -11,6 +11,8 @@
 #   -DEXODIFF_HINTS="a|b"   folders to search for exodiff
 #   -DTIMES=path            folder where each run leaves its timing for the summary
 #   -DTEST=name             the test name (for the timing file)
+#   -DJOIN=ON               the scene writes one file per rank (output.files: per_rank): on more
+#                           than one rank SEACAS epu (beside exodiff) joins them into the result
 #   -DEXPECT_DIFFERENCE=regex  mutant mode, for tests registered with WILL_FAIL: the script fails
 #                           (and CTest, inverting, passes) only when efg succeeded and exodiff
 #                           reported different files (exit code 2) with output matching the regex.
@@ -73,7 +75,26 @@ if(NOT done)
   file(WRITE "${OUTDIR}/efg.log" "${log}")
   string(REPLACE ";" " " shown "${command}")
   message("efg on ${RANKS} rank(s): exit code ${code}, ${efg_seconds} s: ${shown}")
-  if(NOT code EQUAL 0 OR NOT EXISTS "${result}")
+  if(JOIN AND RANKS GREATER 1 AND code EQUAL 0)
+    # the rank zero-padded to the digits of the rank count, as SEACAS names decomposed files
+    string(LENGTH "${RANKS}" digits)
+    string(REPEAT "0" ${digits} first)
+    get_filename_component(bin "${EXODIFF}" DIRECTORY)
+    find_program(epu epu HINTS "${bin}" NO_DEFAULT_PATH)
+    if(EXISTS "${result}")
+      wrong("efg wrote the gathered ${result} where the scene asks for one file per rank")
+    elseif(NOT epu)
+      wrong("epu not found beside ${EXODIFF}: run scripts/build_exodiff.sh")
+    else()
+      execute_process(COMMAND "${epu}" -auto "${result}.${RANKS}.${first}"
+                      WORKING_DIRECTORY "${OUTDIR}" RESULT_VARIABLE join_code
+                      OUTPUT_VARIABLE join_log ERROR_VARIABLE join_log)
+      file(WRITE "${OUTDIR}/epu.log" "${join_log}")
+      message("epu joined ${RANKS} files: exit code ${join_code}")
+    endif()
+  endif()
+  if(done)
+  elseif(NOT code EQUAL 0 OR NOT EXISTS "${result}")
     wrong("efg failed (exit code ${code}) or wrote no ${result}; log in ${OUTDIR}/efg.log:\n${log}")
   endif()
 endif()

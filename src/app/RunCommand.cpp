@@ -12,6 +12,7 @@
 #include "core/Log.hpp"
 #include "core/Threads.hpp"
 #include "core/Version.hpp"
+#include "io/ResultsOutput.hpp"
 #include "model/Model.hpp"
 #include "run/OutputPaths.hpp"
 #include "run/RunChecks.hpp"
@@ -75,7 +76,13 @@ void run_command(const CommPtr& comm, const CommandLine& cl) {
   const auto outcome = run_stages(comm, model, path.string(), setup);
   if (model.scene.stages.empty())
     Log::info("model check: initial state written (no stages in the scene)");
-  Log::info("results: " + std::filesystem::absolute(path).lexically_normal().string());
+  const auto results = std::filesystem::absolute(path).lexically_normal().string();
+  if (model.scene.output.per_rank_files && comm->getSize() > 1)
+    Log::info("results: one file per rank, " + piece_path(results, comm->getSize(), 0) +
+              " ...; join them with SEACAS epu: epu -auto " +
+              piece_path(results, comm->getSize(), 0));
+  else
+    Log::info("results: " + results);
   print_run_summary(comm);
   if (!outcome.failed_checks.empty())
     throw VerificationError(std::to_string(outcome.failed_checks.size()) +

@@ -22,17 +22,19 @@ struct NameArray {
 };
 
 // A non-finite result is numerical trouble (an overflowed state), never written silently.
+// (`ids`: the whole mesh's index of each entry of a piece's field; empty: the entry's own)
 void require_finite(const std::vector<double>& values, const std::string& name, double time,
-                    const char* index_kind) {
+                    const char* index_kind, const std::vector<LocalIndex>& ids = {}) {
   for (std::size_t i = 0; i < values.size(); ++i)
     if (!std::isfinite(values[i]))
-      throw NumericalError("the results hold a non-finite value (" + std::to_string(values[i]) +
-                           ") in output field '" + name + "'" +
-                           (index_kind
-                                ? std::string(" at ") + index_kind + " " + std::to_string(i + 1)
-                                : std::string()) +
-                           ", t = " + std::to_string(time) +
-                           ": the state overflowed or became undefined; nothing of it is written");
+      throw NumericalError(
+          "the results hold a non-finite value (" + std::to_string(values[i]) +
+          ") in output field '" + name + "'" +
+          (index_kind ? std::string(" at ") + index_kind + " " +
+                            std::to_string((ids.empty() ? i : static_cast<std::size_t>(ids[i])) + 1)
+                      : std::string()) +
+          ", t = " + std::to_string(time) +
+          ": the state overflowed or became undefined; nothing of it is written");
 }
 
 }  // namespace
@@ -44,7 +46,8 @@ std::vector<std::string> vector_component_names(const std::string& base, int dim
 }
 
 ExodusWriter::ExodusWriter(const std::string& path, const BackgroundMesh& mesh,
-                           const OutputLayout& layout, const std::string& title)
+                           const OutputLayout& layout, const std::string& title,
+                           const ExodusPieceIds* piece)
     : path_(path), layout_(layout), nodes_(mesh.node_count()) {
   for (const auto* names : {&layout.nodal, &layout.element, &layout.global})
     for (const auto& n : *names)
@@ -52,6 +55,10 @@ ExodusWriter::ExodusWriter(const std::string& path, const BackgroundMesh& mesh,
         throw std::logic_error("output variable name '" + n + "' exceeds 32 characters");
   file_.emplace(exodus::File::create(path_ + ".part"));
   write_mesh(mesh, title);
+  if (piece) {
+    piece_ = *piece;
+    write_piece_ids(*piece);
+  }
   write_variable_names(EX_NODAL, layout.nodal);
   write_variable_names(EX_ELEM_BLOCK, layout.element);
   write_variable_names(EX_GLOBAL, layout.global);
@@ -137,6 +144,20 @@ void ExodusWriter::write_mesh(const BackgroundMesh& mesh, const std::string& tit
                  "writing side set names");
 }
 
+void ExodusWriter::write_piece_ids(const ExodusPieceIds& piece) {
+  const int id = file_->id();
+  for (const auto& [type, ids] :
+       {std::pair{EX_NODE_MAP, &piece.nodes}, std::pair{EX_ELEM_MAP, &piece.cells}}) {
+    std::vector<std::int64_t> one_based(ids->begin(), ids->end());
+    for (auto& i : one_based) ++i;
+    if (!one_based.empty())
+      file_->check(ex_put_id_map(id, type, one_based.data()), "writing an id map");
+  }
+  // Nemesis' processor count ("p": a parallel file), which the SEACAS tools read
+  file_->check(ex_put_init_info(id, piece.ranks, 1, const_cast<char*>("p")),
+               "writing the processor count");
+}
+
 void ExodusWriter::write_variable_names(int type, const std::vector<std::string>& names) {
   if (names.empty()) return;
   const auto t = static_cast<ex_entity_type>(type);
@@ -164,13 +185,13 @@ void ExodusWriter::write_record(double time, const std::vector<std::vector<doubl
   file_->check(ex_put_time(id, step, &time), "writing a time value");
   for (std::size_t v = 0; v < nodal.size(); ++v) {
     if (nodal[v].size() != nodes_) throw std::logic_error("nodal field of wrong length");
-    require_finite(nodal[v], layout_.nodal[v], time, "node");
+    require_finite(nodal[v], layout_.nodal[v], time, "node", piece_.nodes);
     file_->check(ex_put_var(id, step, EX_NODAL, static_cast<int>(v + 1), 1,
                             static_cast<std::int64_t>(nodes_), nodal[v].data()),
                  "writing a nodal variable");
   }
   for (std::size_t v = 0; v < element.size(); ++v) {
-    require_finite(element[v], layout_.element[v], time, "cell");
+    require_finite(element[v], layout_.element[v], time, "cell", piece_.cells);
     std::size_t offset = 0;
     for (const auto& [block_id, count] : blocks_) {
       if (offset + count > element[v].size()) throw std::logic_error("element field too short");

@@ -22,13 +22,22 @@ struct OutputLayout {
   std::vector<std::string> global;   ///< one value per record
 };
 
+/// A file holding one rank's piece of the results (mesh/MeshPiece.hpp): the whole mesh's index of
+/// each of its nodes and cells (written as the Exodus node and element id maps, 1-based) and the
+/// rank count, so that SEACAS `epu` joins the pieces into the whole mesh's numbering.
+struct ExodusPieceIds {
+  std::vector<LocalIndex> nodes, cells;
+  int ranks = 1;
+};
+
 /// Names "<base>_x", "<base>_y"[, "<base>_z"]: ParaView joins these into one vector field.
 std::vector<std::string> vector_component_names(const std::string& base, int dimension);
 
 class ExodusWriter {
  public:
+  /// `piece`: the file is one rank's piece (its id maps are written); null for a whole mesh.
   ExodusWriter(const std::string& path, const BackgroundMesh& mesh, const OutputLayout& layout,
-               const std::string& title);
+               const std::string& title, const ExodusPieceIds* piece = nullptr);
   ExodusWriter(const ExodusWriter&) = delete;
   ExodusWriter& operator=(const ExodusWriter&) = delete;
   ~ExodusWriter() = default;  // an unclosed writer leaves only "<path>.part" behind
@@ -46,6 +55,7 @@ class ExodusWriter {
 
  private:
   void write_mesh(const BackgroundMesh& mesh, const std::string& title);
+  void write_piece_ids(const ExodusPieceIds& piece);
   void write_variable_names(int type, const std::vector<std::string>& names);
 
   std::string path_;
@@ -54,6 +64,7 @@ class ExodusWriter {
   std::vector<std::pair<std::int64_t, std::size_t>> blocks_;  // id, cell count
   std::size_t nodes_ = 0;
   int records_ = 0;
+  ExodusPieceIds piece_;  // empty maps for a whole mesh
 };
 
 }  // namespace efg

@@ -3,55 +3,77 @@
 #include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_OrdinalTraits.hpp>
 
+#include <iomanip>
+#include <sstream>
 #include <stdexcept>
 
+#include "mesh/MeshPiece.hpp"
 #include "parallel/Collective.hpp"
 
 namespace efg {
+namespace {
+
+Teuchos::RCP<const Map> map_of(const std::vector<GlobalOrdinal>& gids, const CommPtr& comm) {
+  return Teuchos::rcp(
+      new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(),
+              Teuchos::ArrayView<const GlobalOrdinal>(gids.data(), static_cast<int>(gids.size())),
+              0, comm));
+}
+
+std::vector<GlobalOrdinal> first_indices(std::size_t count) {
+  std::vector<GlobalOrdinal> gids(count);
+  for (std::size_t i = 0; i < count; ++i) gids[i] = static_cast<GlobalOrdinal>(i);
+  return gids;
+}
+
+std::vector<GlobalOrdinal> global_ordinals(const std::vector<LocalIndex>& indices) {
+  return std::vector<GlobalOrdinal>(indices.begin(), indices.end());
+}
+
+}  // namespace
+
+std::string piece_path(const std::string& path, int ranks, int rank) {
+  std::ostringstream name;
+  name << path << '.' << ranks << '.' << std::setw(static_cast<int>(std::to_string(ranks).size()))
+       << std::setfill('0') << rank;
+  return name.str();
+}
 
 ResultsOutput::ResultsOutput(const CommPtr& comm, const std::string& path,
                              const BackgroundMesh& mesh, const Teuchos::RCP<const Map>& owned_nodes,
                              const OutputLayout& layout, const std::string& title,
-                             const std::vector<GlobalOrdinal>& owned_cells)
-    : comm_(comm), nodes_(mesh.node_count()) {
-  std::vector<GlobalOrdinal> gids;
-  if (comm->getRank() == 0)
-    for (std::size_t n = 0; n < nodes_; ++n) gids.push_back(static_cast<GlobalOrdinal>(n));
-  root_map_ = Teuchos::rcp(
-      new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(),
-              Teuchos::ArrayView<const GlobalOrdinal>(gids.data(), static_cast<int>(gids.size())),
-              0, comm));
+                             const std::vector<GlobalOrdinal>& owned_cells, bool per_rank)
+    : comm_(comm) {
+  const bool root = comm->getRank() == 0;
+  per_rank = per_rank && comm->getSize() > 1;  // one rank's piece is the whole mesh: one file
+  // What this rank writes: the whole mesh (rank 0, gathered), its piece, or nothing.
+  MeshPiece piece;
+  if (per_rank)
+    piece = mesh_piece(mesh, [&](LocalIndex n) {
+      return owned_nodes->isNodeGlobalElement(static_cast<GlobalOrdinal>(n));
+    });
+  const BackgroundMesh& written = per_rank ? piece.mesh : mesh;
+  const bool writes = per_rank || root;
+  nodes_ = writes ? written.node_count() : 0;
+  root_map_ = map_of(per_rank ? global_ordinals(piece.nodes) : first_indices(nodes_), comm);
   gather_ = Teuchos::rcp(new Tpetra::Import<>(owned_nodes, root_map_));
   if (!layout.element.empty()) {
-    cells_ = mesh.cell_count();
-    const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
-    cell_map_ = Teuchos::rcp(new Map(invalid,
-                                     Teuchos::ArrayView<const GlobalOrdinal>(
-                                         owned_cells.data(), static_cast<int>(owned_cells.size())),
-                                     0, comm));
-    std::vector<GlobalOrdinal> all;
-    if (comm->getRank() == 0)
-      for (std::size_t c = 0; c < cells_; ++c) all.push_back(static_cast<GlobalOrdinal>(c));
-    cell_root_map_ = Teuchos::rcp(new Map(
-        invalid, Teuchos::ArrayView<const GlobalOrdinal>(all.data(), static_cast<int>(all.size())),
-        0, comm));
+    cells_ = writes ? written.cell_count() : 0;
+    cell_map_ = map_of(owned_cells, comm);
+    cell_root_map_ = map_of(per_rank ? global_ordinals(piece.cells) : first_indices(cells_), comm);
     cell_gather_ = Teuchos::rcp(new Tpetra::Import<>(cell_map_, cell_root_map_));
   }
-  // Rank 0 creates the file; the others learn whether that worked so that all ranks agree.
-  int ok = 1;
-  std::string error;
-  if (comm->getRank() == 0) {
-    try {
+  // The ranks that write create their files; all ranks learn whether that worked.
+  run_collectively(comm, [&] {
+    if (!writes) return;
+    if (!per_rank) {
       writer_ = std::make_unique<ExodusWriter>(path, mesh, layout, title);
-    } catch (const std::exception& e) {
-      ok = 0;
-      error = e.what();
+      return;
     }
-  }
-  Teuchos::broadcast(*comm, 0, &ok);
-  if (!ok)
-    throw std::runtime_error(comm->getRank() == 0 ? error
-                                                  : "results file could not be created on rank 0");
+    const ExodusPieceIds ids{piece.nodes, piece.cells, comm->getSize()};
+    writer_ = std::make_unique<ExodusWriter>(piece_path(path, comm->getSize(), comm->getRank()),
+                                             piece.mesh, layout, title, &ids);
+  });
 }
 
 void ResultsOutput::write(double time, const MultiVector& nodal, const std::vector<double>& global,
@@ -62,7 +84,7 @@ void ResultsOutput::write(double time, const MultiVector& nodal, const std::vect
   if (cells) {
     MultiVector cell_values(cell_root_map_, cells->getNumVectors());  // zero where none given
     cell_values.doImport(*cells, *cell_gather_, Tpetra::INSERT);
-    if (comm_->getRank() == 0) {
+    if (writer_) {
       const auto view = cell_values.getLocalViewHost(Tpetra::Access::ReadOnly);
       for (std::size_t c = 0; c < cells->getNumVectors(); ++c) {
         element.emplace_back(cells_);
@@ -70,9 +92,10 @@ void ResultsOutput::write(double time, const MultiVector& nodal, const std::vect
       }
     }
   }
-  // Rank 0 writes; a refused record (a non-finite value) or a failed write is learned by all.
+  // The writing ranks write; a refused record (a non-finite value) or a failed write is learned
+  // by all.
   run_collectively(comm_, [&] {
-    if (comm_->getRank() != 0) return;
+    if (!writer_) return;
     std::vector<std::vector<double>> columns(nodal.getNumVectors(), std::vector<double>(nodes_));
     auto view = gathered.getLocalViewHost(Tpetra::Access::ReadOnly);
     for (std::size_t c = 0; c < columns.size(); ++c)

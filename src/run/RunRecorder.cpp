@@ -27,8 +27,8 @@ RunRecorder::RunRecorder(const CommPtr& comm, const Model& model, const ModelOpe
       history_(model),
       output_(comm, path, model.mesh, model.maps.owned_nodes,
               OutputLayout{columns_, cell_columns(model.scene.output.fields), history_.names()},
-              model.scene.title.empty() ? model.scene.name : model.scene.title,
-              output_cells(model)),
+              model.scene.title.empty() ? model.scene.name : model.scene.title, output_cells(model),
+              model.scene.output.per_rank_files),
       d_overlap_(model.maps.overlap_dofs),
       v_overlap_(model.maps.overlap_dofs),
       a_overlap_(model.maps.overlap_dofs) {

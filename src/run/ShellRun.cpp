@@ -191,7 +191,8 @@ RunOutcome run_shell_stages(const CommPtr& comm, const Model& model, const std::
   const auto shown = op.curved() ? shell_reference_mesh(model) : BackgroundMesh{};
   run_collectively(comm, [&] { check_shell_setup(model, op); });  // no output before its errors
   ResultsOutput output(comm, path, op.curved() ? shown : model.mesh, model.maps.owned_nodes, layout,
-                       scene.title.empty() ? scene.name : scene.title);
+                       scene.title.empty() ? scene.name : scene.title, {},
+                       scene.output.per_rank_files);
   const auto volume = lumped_nodal_volumes(model.mesh);
   std::vector<std::vector<double>> history;
   FlatShellOperator::Vector d(op.maps().owned_dofs), v(op.maps().owned_dofs);

@@ -237,6 +237,7 @@ struct OutputSpec {
   std::vector<std::string> fields;
   std::string history;
   std::vector<std::string> history_node_sets;
+  bool per_rank_files = false;  ///< files: per_rank (one results file per rank, joined by epu)
 };
 
 struct Scene {

@@ -95,6 +95,7 @@ class SceneBuilder {
     s_.output.fields = as_vector<std::string>(r["output"]["fields"]);
     s_.output.history = opt_string(r["output"], "history");
     s_.output.history_node_sets = as_vector<std::string>(r["output"]["history_node_sets"]);
+    s_.output.per_rank_files = opt_string(r["output"], "files") == "per_rank";
     check_output_files(d["output"]);
     check_part_formulations(s_);
     for (const auto& w : r["rigid_walls"])

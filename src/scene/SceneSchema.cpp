@@ -348,7 +348,16 @@ SpecPtr output_spec() {
       .optional(
           "history_node_sets",
           string_list("Node sets whose mean displacement and velocity go to the history file."),
-          "[]");
+          "[]")
+      .optional("files",
+                string("gathered: rank 0 gathers every record and writes the one results file. "
+                       "per_rank: every rank writes its piece of the mesh and of the fields to "
+                       "'<file>.<ranks>.<rank>' (SEACAS's decomposed files: node and element id "
+                       "maps; the rank zero-padded to the digits of the rank count), nothing is "
+                       "gathered; SEACAS epu joins them: `epu -auto <file>.<ranks>.<0...>` "
+                       "(docs/scaling.md). On one rank both write the one file.")
+                    .choices({"gathered", "per_rank"}),
+                "gathered");
 }
 
 SpecPtr verification_spec() {
