@@ -287,13 +287,19 @@ std::vector<std::vector<double>> committed_states(const Model& model, const Soli
 
 }  // namespace
 
+std::vector<double> nodal_volume_column(const Model& model) {
+  const auto& fields = model.scene.output.fields;
+  if (std::find(fields.begin(), fields.end(), "nodal_volume") == fields.end()) return {};
+  return lumped_nodal_volumes(model.mesh);
+}
+
 std::vector<std::vector<double>> state_columns(const Model& model, const SolidOperator& op,
                                                const Vector& d_overlap, const Vector* v_overlap,
-                                               const Vector* a_overlap,
-                                               const MixedPressure* mixed) {
+                                               const Vector* a_overlap, const MixedPressure* mixed,
+                                               const std::vector<double>& nodal_volume) {
   const int dim = model.mesh.dimension;
   const auto& owned = model.partition.owned;
-  const auto volume = lumped_nodal_volumes(model.mesh);
+  const auto& volume = nodal_volume.empty() ? nodal_volume_column(model) : nodal_volume;
   const auto particles = interpolate(model, op, d_overlap, v_overlap, a_overlap);
   std::vector<Tensor> strains(owned.size(), Tensor{}), stresses(owned.size(), Tensor{});
   const auto& fields = model.scene.output.fields;

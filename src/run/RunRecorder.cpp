@@ -29,6 +29,7 @@ RunRecorder::RunRecorder(const CommPtr& comm, const Model& model, const ModelOpe
               OutputLayout{columns_, cell_columns(model.scene.output.fields), history_.names()},
               model.scene.title.empty() ? model.scene.name : model.scene.title, output_cells(model),
               model.scene.output.per_rank_files),
+      nodal_volume_(nodal_volume_column(model)),
       d_overlap_(model.maps.overlap_dofs),
       v_overlap_(model.maps.overlap_dofs),
       a_overlap_(model.maps.overlap_dofs) {
@@ -65,8 +66,8 @@ void RunRecorder::write(const RunState& s) {
                          : problem_              ? problem_->reactions(s.d)
                                                  : std::vector<std::array<double, 3>>();
   const auto globals = history_.values(ops_, s, d_overlap_, v_overlap_, reactions);
-  const auto values =
-      state_columns(model_, ops_.solid(), d_overlap_, &v_overlap_, &a_overlap_, ops_.mixed());
+  const auto values = state_columns(model_, ops_.solid(), d_overlap_, &v_overlap_, &a_overlap_,
+                                    ops_.mixed(), nodal_volume_);
   ResultsOutput::MultiVector nodal(model_.maps.owned_nodes, columns_.size());
   {
     auto view = nodal.getLocalViewHost(Tpetra::Access::OverwriteAll);

@@ -46,6 +46,7 @@ class RunRecorder {
   std::vector<std::string> columns_;
   RunHistory history_;
   ResultsOutput output_;
+  std::vector<double> nodal_volume_;  ///< lumped nodal volumes, once per run (when written)
   std::unique_ptr<std::ofstream> csv_;
   Vector d_overlap_, v_overlap_, a_overlap_;
   std::vector<double> last_globals_;
