@@ -17,23 +17,11 @@ trap 'rm -rf "$work"' EXIT
 launch=(mpirun -np 2)
 if [ "$(id -u)" -eq 0 ]; then launch+=(--allow-run-as-root); fi
 
-/usr/bin/python3 - "$here/input/block_explicit.yaml" "$work" "$nx" <<'PY'
-import sys
-src, work, nx = sys.argv[1], sys.argv[2], int(sys.argv[3])
-s = open(src).read()
-ny = max(1, round(nx * 0.35))
-h = 10.0 / nx
-s = s.replace("upper: [10, 2, 2], cells: [20, 4, 4]",
-              "upper: [10, %g, %g], cells: [%d, %d, %d]" % (ny * h, ny * h, nx, ny, ny))
-s = s.replace("dilation: 1.5", "dilation: 1.2")
-end = 100 * 1.79e-7 * h  # dt is about 1.79e-7 h here (0.9 of the stable step): 100 steps
-s = s.replace("end_time: 2.0e-4, output_interval: 1.0e-5",
-              "end_time: %g, output_interval: %g" % (end, end / 20))
-s = s.replace("fields: [displacement, velocity, von_mises]",
-              "fields: [displacement, velocity, stress, von_mises]")
-open(work + "/gathered.yaml", "w").write(s)
-open(work + "/per_rank.yaml", "w").write(s.replace("  history:", "  files: per_rank\n  history:"))
-PY
+# the block of bench/block_scene.py, 100 steps, 20 records after the first, with stresses
+/usr/bin/python3 "$here/bench/block_scene.py" "$work/block.yaml" "$nx" explicit 20
+sed 's/fields: \[displacement, velocity, von_mises\]/fields: [displacement, velocity, stress, von_mises]/' \
+  "$work/block.yaml" >"$work/gathered.yaml"
+sed 's/^  history:/  files: per_rank\n  history:/' "$work/gathered.yaml" >"$work/per_rank.yaml"
 
 row() {  # row SETTING
   local out="$work/out_$1"

@@ -19,28 +19,8 @@ if [ "${1:-}" = "--max-particles" ]; then max="$2"; fi
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 
-# scene OUT NX DRIVER: the block with NX x NX/5*... cells (10 x 3.5 x 3.5, cells of edge 10/NX).
-scene() {
-  /usr/bin/python3 - "$here/input/block_explicit.yaml" "$1" "$2" "$3" <<'PY'
-import sys
-src, out, nx, driver = sys.argv[1], sys.argv[2], int(sys.argv[3]), sys.argv[4]
-s = open(src).read()
-ny = max(1, round(nx * 0.35))
-h = 10.0 / nx
-s = s.replace("upper: [10, 2, 2], cells: [20, 4, 4]",
-              "upper: [10, %g, %g], cells: [%d, %d, %d]" % (ny * h, ny * h, nx, ny, ny))
-s = s.replace("dilation: 1.5", "dilation: 1.2")
-if driver == "explicit":
-    # dt is about 1.79e-7 h here (0.9 of the stable step): 100 steps.
-    s = s.replace("end_time: 2.0e-4, output_interval: 1.0e-5",
-                  "end_time: %g, output_interval: 1.0" % (100 * 1.79e-7 * h))
-else:
-    s = s.replace("driver: explicit, end_time: 2.0e-4, output_interval: 1.0e-5",
-                  "driver: implicit, end_time: 1.0")
-    s = s.replace("type: velocity", "type: displacement")
-open(out, "w").write(s)
-PY
-}
+# scene OUT NX DRIVER: the block with NX x 0.35 NX x 0.35 NX cells (bench/block_scene.py).
+scene() { /usr/bin/python3 "$here/bench/block_scene.py" "$1" "$2" "$3"; }
 
 row() {  # row NAME SCENE
   local out="$work/out"

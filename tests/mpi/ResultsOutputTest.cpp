@@ -14,14 +14,26 @@
 namespace efg {
 namespace {
 
+// A perturbed hex8 box partitioned over the ranks, and a results path for the rank count.
+struct PartitionedBox {
+  explicit PartitionedBox(const std::string& name)
+      : comm(Tpetra::getDefaultComm()),
+        mesh(generate_mesh(test::box_spec(CellType::hex8, 3, 0.2))),
+        p(partition_nodes(comm, mesh)),
+        maps(make_dof_maps(comm, p, 3)),
+        path(test::scratch_dir(name) + "/np" + std::to_string(comm->getSize()) + ".e") {}
+  CommPtr comm;
+  BackgroundMesh mesh;
+  NodePartition p;
+  DofMaps maps;
+  std::string path;
+};
+
 // Each rank writes values of its own particles; the gathered file must equal what a serial run
 // would write: value = f(global id), and the owner column matches the partition.
 TEST(ResultsOutput, GathersOwnedValuesIntoOneFile) {
-  const auto comm = Tpetra::getDefaultComm();
-  const auto mesh = generate_mesh(test::box_spec(CellType::hex8, 3, 0.2));
-  const auto p = partition_nodes(comm, mesh);
-  const auto maps = make_dof_maps(comm, p, 3);
-  const auto path = test::scratch_dir("gather") + "/np" + std::to_string(comm->getSize()) + ".e";
+  const PartitionedBox box("gather");
+  const auto& [comm, mesh, p, maps, path] = box;
   ResultsOutput output(comm, path, mesh, maps.owned_nodes,
                        OutputLayout{{"f", "owner_rank"}, {}, {"t2"}}, "gather");
   for (int step = 0; step < 2; ++step) {
@@ -70,11 +82,8 @@ std::vector<std::int64_t> id_map(const std::string& path, ex_entity_type type, s
 // imported) and g = 2 id at its cells, which are the cells whose lowest node it owns; over the
 // ranks every cell is written exactly once (what SEACAS epu needs to join them).
 TEST(ResultsOutput, WritesOnePieceOfTheMeshPerRankUnderTheWholeMeshIds) {
-  const auto comm = Tpetra::getDefaultComm();
-  const auto mesh = generate_mesh(test::box_spec(CellType::hex8, 3, 0.2));
-  const auto p = partition_nodes(comm, mesh);
-  const auto maps = make_dof_maps(comm, p, 3);
-  const auto path = test::scratch_dir("pieces") + "/np" + std::to_string(comm->getSize()) + ".e";
+  const PartitionedBox box("pieces");
+  const auto& [comm, mesh, p, maps, path] = box;
   // Which rank provides a cell's values does not matter: cells by index modulo the rank count,
   // so that many reach their piece from another rank.
   std::vector<GlobalOrdinal> provided;
