@@ -36,6 +36,25 @@ DeviceView<T**> to_device(const T* host, std::size_t rows, std::size_t cols,
   return view;
 }
 
+/// The kernels' view of a host vector (1D) or row-major matrix (rows x cols, 2D) that outlives the
+/// view: where the kernels read host memory (Serial, OpenMP) the host array itself, not a second
+/// copy of it (issue 20: no duplicate host and device copies); elsewhere (CUDA) a device copy.
+template <class T>
+DeviceView<const T*> device_view_of(const std::vector<T>& host, const std::string& name) {
+  if constexpr (Kokkos::SpaceAccessibility<ExecSpace, Kokkos::HostSpace>::accessible)
+    return DeviceView<const T*>(host.data(), host.size());
+  else
+    return to_device(host, name);
+}
+template <class T>
+DeviceView<const T**> device_view_of(const std::vector<T>& host, std::size_t rows, std::size_t cols,
+                                     const std::string& name) {
+  if constexpr (Kokkos::SpaceAccessibility<ExecSpace, Kokkos::HostSpace>::accessible)
+    return DeviceView<const T**>(host.data(), rows, cols);
+  else
+    return to_device(host.data(), rows, cols, name);
+}
+
 /// The contents of a contiguous device view (any rank) as a host vector.
 template <class View>
 std::vector<typename View::non_const_value_type> to_host(const View& device) {

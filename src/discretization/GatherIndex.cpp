@@ -1,5 +1,9 @@
 #include "discretization/GatherIndex.hpp"
 
+#include <limits>
+#include <stdexcept>
+#include <string>
+
 namespace efg {
 
 GatherIndex gather_index(const DeviceView<const std::size_t*>& row_offsets,
@@ -7,9 +11,13 @@ GatherIndex gather_index(const DeviceView<const std::size_t*>& row_offsets,
   GatherIndex g;
   const auto entries = column.extent(0);
   const auto rows = row_offsets.extent(0) > 0 ? row_offsets.extent(0) - 1 : 0;
+  if (entries > static_cast<std::size_t>(std::numeric_limits<int>::max()))
+    throw std::length_error("a table of " + std::to_string(entries) +
+                            " entries on one rank: more than 32-bit indices address; run on "
+                            "more ranks");
   g.offsets = DeviceView<std::size_t*>("efg::gather offsets", column_count + 1);
-  g.entry = DeviceView<std::size_t*>(
-      Kokkos::view_alloc(Kokkos::WithoutInitializing, "efg::gather entry"), entries);
+  g.entry = DeviceView<int*>(Kokkos::view_alloc(Kokkos::WithoutInitializing, "efg::gather entry"),
+                             entries);
   g.row_of_entry = DeviceView<int*>(
       Kokkos::view_alloc(Kokkos::WithoutInitializing, "efg::gather rows"), entries);
   const auto offsets = g.offsets;
@@ -37,7 +45,8 @@ GatherIndex gather_index(const DeviceView<const std::size_t*>& row_offsets,
   Kokkos::parallel_for(
       "efg::gather_fill", Range(0, entries), KOKKOS_LAMBDA(const std::size_t k) {
         const auto c = static_cast<std::size_t>(column(k));
-        entry(offsets(c) + Kokkos::atomic_fetch_add(&fill(c), std::size_t(1))) = k;
+        entry(offsets(c) + Kokkos::atomic_fetch_add(&fill(c), std::size_t(1))) =
+            static_cast<int>(k);
       });
   // The slots above were taken in whatever order the threads ran: sort each column (short lists).
   Kokkos::parallel_for(

@@ -11,8 +11,10 @@ namespace efg {
 
 struct GatherIndex {
   DeviceView<std::size_t*> offsets;  ///< columns + 1
-  DeviceView<std::size_t*> entry;    ///< entry k of the table, ascending within a column
-  DeviceView<int*> row_of_entry;     ///< the row of every entry of the table
+  /// entry k of the table, ascending within a column (32 bits: half the memory of a size_t per
+  /// entry, issue 20; a table of more than 2^31 - 1 entries on one rank is refused)
+  DeviceView<int*> entry;
+  DeviceView<int*> row_of_entry;  ///< the row of every entry of the table
 };
 
 /// Transposes the table (row offsets, column of every entry; columns in [0, column_count)).

@@ -31,8 +31,7 @@ struct DevicePoints {
   DeviceView<const int*> node;
   DeviceView<const double**> grad;
   GatherIndex by_node;
-  DeviceView<const std::size_t*>
-      slot;  ///< position of entry k in by_node order (by_node.entry inverted)
+  DeviceView<const int*> slot;  ///< position of entry k in by_node order (by_node.entry inverted)
   PointMaterial material;
 };
 

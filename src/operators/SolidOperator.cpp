@@ -41,26 +41,21 @@ SolidOperator::SolidOperator(const Model& model) : dim_(model.mesh.dimension), h
     std::vector<int> node;
     for (auto particle : ip.gradients.particles)
       node.push_back(p.overlap_node[static_cast<std::size_t>(particle)]);
-    DeviceView<double**> grad("efg::solid grad", ip.gradients.particles.size(),
-                              static_cast<std::size_t>(dim_));
-    auto grad_host = Kokkos::create_mirror_view(grad);
-    for (std::size_t k = 0; k < ip.gradients.particles.size(); ++k)
-      for (int j = 0; j < dim_; ++j)
-        grad_host(k, static_cast<std::size_t>(j)) =
-            ip.gradients.values[k * static_cast<std::size_t>(dim_) + static_cast<std::size_t>(j)];
-    Kokkos::deep_copy(grad, grad_host);
+    // The gradient table and its offsets are read where the discretization keeps them (the model
+    // outlives its operators): on a host execution space no second copy (docs/scaling.md).
     p.device.weight = to_device(weight, "efg::solid weight");
-    p.device.offsets = to_device(ip.gradients.offsets, "efg::solid offsets");
+    p.device.offsets = device_view_of(ip.gradients.offsets, "efg::solid offsets");
     p.device.node = to_device(node, "efg::solid node");
-    p.device.grad = grad;
+    p.device.grad = device_view_of(ip.gradients.values, ip.gradients.particles.size(),
+                                   static_cast<std::size_t>(dim_), "efg::solid grad");
     p.device.by_node = gather_index(p.device.offsets, p.device.node, overlap_nodes_);
     p.slot_count = ip.gradients.particles.size();
-    DeviceView<std::size_t*> slot(
-        Kokkos::view_alloc(Kokkos::WithoutInitializing, "efg::solid slots"), p.slot_count);
+    DeviceView<int*> slot(Kokkos::view_alloc(Kokkos::WithoutInitializing, "efg::solid slots"),
+                          p.slot_count);
     const auto entry = p.device.by_node.entry;
     Kokkos::parallel_for(
         "efg::solid_slots", Kokkos::RangePolicy<ExecSpace>(0, p.slot_count),
-        KOKKOS_LAMBDA(const std::size_t e) { slot(entry(e)) = e; });
+        KOKKOS_LAMBDA(const std::size_t e) { slot(entry(e)) = static_cast<int>(e); });
     p.device.slot = slot;
     const auto& states = history_.part(parts_.size());
     const MaterialLaw& law = states.law;
