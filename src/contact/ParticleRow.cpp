@@ -9,10 +9,10 @@ ParticleRow particle_row(const ModelOperators& ops, std::size_t p, std::size_t j
   ParticleRow row;
   for (int k = 0; k < part.cloud.dimension; ++k)
     row.X[static_cast<std::size_t>(k)] = part.cloud.x(j)[k];
-  for (auto k = part.particle_values.offsets[j]; k < part.particle_values.offsets[j + 1]; ++k) {
+  for (auto k = part.particle_values().offsets[j]; k < part.particle_values().offsets[j + 1]; ++k) {
     row.nodes.push_back(
-        ops.solid().overlap_node(p)[static_cast<std::size_t>(part.particle_values.particles[k])]);
-    row.phi.push_back(part.particle_values.values[k]);
+        ops.solid().overlap_node(p)[static_cast<std::size_t>(part.particle_values().particles[k])]);
+    row.phi.push_back(part.particle_values().values[k]);
   }
   return row;
 }

@@ -39,7 +39,7 @@ ShellRigidContact::ShellRigidContact(const Model& model, const FlatShellOperator
       const auto& part = model.parts[p];
       if (std::find(spec.parts.begin(), spec.parts.end(), part.part->name) == spec.parts.end())
         continue;
-      const auto& rows = part.particle_values;
+      const auto& rows = part.particle_values();
       for (std::size_t r = 0; r < part.cloud.owned_count; ++r) {
         Candidate c;
         const auto node = part.cloud.mesh_node[r];

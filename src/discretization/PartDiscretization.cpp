@@ -25,17 +25,15 @@ PartDiscretization discretize_part(const BackgroundMesh& mesh, const PartSpec& p
       *Teuchos::TimeMonitor::getNewCounter("efg: shape functions and integration"));
   d.points = integrate_part(mesh, part, d.cloud, partition.owner, partition.rank);
   // Integration points that are not the particles' own (Gauss, SCNI subcells): the particles'
-  // tables by direct evaluation.
+  // tables by direct evaluation (otherwise they are the points' tables).
   if (part.section.integration == Integration::gauss ||
       part.section.integration == Integration::scni_subcells) {
     const auto v = evaluate_shape_functions(
         d.cloud, d.cloud.position.data(), d.cloud.owned_count, true,
         [&](std::size_t p) { return "particle " + std::to_string(d.cloud.mesh_node[p] + 1); });
-    d.particle_values = table_from(v, false, d.cloud.dimension);
-    d.particle_gradients = table_from(v, true, d.cloud.dimension);
-  } else {
-    d.particle_values = d.points.values;
-    d.particle_gradients = d.points.gradients;
+    d.own_particle_tables = true;
+    d.own_particle_values = table_from(v, false, d.cloud.dimension);
+    d.own_particle_gradients = table_from(v, true, d.cloud.dimension);
   }
   if (mixed)
     d.cells = cell_averages(mesh, d.cloud, d.pressure_cells,

@@ -33,7 +33,7 @@ std::vector<LocalIndex> contact_row_ghosts(const CommPtr& comm, const Model& mod
     for (const auto& [cell, side] : boundary_sides(model.mesh, part.part->blocks))
       for (auto n : model.mesh.side_node_indices(cell, side))
         on_surface[static_cast<std::size_t>(n)] = 1;
-    const auto& rows = part.particle_values;
+    const auto& rows = part.particle_values();
     for (std::size_t j = 0; j < part.cloud.owned_count; ++j) {
       if (!on_surface[static_cast<std::size_t>(part.cloud.mesh_node[j])]) continue;
       for (auto k = rows.offsets[j]; k < rows.offsets[j + 1]; ++k)

@@ -168,10 +168,11 @@ void EssentialConditions::add_collocated_nodes(const Model& model, const SolidOp
         for (int k = 0; k < dim_; ++k) nc.X[static_cast<std::size_t>(k)] = d.cloud.x(row)[k];
         nc.base = setup.prescribed(nc.X.data(), static_cast<std::size_t>(i), 0.0);
         nc.curve = bc.curve;
-        for (auto k = d.particle_values.offsets[row]; k < d.particle_values.offsets[row + 1]; ++k) {
+        for (auto k = d.particle_values().offsets[row]; k < d.particle_values().offsets[row + 1];
+             ++k) {
           nc.nodes.push_back(
-              op.overlap_node(p)[static_cast<std::size_t>(d.particle_values.particles[k])]);
-          nc.phi.push_back(d.particle_values.values[k]);
+              op.overlap_node(p)[static_cast<std::size_t>(d.particle_values().particles[k])]);
+          nc.phi.push_back(d.particle_values().values[k]);
         }
         nodes_.push_back(std::move(nc));
       }

@@ -159,24 +159,25 @@ ParticleValues interpolate(const Model& model, const SolidOperator& op, const Ve
     for (std::size_t j = 0; j < part.cloud.owned_count; ++j) {
       const auto s = slot[static_cast<std::size_t>(part.cloud.mesh_node[j])];
       out.part[s] = static_cast<int>(p);
-      for (auto k = part.particle_values.offsets[j]; k < part.particle_values.offsets[j + 1]; ++k) {
+      for (auto k = part.particle_values().offsets[j]; k < part.particle_values().offsets[j + 1];
+           ++k) {
         const auto n = static_cast<std::size_t>(
-            node[static_cast<std::size_t>(part.particle_values.particles[k])]);
+            node[static_cast<std::size_t>(part.particle_values().particles[k])]);
         for (std::size_t i = 0; i < udim; ++i) {
-          const double phi = part.particle_values.values[k];
+          const double phi = part.particle_values().values[k];
           out.u[s][i] += phi * d(n * udim + i, 0);
           if (v_overlap) out.v[s][i] += phi * v(n * udim + i, 0);
           if (a_overlap) out.a[s][i] += phi * a(n * udim + i, 0);
         }
       }
-      for (auto k = part.particle_gradients.offsets[j]; k < part.particle_gradients.offsets[j + 1];
-           ++k) {
+      for (auto k = part.particle_gradients().offsets[j];
+           k < part.particle_gradients().offsets[j + 1]; ++k) {
         const auto n = static_cast<std::size_t>(
-            node[static_cast<std::size_t>(part.particle_gradients.particles[k])]);
+            node[static_cast<std::size_t>(part.particle_gradients().particles[k])]);
         for (std::size_t i = 0; i < udim; ++i)
           for (std::size_t c = 0; c < udim; ++c)
             out.h[s][i * 3 + c] +=
-                d(n * udim + i, 0) * part.particle_gradients.values[k * udim + c];
+                d(n * udim + i, 0) * part.particle_gradients().values[k * udim + c];
       }
     }
   }

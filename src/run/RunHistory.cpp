@@ -142,13 +142,13 @@ std::vector<double> RunHistory::values(const ModelOperators& ops, const RunState
       for (std::size_t j = 0; j < part.cloud.owned_count; ++j) {
         if (!in[static_cast<std::size_t>(part.cloud.mesh_node[j])]) continue;
         local[2 * dim] += 1;
-        for (auto k = part.particle_values.offsets[j]; k < part.particle_values.offsets[j + 1];
+        for (auto k = part.particle_values().offsets[j]; k < part.particle_values().offsets[j + 1];
              ++k) {
           const auto n = static_cast<std::size_t>(ops.solid().overlap_node(
-              p)[static_cast<std::size_t>(part.particle_values.particles[k])]);
+              p)[static_cast<std::size_t>(part.particle_values().particles[k])]);
           for (std::size_t i = 0; i < dim; ++i) {
-            local[i] += part.particle_values.values[k] * du(n * dim + i, 0);
-            local[dim + i] += part.particle_values.values[k] * dv(n * dim + i, 0);
+            local[i] += part.particle_values().values[k] * du(n * dim + i, 0);
+            local[dim + i] += part.particle_values().values[k] * dv(n * dim + i, 0);
           }
         }
       }

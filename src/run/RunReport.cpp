@@ -134,11 +134,11 @@ std::vector<ReferenceCheck> reference_checks(const ModelOperators& ops, const Ru
         for (std::size_t j = 0; j < part.cloud.owned_count; ++j) {
           if (!in[static_cast<std::size_t>(part.cloud.mesh_node[j])]) continue;
           local[1] += 1;
-          for (auto e = part.particle_values.offsets[j]; e < part.particle_values.offsets[j + 1];
-               ++e) {
+          for (auto e = part.particle_values().offsets[j];
+               e < part.particle_values().offsets[j + 1]; ++e) {
             const auto node = static_cast<std::size_t>(ops.solid().overlap_node(
-                p)[static_cast<std::size_t>(part.particle_values.particles[e])]);
-            local[0] += part.particle_values.values[e] * values(node * dim + k, 0);
+                p)[static_cast<std::size_t>(part.particle_values().particles[e])]);
+            local[0] += part.particle_values().values[e] * values(node * dim + k, 0);
           }
         }
       }

@@ -399,7 +399,7 @@ std::vector<double> FlatShellOperator::physical_values(const Vector& d_owned) co
   const auto& overlap = *maps_.overlap_nodes;
   std::vector<double> out(owned.getNodeNumElements() * nd, 0.0);
   for (const auto& part : model_.parts) {
-    const auto& rows = part.particle_values;
+    const auto& rows = part.particle_values();
     for (std::size_t r = 0; r < part.cloud.owned_count; ++r) {
       const auto row = static_cast<std::size_t>(
           owned.getLocalElement(static_cast<GlobalOrdinal>(part.cloud.mesh_node[r])));

@@ -109,7 +109,7 @@ ShellConstraints::ShellConstraints(const Model& model, const FlatShellOperator& 
   }
   for (std::size_t p = 0; p < model.parts.size(); ++p) {
     const auto& part = model.parts[p];
-    const auto& rows = part.particle_values;
+    const auto& rows = part.particle_values();
     for (std::size_t r = 0; r < part.cloud.owned_count; ++r)
       for (int c = 0; c < nd; ++c) {
         const auto it = value.find({part.cloud.mesh_node[r], c});

@@ -79,11 +79,12 @@ double largest_nodal_error(
   double largest = 0;
   for (std::size_t j = 0; j < part.cloud.owned_count; ++j) {
     double uh[3] = {0, 0, 0}, u[3] = {0, 0, 0};
-    for (auto k = part.particle_values.offsets[j]; k < part.particle_values.offsets[j + 1]; ++k) {
+    for (auto k = part.particle_values().offsets[j]; k < part.particle_values().offsets[j + 1];
+         ++k) {
       const auto n = static_cast<std::size_t>(
-          nodes[static_cast<std::size_t>(part.particle_values.particles[k])]);
+          nodes[static_cast<std::size_t>(part.particle_values().particles[k])]);
       for (std::size_t i = 0; i < udim; ++i)
-        uh[i] += part.particle_values.values[k] * d(n * udim + i, 0);
+        uh[i] += part.particle_values().values[k] * d(n * udim + i, 0);
     }
     exact.displacement(part.cloud.x(j), u);
     for (std::size_t i = 0; i < udim; ++i) largest = std::max(largest, std::abs(uh[i] - u[i]));
