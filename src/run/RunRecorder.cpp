@@ -98,7 +98,10 @@ void RunRecorder::write(const RunState& s) {
 void RunRecorder::keep_partial() {
   output_.close_partial();
   if (csv_) csv_->close();
-  Log::info("results up to the failure: " + path_ + ".part" +
+  // (one file per rank: every rank's piece keeps its ".part")
+  const bool pieces = model_.scene.output.per_rank_files && comm_->getSize() > 1;
+  Log::info("results up to the failure: " +
+            (pieces ? piece_path(path_, comm_->getSize(), 0) + ".part ..." : path_ + ".part") +
             (csv_final_.empty() ? std::string() : " and " + csv_final_ + ".part"));
 }
 
