@@ -77,7 +77,7 @@ void run_command(const CommPtr& comm, const CommandLine& cl) {
   if (model.scene.stages.empty())
     Log::info("model check: initial state written (no stages in the scene)");
   const auto results = std::filesystem::absolute(path).lexically_normal().string();
-  if (model.scene.output.per_rank_files && comm->getSize() > 1)
+  if (writes_pieces(model.scene.output.per_rank_files, comm->getSize()))
     Log::info("results: one file per rank, " + piece_path(results, comm->getSize(), 0) +
               " ...; join them with SEACAS epu: epu -auto " +
               piece_path(results, comm->getSize(), 0));

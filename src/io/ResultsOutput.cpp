@@ -45,7 +45,7 @@ ResultsOutput::ResultsOutput(const CommPtr& comm, const std::string& path,
                              const std::vector<GlobalOrdinal>& owned_cells, bool per_rank)
     : comm_(comm) {
   const bool root = comm->getRank() == 0;
-  per_rank = per_rank && comm->getSize() > 1;  // one rank's piece is the whole mesh: one file
+  per_rank = writes_pieces(per_rank, comm->getSize());
   // What this rank writes: the whole mesh (rank 0, gathered), its piece, or nothing.
   MeshPiece piece;
   if (per_rank)

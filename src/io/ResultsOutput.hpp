@@ -54,6 +54,12 @@ class ResultsOutput {
   std::size_t nodes_ = 0;
 };
 
+/// Whether results asked for one file per rank are written in pieces: on one rank the piece is
+/// the whole mesh, and the one file is written.
+inline bool writes_pieces(bool per_rank, int ranks) {
+  return per_rank && ranks > 1;
+}
+
 /// The file of rank `rank`'s piece among `ranks`: "<path>.<ranks>.<rank>", the rank zero-padded
 /// to the digits of `ranks` (the naming epu and the other SEACAS tools expect).
 std::string piece_path(const std::string& path, int ranks, int rank);

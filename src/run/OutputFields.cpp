@@ -300,7 +300,10 @@ std::vector<std::vector<double>> state_columns(const Model& model, const SolidOp
                                                const std::vector<double>& nodal_volume) {
   const int dim = model.mesh.dimension;
   const auto& owned = model.partition.owned;
-  const auto& volume = nodal_volume.empty() ? nodal_volume_column(model) : nodal_volume;
+  // (a conditional of the caller's column and a computed one would copy the caller's each record)
+  std::vector<double> computed;
+  if (nodal_volume.empty()) computed = nodal_volume_column(model);
+  const auto& volume = nodal_volume.empty() ? computed : nodal_volume;
   const auto particles = interpolate(model, op, d_overlap, v_overlap, a_overlap);
   std::vector<Tensor> strains(owned.size(), Tensor{}), stresses(owned.size(), Tensor{});
   const auto& fields = model.scene.output.fields;

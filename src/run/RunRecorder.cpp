@@ -99,7 +99,7 @@ void RunRecorder::keep_partial() {
   output_.close_partial();
   if (csv_) csv_->close();
   // (one file per rank: every rank's piece keeps its ".part")
-  const bool pieces = model_.scene.output.per_rank_files && comm_->getSize() > 1;
+  const bool pieces = writes_pieces(model_.scene.output.per_rank_files, comm_->getSize());
   Log::info("results up to the failure: " +
             (pieces ? piece_path(path_, comm_->getSize(), 0) + ".part ..." : path_ + ".part") +
             (csv_final_.empty() ? std::string() : " and " + csv_final_ + ".part"));
