@@ -2,39 +2,16 @@
 
 #include <exodusII.h>
 
-#include <algorithm>
-#include <cctype>
-#include <cmath>
 #include <cstdint>
 
 #include "core/Errors.hpp"
+#include "io/ExodusEntities.hpp"
 #include "io/ExodusFile.hpp"
 
 namespace efg {
 namespace {
 
-constexpr int kNameLength = 256;
-
-std::vector<std::string> read_names(const exodus::File& f, ex_entity_type type, std::size_t count,
-                                    const std::vector<std::int64_t>& ids, const char* prefix) {
-  std::vector<std::vector<char>> storage(count, std::vector<char>(kNameLength + 1, '\0'));
-  std::vector<char*> pointers;
-  for (auto& s : storage) pointers.push_back(s.data());
-  if (count > 0) f.check(ex_get_names(f.id(), type, pointers.data()), "reading names");
-  std::vector<std::string> names;
-  for (std::size_t i = 0; i < count; ++i) {
-    std::string name(storage[i].data());
-    if (name.empty()) name = std::string(prefix) + std::to_string(ids[i]);
-    names.push_back(name);
-  }
-  return names;
-}
-
-std::vector<std::int64_t> read_ids(const exodus::File& f, ex_entity_type type, std::int64_t count) {
-  std::vector<std::int64_t> ids(static_cast<std::size_t>(count));
-  if (count > 0) f.check(ex_get_ids(f.id(), type, ids.data()), "reading entity ids");
-  return ids;
-}
+constexpr int kNameLength = exodus::kNameLength;
 
 std::vector<std::string> read_variable_names(const exodus::File& f, ex_entity_type type) {
   int count = 0;
@@ -50,78 +27,33 @@ std::vector<std::string> read_variable_names(const exodus::File& f, ex_entity_ty
   return names;
 }
 
-}  // namespace
-
-namespace {
-
-// A surface block's thickness per cell (shells): the attribute named "thickness" (any case), or
-// the only attribute of a block with one (the SEACAS and Cubit convention for SHELL4 blocks).
-std::vector<double> read_cell_thickness(const exodus::File& f, const std::string& path,
-                                        const ElementBlock& block, std::int64_t cells,
-                                        std::int64_t attributes) {
-  std::vector<std::vector<char>> storage(static_cast<std::size_t>(attributes),
-                                         std::vector<char>(kNameLength + 1, '\0'));
-  std::vector<char*> pointers;
-  for (auto& n : storage) pointers.push_back(n.data());
-  f.check(ex_get_attr_names(f.id(), EX_ELEM_BLOCK, block.id, pointers.data()),
-          "reading attribute names");
-  std::int64_t which = attributes == 1 ? 0 : -1;
-  for (std::int64_t a = 0; a < attributes; ++a) {
-    std::string name(storage[static_cast<std::size_t>(a)].data());
-    std::transform(name.begin(), name.end(), name.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    if (name == "thickness") which = a;
-  }
-  if (which < 0) return {};
-  std::vector<double> values(static_cast<std::size_t>(cells));
-  if (cells > 0)
-    f.check(ex_get_one_attr(f.id(), EX_ELEM_BLOCK, block.id, static_cast<int>(which + 1),
-                            values.data()),
-            "reading the thickness attribute");
-  for (std::size_t c = 0; c < values.size(); ++c)
-    if (!(values[c] > 0) || !std::isfinite(values[c]))
-      throw InputError("mesh file '" + path + "': block '" + block.name + "', cell " +
-                       std::to_string(c + 1) + ": thickness attribute " +
-                       std::to_string(values[c]) + "; expected a finite value > 0");
-  return values;
-}
-
 void read_blocks(const exodus::File& f, const std::string& path, std::int64_t nblocks,
                  BackgroundMesh& mesh) {
-  const auto block_ids = read_ids(f, EX_ELEM_BLOCK, nblocks);
-  const auto block_names = read_names(f, EX_ELEM_BLOCK, block_ids.size(), block_ids, "block_");
+  const auto block_ids = exodus::read_ids(f, EX_ELEM_BLOCK, nblocks);
+  const auto block_names =
+      exodus::read_names(f, EX_ELEM_BLOCK, block_ids.size(), block_ids, "block_");
   for (std::size_t b = 0; b < block_ids.size(); ++b) {
-    char type_name[MAX_STR_LENGTH + 1] = {};
-    std::int64_t count = 0, per_cell = 0, edges = 0, faces = 0, attributes = 0;
-    f.check(ex_get_block(f.id(), EX_ELEM_BLOCK, block_ids[b], type_name, &count, &per_cell, &edges,
-                         &faces, &attributes),
-            "reading an element block");
-    const auto type = cell_type_from_exodus_name(type_name);
-    if (!type || cell_node_count(*type) != per_cell)
-      throw InputError(
-          "mesh file '" + path + "': block '" + block_names[b] + "' has element type '" +
-          type_name + "' with " + std::to_string(per_cell) +
-          " nodes; supported: HEX8, TETRA4, WEDGE6 (3D), QUAD4, TRI3 (2D), SHELL4, TRISHELL3 "
-          "(shell surfaces in 3D)");
+    const auto header = exodus::read_block_header(f, path, block_ids[b], block_names[b]);
     ElementBlock block;
     block.name = block_names[b];
     block.id = block_ids[b];
-    block.type = *type;
-    std::vector<std::int64_t> conn(static_cast<std::size_t>(count * per_cell));
+    block.type = header.type;
+    std::vector<std::int64_t> conn(static_cast<std::size_t>(header.cells * header.per_cell));
     if (!conn.empty())
       f.check(ex_get_conn(f.id(), EX_ELEM_BLOCK, block_ids[b], conn.data(), nullptr, nullptr),
               "reading connectivity");
     block.connectivity.reserve(conn.size());
     for (auto n : conn) block.connectivity.push_back(static_cast<LocalIndex>(n - 1));
-    if (attributes > 0 && cell_dimension(*type) == 2)  // a shell's surface cells
-      block.thickness = read_cell_thickness(f, path, block, count, attributes);
+    if (header.thickness_attribute > 0)
+      block.thickness = exodus::read_thickness(f, path, block.name, block.id,
+                                               header.thickness_attribute, 0, header.cells);
     mesh.blocks.push_back(std::move(block));
   }
 }
 
 void read_node_sets(const exodus::File& f, std::int64_t nnode_sets, BackgroundMesh& mesh) {
-  const auto ns_ids = read_ids(f, EX_NODE_SET, nnode_sets);
-  const auto ns_names = read_names(f, EX_NODE_SET, ns_ids.size(), ns_ids, "nodeset_");
+  const auto ns_ids = exodus::read_ids(f, EX_NODE_SET, nnode_sets);
+  const auto ns_names = exodus::read_names(f, EX_NODE_SET, ns_ids.size(), ns_ids, "nodeset_");
   for (std::size_t s = 0; s < ns_ids.size(); ++s) {
     std::int64_t count = 0, factors = 0;
     f.check(ex_get_set_param(f.id(), EX_NODE_SET, ns_ids[s], &count, &factors),
@@ -137,8 +69,8 @@ void read_node_sets(const exodus::File& f, std::int64_t nnode_sets, BackgroundMe
 }
 
 void read_side_sets(const exodus::File& f, std::int64_t nside_sets, BackgroundMesh& mesh) {
-  const auto ss_ids = read_ids(f, EX_SIDE_SET, nside_sets);
-  const auto ss_names = read_names(f, EX_SIDE_SET, ss_ids.size(), ss_ids, "sideset_");
+  const auto ss_ids = exodus::read_ids(f, EX_SIDE_SET, nside_sets);
+  const auto ss_names = exodus::read_names(f, EX_SIDE_SET, ss_ids.size(), ss_ids, "sideset_");
   for (std::size_t s = 0; s < ss_ids.size(); ++s) {
     std::int64_t count = 0, factors = 0;
     f.check(ex_get_set_param(f.id(), EX_SIDE_SET, ss_ids[s], &count, &factors),
@@ -198,7 +130,7 @@ ExodusResults read_exodus_results(const std::string& path) {
   const auto steps = static_cast<int>(ex_inquire_int(f.id(), EX_INQ_TIME));
   const auto nodes = ex_inquire_int(f.id(), EX_INQ_NODES);
   const auto nblocks = ex_inquire_int(f.id(), EX_INQ_ELEM_BLK);
-  const auto block_ids = read_ids(f, EX_ELEM_BLOCK, nblocks);
+  const auto block_ids = exodus::read_ids(f, EX_ELEM_BLOCK, nblocks);
   std::vector<std::int64_t> block_sizes;
   for (auto id : block_ids) {
     char type_name[MAX_STR_LENGTH + 1] = {};

@@ -14,13 +14,30 @@ namespace {
 using ZoltanTypes = Zoltan2::BasicUserTypes<double, int, long long>;
 using CoordinateAdapter = Zoltan2::BasicVectorAdapter<ZoltanTypes>;
 
-// Rank r first holds the contiguous slice [begin(r), begin(r+1)) of the nodes; Zoltan2 moves
-// them to their RCB parts.
-std::size_t slice_begin(std::size_t n, int rank, int size) {
-  return n * static_cast<std::size_t>(rank) / static_cast<std::size_t>(size);
-}
-
 }  // namespace
+
+std::vector<int> rcb_parts(const CommPtr& comm, int dimension, GlobalIndex first,
+                           const std::vector<double>& coordinates) {
+  const auto dim = static_cast<std::size_t>(dimension);
+  const auto local = coordinates.size() / dim;
+  std::vector<long long> ids(local);
+  std::vector<double> xyz[3];
+  for (std::size_t i = 0; i < local; ++i) {
+    ids[i] = static_cast<long long>(first) + static_cast<long long>(i);
+    for (std::size_t d = 0; d < dim; ++d) xyz[d].push_back(coordinates[i * dim + d]);
+  }
+  CoordinateAdapter adapter(static_cast<int>(local), ids.data(), xyz[0].data(), xyz[1].data(),
+                            dim == 3 ? xyz[2].data() : nullptr);
+  Teuchos::ParameterList params("efg node partition");
+  params.set("algorithm", "rcb");
+  params.set("num_global_parts", comm->getSize());
+  params.set("partitioning_approach", "partition");
+  params.sublist("zoltan_parameters").set("DEBUG_LEVEL", "0");  // no banner on stdout
+  Zoltan2::PartitioningProblem<CoordinateAdapter> problem(&adapter, &params, comm);
+  problem.solve();
+  const auto* parts = problem.getSolution().getPartListView();
+  return std::vector<int>(parts, parts + local);
+}
 
 NodePartition partition_nodes(const CommPtr& comm, const BackgroundMesh& mesh) {
   NodePartition p;
@@ -29,28 +46,16 @@ NodePartition partition_nodes(const CommPtr& comm, const BackgroundMesh& mesh) {
   const std::size_t n = mesh.node_count();
   p.owner.assign(n, 0);
   if (p.size > 1) {
-    const auto begin = slice_begin(n, p.rank, p.size), end = slice_begin(n, p.rank + 1, p.size);
-    const auto local = end - begin;
-    std::vector<long long> ids(local);
-    std::vector<double> xyz[3];
-    const auto dim = static_cast<std::size_t>(mesh.dimension);
-    for (std::size_t i = 0; i < local; ++i) {
-      ids[i] = static_cast<long long>(begin + i);
-      for (std::size_t d = 0; d < dim; ++d)
-        xyz[d].push_back(mesh.coordinates[(begin + i) * dim + d]);
-    }
-    CoordinateAdapter adapter(static_cast<int>(local), ids.data(), xyz[0].data(), xyz[1].data(),
-                              dim == 3 ? xyz[2].data() : nullptr);
-    Teuchos::ParameterList params("efg node partition");
-    params.set("algorithm", "rcb");
-    params.set("num_global_parts", p.size);
-    params.set("partitioning_approach", "partition");
-    params.sublist("zoltan_parameters").set("DEBUG_LEVEL", "0");  // no banner on stdout
-    Zoltan2::PartitioningProblem<CoordinateAdapter> problem(&adapter, &params, comm);
-    problem.solve();
-    const auto* parts = problem.getSolution().getPartListView();
+    const auto count = static_cast<GlobalIndex>(n);
+    const auto begin = static_cast<std::size_t>(slice_begin(count, p.rank, p.size));
+    const auto end = static_cast<std::size_t>(slice_begin(count, p.rank + 1, p.size));
+    const auto dim = static_cast<std::ptrdiff_t>(mesh.dimension);
+    const std::vector<double> slice(
+        mesh.coordinates.begin() + static_cast<std::ptrdiff_t>(begin) * dim,
+        mesh.coordinates.begin() + static_cast<std::ptrdiff_t>(end) * dim);
+    const auto parts = rcb_parts(comm, mesh.dimension, static_cast<GlobalIndex>(begin), slice);
     std::vector<int> mine(n, 0);
-    for (std::size_t i = 0; i < local; ++i) mine[begin + i] = parts[i];
+    for (std::size_t i = 0; i < parts.size(); ++i) mine[begin + i] = parts[i];
     // Every node appears in exactly one slice, so a sum over ranks assembles the owner map.
     Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, static_cast<int>(n), mine.data(),
                        p.owner.data());

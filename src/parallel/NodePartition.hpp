@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "mesh/BackgroundMesh.hpp"
+#include "mesh/MeshSlice.hpp"
 #include "parallel/Comm.hpp"
 
 namespace efg {
@@ -20,6 +21,13 @@ struct NodePartition {
 /// Partitions the nodes with Zoltan2 RCB (one part per rank); every rank gets the whole map.
 /// On one rank no partitioner is called. The result is deterministic for a given rank count.
 NodePartition partition_nodes(const CommPtr& comm, const BackgroundMesh& mesh);
+
+/// Zoltan2 RCB parts (one per rank) of the nodes this rank holds: the contiguous global range
+/// from `first` with `coordinates` (`dimension` each). Rank r handing the r-th slice of a mesh's
+/// nodes gives the partition partition_nodes() computes, whether the mesh is whole or read in
+/// slices (parallel/LocalMesh.hpp). Collective.
+std::vector<int> rcb_parts(const CommPtr& comm, int dimension, GlobalIndex first,
+                           const std::vector<double>& coordinates);
 
 /// Nodes owned by other ranks lying within Euclidean distance `radius` of a node owned by `rank`
 /// (the ghost layer for supports of that radius), ascending.

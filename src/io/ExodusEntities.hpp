@@ -1,0 +1,41 @@
+// Reading an Exodus file's entity lists (ids, names, element block headers and the shell
+// thickness attribute): shared by the whole-mesh reader and the slice reader.
+#pragma once
+
+#include <exodusII.h>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "io/ExodusFile.hpp"
+#include "mesh/CellTopology.hpp"
+
+namespace efg::exodus {
+
+constexpr int kNameLength = 256;
+
+std::vector<std::int64_t> read_ids(const File& f, ex_entity_type type, std::int64_t count);
+
+/// Entity names; unnamed entities get `prefix` followed by their id ("block_7").
+std::vector<std::string> read_names(const File& f, ex_entity_type type, std::size_t count,
+                                    const std::vector<std::int64_t>& ids, const char* prefix);
+
+struct BlockHeader {
+  CellType type = CellType::hex8;
+  std::int64_t cells = 0;
+  std::int64_t per_cell = 0;
+  int thickness_attribute = 0;  ///< 1-based attribute index of a shell's thickness, 0: none
+};
+
+/// The block's cell type (InputError naming the block when efg does not support it), sizes and,
+/// for surface cells (shells), which attribute is the thickness: the one named "thickness" (any
+/// case) or the only attribute of a block with one (the SEACAS and Cubit convention for SHELL4).
+BlockHeader read_block_header(const File& f, const std::string& path, std::int64_t id,
+                              const std::string& name);
+
+/// Thickness of `count` cells of a block from its `first` (0-based), each checked finite and > 0.
+std::vector<double> read_thickness(const File& f, const std::string& path, const std::string& block,
+                                   std::int64_t id, int attribute, std::int64_t first,
+                                   std::int64_t count);
+
+}  // namespace efg::exodus
