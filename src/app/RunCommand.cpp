@@ -33,8 +33,8 @@ void log_model(const Model& model, const CommPtr& comm) {
   long long min = 0, max = 0;
   Teuchos::reduceAll(*comm, Teuchos::REDUCE_MIN, owned, Teuchos::outArg(min));
   Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, owned, Teuchos::outArg(max));
-  Log::info("mesh: " + model.mesh.source + ": " + std::to_string(model.mesh.node_count()) +
-            " particles, " + std::to_string(model.mesh.cell_count()) +
+  Log::info("mesh: " + model.mesh.source + ": " + std::to_string(model.mesh.whole_node_count()) +
+            " particles, " + std::to_string(model.mesh.whole_cell_count()) +
             " background cells; particles per rank " + std::to_string(min) + " to " +
             std::to_string(max));
 }
@@ -65,7 +65,7 @@ void log_discretization(const Model& model, const CommPtr& comm) {
 void run_command(const CommPtr& comm, const CommandLine& cl) {
   const auto started = std::chrono::steady_clock::now();
   const Model model = build_model(comm, cl.scene);
-  check_run_inputs(comm, model.scene, model.mesh, cl.output_dir);
+  check_run_inputs(comm, model.scene, model.mesh, cl.output_dir, &model.partition);
   log_model(model, comm);
   for (const auto& w : thread_warnings(cl.threads)) Log::warning(w);
   log_discretization(model, comm);

@@ -113,7 +113,8 @@ void build_scni_subcells(const BackgroundMesh& mesh, const PartSpec& part,
   const auto points = smoothing_points(mesh, part.blocks, owned, &cell_of_point, true);
   const auto at_particles = evaluate_shape_functions(
       cloud, cloud.position.data(), cloud.owned_count, false, [&](std::size_t p) {
-        return "SCNI node at particle " + std::to_string(cloud.mesh_node[p] + 1);
+        return "SCNI node at particle " +
+               std::to_string(mesh.global_node(static_cast<std::size_t>(cloud.mesh_node[p])) + 1);
       });
   ip.values.width = 1;
   ip.values.offsets.assign(1, 0);
@@ -170,9 +171,12 @@ void build_scni_subcells(const BackgroundMesh& mesh, const PartSpec& part,
     for (std::size_t k = 0; k < pieces.size(); ++k)
       if (!(volume[k] > 0))
         throw NumericalError(
-            "SCNI subcells: the piece of background cell " + std::to_string(pieces[k].second + 1) +
-            " around particle " +
-            std::to_string(cloud.mesh_node[first + static_cast<std::size_t>(pieces[k].first)] + 1) +
+            "SCNI subcells: the piece of background cell " +
+            std::to_string(mesh.global_cell(pieces[k].second) + 1) + " around particle " +
+            std::to_string(
+                mesh.global_node(static_cast<std::size_t>(
+                    cloud.mesh_node[first + static_cast<std::size_t>(pieces[k].first)])) +
+                1) +
             " has volume " + std::to_string(volume[k]) + " <= 0 (an inverted cell?)");
     // A cell side inside the part is emitted by both its cells (for each one's pieces): its
     // points are evaluated once (a third of the points in 2D and 3D). Coincident points differ

@@ -29,8 +29,11 @@ PartDiscretization discretize_part(const BackgroundMesh& mesh, const PartSpec& p
   if (part.section.integration == Integration::gauss ||
       part.section.integration == Integration::scni_subcells) {
     const auto v = evaluate_shape_functions(
-        d.cloud, d.cloud.position.data(), d.cloud.owned_count, true,
-        [&](std::size_t p) { return "particle " + std::to_string(d.cloud.mesh_node[p] + 1); });
+        d.cloud, d.cloud.position.data(), d.cloud.owned_count, true, [&](std::size_t p) {
+          return "particle " +
+                 std::to_string(mesh.global_node(static_cast<std::size_t>(d.cloud.mesh_node[p])) +
+                                1);
+        });
     d.own_particle_tables = true;
     d.own_particle_values = table_from(v, false, d.cloud.dimension);
     d.own_particle_gradients = table_from(v, true, d.cloud.dimension);

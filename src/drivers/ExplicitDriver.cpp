@@ -120,14 +120,16 @@ bool ExplicitDriver::finite(const RunState& state) const {
 }
 
 std::string ExplicitDriver::particle_label(long long particle) const {
-  const int dim = ops_.model().mesh.dimension;
-  const auto node = static_cast<std::size_t>(particle);
+  const auto& mesh = ops_.model().mesh;
+  const auto dim = static_cast<std::size_t>(mesh.dimension);
   std::ostringstream o;
-  o << "particle " << node + 1 << " (X = (";
-  for (int k = 0; k < dim; ++k)
-    o << (k ? ", " : "")
-      << ops_.model()
-             .mesh.coordinates[node * static_cast<std::size_t>(dim) + static_cast<std::size_t>(k)];
+  o << "particle " << particle + 1;
+  // (on a rank's part of a mesh read in slices the particle may be elsewhere)
+  const auto node = mesh.node_of(particle);
+  if (node < 0) return o.str();
+  o << " (X = (";
+  for (std::size_t k = 0; k < dim; ++k)
+    o << (k ? ", " : "") << mesh.coordinates[static_cast<std::size_t>(node) * dim + k];
   o << "))";
   return o.str();
 }

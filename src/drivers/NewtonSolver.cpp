@@ -147,8 +147,8 @@ NewtonSolver::NewtonSolver(NonlinearProblem& problem, const YAML::Node& stage,
     auxiliary = [&problem](const Tpetra::CrsMatrix<>& K) { return problem.auxiliary_matrix(K); };
   if (plan_.preconditioner == LinearSolverPlan::Preconditioner::multigrid ||
       plan_.preconditioner == LinearSolverPlan::Preconditioner::auxiliary) {
-    modes = rigid_body_modes(model.maps, model.mesh.dimension, model.mesh.coordinates);
-    coordinates = particle_coordinates(model.maps, model.mesh.dimension, model.mesh.coordinates);
+    modes = rigid_body_modes(model.maps, model.mesh);
+    coordinates = particle_coordinates(model.maps, model.mesh);
   }
   preconditioner_ =
       make_matrix_preconditioner(plan_, problem.owned_dofs(), modes, coordinates, auxiliary);

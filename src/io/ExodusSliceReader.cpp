@@ -44,7 +44,16 @@ void read_block_slices(const exodus::File& f, const std::string& path, std::int6
                                   conn.data(), nullptr, nullptr),
               "reading connectivity");
       block.connectivity.reserve(conn.size());
-      for (auto n : conn) block.connectivity.push_back(n - 1);
+      for (std::size_t k = 0; k < conn.size(); ++k) {
+        // checked here: the slices are routed by these indices (validate_mesh sees the parts)
+        if (conn[k] < 1 || conn[k] > slice.node_count)
+          throw InputError("mesh file '" + path + "': block '" + block.name + "' cell " +
+                           std::to_string(mine.begin - first + 1 +
+                                          static_cast<GlobalIndex>(k) / header.per_cell) +
+                           " refers to node " + std::to_string(conn[k]) + ", outside 1.." +
+                           std::to_string(slice.node_count));
+        block.connectivity.push_back(conn[k] - 1);
+      }
       if (block.has_thickness)
         block.thickness =
             exodus::read_thickness(f, path, block.name, block.id, header.thickness_attribute,
@@ -76,7 +85,13 @@ void read_set_slices(const exodus::File& f, std::int64_t nnode_sets, std::int64_
     if (!entries.empty())
       f.check(ex_get_partial_node_set(f.id(), ns_ids[s], begin + 1, end - begin, entries.data()),
               "reading a node set");
-    for (auto n : entries) set.nodes.push_back(n - 1);
+    for (auto n : entries) {
+      if (n < 1 || n > slice.node_count)
+        throw InputError("mesh file '" + slice.source + "': node set '" + set.name +
+                         "' refers to node " + std::to_string(n) + ", outside 1.." +
+                         std::to_string(slice.node_count));
+      set.nodes.push_back(n - 1);
+    }
     slice.node_sets.push_back(std::move(set));
   }
   const auto ss_ids = exodus::read_ids(f, EX_SIDE_SET, nside_sets);
@@ -91,6 +106,10 @@ void read_set_slices(const exodus::File& f, std::int64_t nnode_sets, std::int64_
                                       sides.data()),
               "reading a side set");
     for (std::size_t i = 0; i < cells.size(); ++i) {
+      if (cells[i] < 1 || cells[i] > slice.cell_count)
+        throw InputError("mesh file '" + slice.source + "': side set '" + set.name +
+                         "' refers to cell " + std::to_string(cells[i]) + ", outside 1.." +
+                         std::to_string(slice.cell_count));
       set.cells.push_back(cells[i] - 1);
       set.sides.push_back(static_cast<int>(sides[i] - 1));
     }

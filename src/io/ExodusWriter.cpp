@@ -24,14 +24,14 @@ struct NameArray {
 // A non-finite result is numerical trouble (an overflowed state), never written silently.
 // (`ids`: the whole mesh's index of each entry of a piece's field; empty: the entry's own)
 void require_finite(const std::vector<double>& values, const std::string& name, double time,
-                    const char* index_kind, const std::vector<LocalIndex>& ids = {}) {
+                    const char* index_kind, const std::vector<GlobalIndex>& ids = {}) {
   for (std::size_t i = 0; i < values.size(); ++i)
     if (!std::isfinite(values[i]))
       throw NumericalError(
           "the results hold a non-finite value (" + std::to_string(values[i]) +
           ") in output field '" + name + "'" +
           (index_kind ? std::string(" at ") + index_kind + " " +
-                            std::to_string((ids.empty() ? i : static_cast<std::size_t>(ids[i])) + 1)
+                            std::to_string((ids.empty() ? static_cast<GlobalIndex>(i) : ids[i]) + 1)
                       : std::string()) +
           ", t = " + std::to_string(time) +
           ": the state overflowed or became undefined; nothing of it is written");

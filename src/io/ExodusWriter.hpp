@@ -26,7 +26,7 @@ struct OutputLayout {
 /// each of its nodes and cells (written as the Exodus node and element id maps, 1-based) and the
 /// rank count, so that SEACAS `epu` joins the pieces into the whole mesh's numbering.
 struct ExodusPieceIds {
-  std::vector<LocalIndex> nodes, cells;
+  std::vector<GlobalIndex> nodes, cells;
   int ranks = 1;
 };
 

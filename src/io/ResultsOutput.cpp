@@ -26,7 +26,20 @@ std::vector<GlobalOrdinal> first_indices(std::size_t count) {
   return gids;
 }
 
-std::vector<GlobalOrdinal> global_ordinals(const std::vector<LocalIndex>& indices) {
+// The whole mesh's index of each of `indices` (nodes or cells of `mesh`, a whole mesh or a
+// rank's part of one).
+std::vector<GlobalIndex> whole_indices(const std::vector<LocalIndex>& indices,
+                                       const BackgroundMesh& mesh, bool cells) {
+  std::vector<GlobalIndex> ids;
+  ids.reserve(indices.size());
+  for (auto i : indices) {
+    const auto k = static_cast<std::size_t>(i);
+    ids.push_back(cells ? mesh.global_cell(k) : mesh.global_node(k));
+  }
+  return ids;
+}
+
+std::vector<GlobalOrdinal> global_ordinals(const std::vector<GlobalIndex>& indices) {
   return std::vector<GlobalOrdinal>(indices.begin(), indices.end());
 }
 
@@ -47,20 +60,28 @@ ResultsOutput::ResultsOutput(const CommPtr& comm, const std::string& path,
   const bool root = comm->getRank() == 0;
   per_rank = writes_pieces(per_rank, comm->getSize());
   // What this rank writes: the whole mesh (rank 0, gathered), its piece, or nothing.
+  // A rank's part of a mesh read in slices is never gathered (no rank holds the whole mesh).
+  if (mesh.is_part() && !per_rank && comm->getSize() > 1)
+    throw std::logic_error("ResultsOutput: a mesh read in slices is written one file per rank");
   MeshPiece piece;
-  if (per_rank)
+  ExodusPieceIds ids;
+  if (per_rank) {
     piece = mesh_piece(mesh, [&](LocalIndex n) {
-      return owned_nodes->isNodeGlobalElement(static_cast<GlobalOrdinal>(n));
+      return owned_nodes->isNodeGlobalElement(
+          static_cast<GlobalOrdinal>(mesh.global_node(static_cast<std::size_t>(n))));
     });
+    ids = {whole_indices(piece.nodes, mesh, false), whole_indices(piece.cells, mesh, true),
+           comm->getSize()};
+  }
   const BackgroundMesh& written = per_rank ? piece.mesh : mesh;
   const bool writes = per_rank || root;
   nodes_ = writes ? written.node_count() : 0;
-  root_map_ = map_of(per_rank ? global_ordinals(piece.nodes) : first_indices(nodes_), comm);
+  root_map_ = map_of(per_rank ? global_ordinals(ids.nodes) : first_indices(nodes_), comm);
   gather_ = Teuchos::rcp(new Tpetra::Import<>(owned_nodes, root_map_));
   if (!layout.element.empty()) {
     cells_ = writes ? written.cell_count() : 0;
     cell_map_ = map_of(owned_cells, comm);
-    cell_root_map_ = map_of(per_rank ? global_ordinals(piece.cells) : first_indices(cells_), comm);
+    cell_root_map_ = map_of(per_rank ? global_ordinals(ids.cells) : first_indices(cells_), comm);
     cell_gather_ = Teuchos::rcp(new Tpetra::Import<>(cell_map_, cell_root_map_));
   }
   // The ranks that write create their files; all ranks learn whether that worked.
@@ -70,7 +91,6 @@ ResultsOutput::ResultsOutput(const CommPtr& comm, const std::string& path,
       writer_ = std::make_unique<ExodusWriter>(path, mesh, layout, title);
       return;
     }
-    const ExodusPieceIds ids{piece.nodes, piece.cells, comm->getSize()};
     writer_ = std::make_unique<ExodusWriter>(piece_path(path, comm->getSize(), comm->getRank()),
                                              piece.mesh, layout, title, &ids);
   });

@@ -1,5 +1,6 @@
 #include "mesh/BackgroundMesh.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace efg {
@@ -11,6 +12,15 @@ const Set* find_named(const std::vector<Set>& sets, const std::string& name) {
   return nullptr;
 }
 }  // namespace
+
+LocalIndex BackgroundMesh::node_of(GlobalIndex id) const {
+  if (!is_part())
+    return id >= 0 && id < static_cast<GlobalIndex>(node_count()) ? static_cast<LocalIndex>(id)
+                                                                  : -1;
+  const auto it = std::lower_bound(global.nodes.begin(), global.nodes.end(), id);
+  return it != global.nodes.end() && *it == id ? static_cast<LocalIndex>(it - global.nodes.begin())
+                                               : -1;
+}
 
 std::size_t BackgroundMesh::cell_count() const {
   std::size_t n = 0;

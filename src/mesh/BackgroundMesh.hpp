@@ -11,6 +11,7 @@
 namespace efg {
 
 using LocalIndex = std::int32_t;
+using GlobalIndex = std::int64_t;
 
 struct ElementBlock {
   std::string name;
@@ -40,6 +41,14 @@ struct SideSet {
   std::vector<int> sides;         ///< 0-based local side numbers
 };
 
+/// The whole mesh's numbering of a rank's part of it (a mesh read in slices,
+/// parallel/LocalMesh.hpp): the whole mesh's index of every node and cell here, both ascending,
+/// and the whole mesh's sizes.
+struct GlobalNumbering {
+  std::vector<GlobalIndex> nodes, cells;
+  GlobalIndex node_count = 0, cell_count = 0;
+};
+
 struct BackgroundMesh {
   int dimension = 3;
   std::vector<double> coordinates;  ///< node after node, `dimension` components each
@@ -51,11 +60,33 @@ struct BackgroundMesh {
   /// its nodes' 3D positions, 3 per node, while `coordinates` hold their 2D chart coordinates
   /// (dimension 2). Empty for every other mesh.
   std::vector<double> surface;
+  /// Set on a rank's part of a mesh read in slices; empty for a whole mesh, whose indices are the
+  /// global ones.
+  GlobalNumbering global;
 
   std::size_t node_count() const {
     return coordinates.size() / static_cast<std::size_t>(dimension);
   }
   std::size_t cell_count() const;
+
+  /// A rank's part of a mesh (read in slices), not the whole mesh.
+  bool is_part() const { return global.node_count > 0; }
+  /// The whole mesh's index of node `n` / cell `c` of this mesh.
+  GlobalIndex global_node(std::size_t n) const {
+    return is_part() ? global.nodes[n] : static_cast<GlobalIndex>(n);
+  }
+  GlobalIndex global_cell(std::size_t c) const {
+    return is_part() ? global.cells[c] : static_cast<GlobalIndex>(c);
+  }
+  /// This mesh's index of the whole mesh's node `id`, or -1 when it is not here.
+  LocalIndex node_of(GlobalIndex id) const;
+  /// Nodes and cells of the whole mesh.
+  GlobalIndex whole_node_count() const {
+    return is_part() ? global.node_count : static_cast<GlobalIndex>(node_count());
+  }
+  GlobalIndex whole_cell_count() const {
+    return is_part() ? global.cell_count : static_cast<GlobalIndex>(cell_count());
+  }
 
   const ElementBlock* find_block(const std::string& name) const;
   const NodeSet* find_node_set(const std::string& name) const;

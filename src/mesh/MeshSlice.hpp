@@ -9,11 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "mesh/CellTopology.hpp"
+#include "mesh/BackgroundMesh.hpp"
 
 namespace efg {
-
-using GlobalIndex = std::int64_t;
 
 /// First index of rank `rank`'s share when `count` items are dealt in contiguous ranges.
 inline GlobalIndex slice_begin(GlobalIndex count, int rank, int size) {

@@ -11,6 +11,7 @@
 #include "mesh/MeshValidation.hpp"
 #include "mesh/SurfaceChart.hpp"
 #include "model/ContactGhosts.hpp"
+#include "model/DistributedMesh.hpp"
 #include "model/GradedMaterials.hpp"
 #include "model/RigidMeshBlocks.hpp"
 #include "parallel/Collective.hpp"
@@ -75,18 +76,27 @@ Model build_model(const CommPtr& comm, Scene scene) {
   memory.reset();
   Model model;
   model.scene = std::move(scene);
-  {
-    Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewCounter("efg: scene and mesh"));
-    model.mesh = load_mesh(comm, model.scene);
-    set_graded_references(model.scene, model.mesh);
-  }
-  memory.mark("scene and mesh");
-  {
+  if (model.scene.distributed_read) {
+    // Each rank reads its slice and keeps its part: read, partition and mesh checks in one.
     Teuchos::TimeMonitor timer(
-        *Teuchos::TimeMonitor::getNewCounter("efg: partition (Zoltan2 RCB)"));
-    model.partition = partition_nodes(comm, model.mesh);
+        *Teuchos::TimeMonitor::getNewCounter("efg: distributed mesh read and partition"));
+    model.mesh = load_distributed_mesh(comm, model.scene, model.partition);
+    memory.mark("scene and mesh");
+    memory.mark("partition");
+  } else {
+    {
+      Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewCounter("efg: scene and mesh"));
+      model.mesh = load_mesh(comm, model.scene);
+      set_graded_references(model.scene, model.mesh);
+    }
+    memory.mark("scene and mesh");
+    {
+      Teuchos::TimeMonitor timer(
+          *Teuchos::TimeMonitor::getNewCounter("efg: partition (Zoltan2 RCB)"));
+      model.partition = partition_nodes(comm, model.mesh);
+    }
+    memory.mark("partition");
   }
-  memory.mark("partition");
   run_collectively(comm, [&] {
     for (const auto& part : model.scene.parts)
       model.parts.push_back(discretize_part(model.mesh, part, model.partition));
@@ -98,7 +108,7 @@ Model build_model(const CommPtr& comm, Scene scene) {
       ghosts.insert(d.cloud.mesh_node[i]);
   for (auto n : contact_row_ghosts(comm, model)) ghosts.insert(n);
   model.partition.ghosts.assign(ghosts.begin(), ghosts.end());
-  model.maps = make_dof_maps(comm, model.partition, model.mesh.dimension);
+  model.maps = make_dof_maps(comm, model.partition, model.mesh.dimension, model.mesh.global);
   memory.mark("ghosts and maps");
   return model;
 }

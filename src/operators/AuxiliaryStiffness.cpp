@@ -95,7 +95,8 @@ Teuchos::RCP<Tpetra::CrsMatrix<>> auxiliary_stiffness(const Model& model,
         for (std::size_t a = 0; a < n; ++a) {
           if (model.partition.owner[static_cast<std::size_t>(nodes[a])] != rank) continue;
           for (int i = 0; i < dim; ++i) {
-            const auto row = rows.getLocalElement(static_cast<GO>(nodes[a]) * dim + i);
+            const auto row = rows.getLocalElement(
+                static_cast<GO>(mesh.global_node(static_cast<std::size_t>(nodes[a]))) * dim + i);
             if (row == Teuchos::OrdinalTraits<int>::invalid()) continue;  // not a particle
             auto& out = entries[static_cast<std::size_t>(row)];
             const auto* k =
@@ -103,7 +104,7 @@ Teuchos::RCP<Tpetra::CrsMatrix<>> auxiliary_stiffness(const Model& model,
             for (std::size_t b = 0; b < n; ++b)
               for (int j = 0; j < dim; ++j)
                 out.emplace_back(
-                    static_cast<GO>(nodes[b]) * dim + j,
+                    static_cast<GO>(mesh.global_node(static_cast<std::size_t>(nodes[b]))) * dim + j,
                     k[b * static_cast<std::size_t>(dim) + static_cast<std::size_t>(j)]);
           }
         }

@@ -4,6 +4,7 @@
 
 #include "core/Errors.hpp"
 #include "discretization/ShapeFunctions.hpp"
+#include "model/NodeSetSize.hpp"
 #include "operators/SideQuadrature.hpp"
 
 namespace efg {
@@ -87,7 +88,10 @@ Points surface_points(const Model& model, const LoadSpec& spec) {
 Points nodal_points(const Model& model, const LoadSpec& spec) {
   Points pts;
   const auto* set = model.mesh.find_node_set(spec.set);
-  const double share = 1.0 / static_cast<double>(set->nodes.size());
+  // (a rank's part of a mesh read in slices holds part of the set: its size over the ranks)
+  const double share =
+      1.0 / static_cast<double>(model.mesh.is_part() ? owned_entries_over_ranks(model, *set)
+                                                     : set->nodes.size());
   for (auto node : set->nodes) {
     if (model.partition.owner[static_cast<std::size_t>(node)] != model.partition.rank) continue;
     for (std::size_t p = 0; p < model.parts.size(); ++p) {

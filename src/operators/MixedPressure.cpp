@@ -278,7 +278,8 @@ std::vector<double> MixedPressure::particle_pressures(const Vector& d_overlap) c
         std::sort(nodes.begin(), nodes.end());
         nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
         for (const auto node : nodes) {
-          const auto lid = maps.overlap_nodes->getLocalElement(static_cast<GlobalOrdinal>(node));
+          const auto lid = maps.overlap_nodes->getLocalElement(
+              static_cast<GlobalOrdinal>(mesh.global_node(static_cast<std::size_t>(node))));
           if (lid == Teuchos::OrdinalTraits<int>::invalid())
             throw std::logic_error("mixed u-p: a cell's node is missing from the overlap map");
           o(static_cast<std::size_t>(lid), 0) += pressure[c] * p.volume[c];

@@ -1,5 +1,6 @@
 // Tpetra maps of the particles and of their degrees of freedom: owned, and owned plus ghosts
-// (overlap). Global ids are mesh node indices; dof gid = node gid * dofs_per_node + component.
+// (overlap). Global ids are the whole mesh's node indices (on a rank's part of a mesh read in
+// slices, through its GlobalNumbering); dof gid = node gid * dofs_per_node + component.
 #pragma once
 
 #include <Tpetra_Map.hpp>
@@ -16,7 +17,9 @@ struct DofMaps {
   int dofs_per_node = 1;
 };
 
-/// Overlap maps list the owned entries first, then the ghosts, each ascending.
-DofMaps make_dof_maps(const CommPtr& comm, const NodePartition& partition, int dofs_per_node);
+/// Overlap maps list the owned entries first, then the ghosts, each ascending. `numbering`: the
+/// whole mesh's index of each of the partition's mesh nodes (mesh.global; empty for a whole mesh).
+DofMaps make_dof_maps(const CommPtr& comm, const NodePartition& partition, int dofs_per_node,
+                      const GlobalNumbering& numbering = {});
 
 }  // namespace efg

@@ -230,7 +230,7 @@ void add_node_sets(const CommPtr& comm, const MeshSlice& slice, const Holders& n
   for (const auto& list : got)
     for (std::size_t e = 0; e + 3 <= list.size(); e += 3)
       entries[static_cast<std::size_t>(list[e])].emplace_back(list[e + 1],
-                                                              local.local_node(list[e + 2]));
+                                                              local.mesh.node_of(list[e + 2]));
   for (std::size_t s = 0; s < slice.node_sets.size(); ++s) {
     std::sort(entries[s].begin(), entries[s].end());  // file order
     NodeSet set{slice.node_sets[s].name, slice.node_sets[s].id, {}};
@@ -259,7 +259,7 @@ void add_side_sets(const CommPtr& comm, const MeshSlice& slice, const Holders& c
     for (std::size_t e = 0; e + 4 <= list.size(); e += 4)
       entries[static_cast<std::size_t>(list[e])].push_back(
           {list[e + 1],
-           {static_cast<LocalIndex>(position_of(local.cell_ids, list[e + 2])),
+           {static_cast<LocalIndex>(position_of(local.mesh.global.cells, list[e + 2])),
             static_cast<int>(list[e + 3])}});
   for (std::size_t s = 0; s < slice.side_sets.size(); ++s) {
     std::sort(entries[s].begin(), entries[s].end());
@@ -300,9 +300,9 @@ void add_blocks(const MeshSlice& slice, const std::vector<CellStream>& streams, 
     ElementBlock kept{block.name, block.id, block.type, {}, {}};
     kept.connectivity.reserve(cells.size() * per);
     for (const auto& c : cells) {
-      local.cell_ids.push_back(c.id);
+      local.mesh.global.cells.push_back(c.id);
       for (std::size_t a = 0; a < per; ++a)
-        kept.connectivity.push_back(local.local_node(c.nodes[a]));
+        kept.connectivity.push_back(local.mesh.node_of(c.nodes[a]));
       if (block.has_thickness) kept.thickness.push_back(c.thickness);
     }
     local.mesh.blocks.push_back(std::move(kept));
@@ -310,11 +310,6 @@ void add_blocks(const MeshSlice& slice, const std::vector<CellStream>& streams, 
 }
 
 }  // namespace
-
-LocalIndex LocalMesh::local_node(GlobalIndex id) const {
-  const auto it = std::lower_bound(node_ids.begin(), node_ids.end(), id);
-  return it != node_ids.end() && *it == id ? static_cast<LocalIndex>(it - node_ids.begin()) : -1;
-}
 
 LocalMesh distribute_mesh(const CommPtr& comm, const MeshSlice& slice,
                           const std::function<double(const BlockExtents&)>& halo_width) {
@@ -360,9 +355,9 @@ LocalMesh distribute_mesh(const CommPtr& comm, const MeshSlice& slice,
   auto records = fetch_nodes(comm, slice, slice_owner, std::move(ids), &node_holders);
 
   LocalMesh local;
-  local.global_node_count = slice.node_count;
-  local.global_cell_count = slice.cell_count;
-  local.node_ids = std::move(records.ids);
+  local.mesh.global.node_count = slice.node_count;
+  local.mesh.global.cell_count = slice.cell_count;
+  local.mesh.global.nodes = std::move(records.ids);
   local.owner = std::move(records.owner);
   local.mesh.dimension = slice.dimension;
   local.mesh.source = slice.source;

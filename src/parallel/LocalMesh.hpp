@@ -25,15 +25,8 @@
 namespace efg {
 
 struct LocalMesh {
-  BackgroundMesh mesh;  ///< numbered here: nodes and cells ascending in their global index
-  std::vector<GlobalIndex> node_ids;  ///< global index of every local node
-  std::vector<GlobalIndex> cell_ids;  ///< global index of every local cell
-  std::vector<int> owner;             ///< owning rank of every local node
-  GlobalIndex global_node_count = 0;
-  GlobalIndex global_cell_count = 0;
-
-  /// Local index of global node `id`, or -1 when it is not here.
-  LocalIndex local_node(GlobalIndex id) const;
+  BackgroundMesh mesh;     ///< numbered here, nodes and cells ascending in `mesh.global`
+  std::vector<int> owner;  ///< owning rank of every node here
 };
 
 /// The largest extent of a block's cells in each direction (`dimension` values per block, in the

@@ -80,7 +80,8 @@ std::vector<GlobalOrdinal> output_cells(const Model& model) {
   for (const auto& part : model.parts)  // the background cells of each owned pressure cell
     for (auto g : part.cells.group)
       for (auto k = part.pressure_cells.offsets[g]; k < part.pressure_cells.offsets[g + 1]; ++k)
-        cells.push_back(static_cast<GlobalOrdinal>(part.pressure_cells.cells[k]));
+        cells.push_back(static_cast<GlobalOrdinal>(
+            model.mesh.global_cell(static_cast<std::size_t>(part.pressure_cells.cells[k]))));
   return cells;
 }
 

@@ -1,9 +1,12 @@
 #include "run/RunChecks.hpp"
 #include "run/ShellRun.hpp"
 
+#include <Teuchos_CommHelpers.hpp>
+
 #include <algorithm>
 #include <memory>
 #include <set>
+#include <stdexcept>
 
 #include "core/Errors.hpp"
 #include "drivers/ExplicitDriver.hpp"
@@ -48,23 +51,31 @@ void check_reference_quantities(const Scene& scene, const BackgroundMesh& mesh) 
   }
 }
 
-std::int64_t part_dofs(const Scene& scene, const BackgroundMesh& mesh) {
+// (On a rank's part of a mesh read in slices: the part nodes owned here, summed over the ranks.)
+std::int64_t part_dofs(const CommPtr& comm, const Scene& scene, const BackgroundMesh& mesh,
+                       const NodePartition* partition) {
   std::set<LocalIndex> nodes;
   for (const auto& part : scene.parts)
     for (const auto& block : mesh.blocks)
       if (std::find(part.blocks.begin(), part.blocks.end(), block.name) != part.blocks.end())
         nodes.insert(block.connectivity.begin(), block.connectivity.end());
-  return static_cast<std::int64_t>(nodes.size()) * mesh.dimension;
+  if (!mesh.is_part()) return static_cast<std::int64_t>(nodes.size()) * mesh.dimension;
+  if (!partition) throw std::logic_error("part_dofs: a rank's part of a mesh needs its owners");
+  long long owned = 0, all = 0;
+  for (auto n : nodes)
+    if (partition->owner[static_cast<std::size_t>(n)] == partition->rank) ++owned;
+  Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, owned, Teuchos::outArg(all));
+  return static_cast<std::int64_t>(all) * mesh.dimension;
 }
 
 }  // namespace
 
 void check_run_inputs(const CommPtr& comm, const Scene& scene, const BackgroundMesh& mesh,
-                      const std::string& output_dir) {
+                      const std::string& output_dir, const NodePartition* partition) {
   prepare_output_paths(comm, scene, output_dir, /*create=*/false);
   check_reference_quantities(scene, mesh);
   read_initial_state(scene, mesh);  // the restart record exists and fits (read again by the run)
-  const auto dofs = part_dofs(scene, mesh);
+  const auto dofs = part_dofs(comm, scene, mesh, partition);
   for (std::size_t i = 0; i < scene.stages.size(); ++i)
     if (scene.stages[i].driver == "implicit")
       check_solver_settings(scene.stages[i].settings, scene.document["stages"][i], scene.file,

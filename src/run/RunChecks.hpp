@@ -7,15 +7,17 @@
 #include <string>
 
 #include "mesh/BackgroundMesh.hpp"
-#include "parallel/Comm.hpp"
 #include "model/Model.hpp"
+#include "parallel/Comm.hpp"
 #include "scene/Scene.hpp"
 
 namespace efg {
 
 /// Throws InputError (file, line, key path) on every rank; creates and writes nothing.
+/// `partition`: the owners of `mesh`'s nodes, needed when it is a rank's part of a mesh read in
+/// slices (sizes are then summed over the ranks).
 void check_run_inputs(const CommPtr& comm, const Scene& scene, const BackgroundMesh& mesh,
-                      const std::string& output_dir);
+                      const std::string& output_dir, const NodePartition* partition = nullptr);
 
 /// For `efg check`: what `run` finds once the model is built and before its first step, from the
 /// same code: the operators (conditions, loads, walls) and each explicit stage's time-step plan

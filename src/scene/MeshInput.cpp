@@ -83,12 +83,17 @@ void read_mesh(Scene& s, const YAML::Node& m, const YAML::Node& doc) {
       fail(s, doc["file"], "mesh.file",
            "cannot read mesh file '" + s.mesh_file +
                "' (expected an existing, readable Exodus II file)");
+    s.distributed_read = m["read"].as<std::string>() == "distributed";
     if (m["more_blocks"].size() > 0)
       fail(s, doc["more_blocks"], "mesh.more_blocks",
            "further generated blocks join a generated mesh only (expected mesh.generate, or "
            "the blocks in the Exodus file)");
     return;
   }
+  if (m["read"].as<std::string>() == "distributed")
+    fail(s, doc["read"], "mesh.read",
+         "a generated mesh is made on rank 0 and sent to every rank; expected read: distributed "
+         "with mesh.file only (write the mesh with `efg mesh SCENE OUT.exo` and read that)");
   s.generator = generator_spec(s, m["generate"], doc["generate"], "mesh.generate");
   for (std::size_t i = 0; i < m["more_blocks"].size(); ++i) {
     const auto path = "mesh.more_blocks[" + std::to_string(i) + "]";

@@ -247,6 +247,7 @@ struct Scene {
   std::string title;
   std::map<std::string, double> parameters;  ///< named constants (parameters:), usable in values
   std::string mesh_file;                     ///< resolved path, empty when generated
+  bool distributed_read = false;             ///< mesh.read: distributed (each rank reads its slice)
   std::optional<GeneratorSpec> generator;
   /// mesh.chart: the 2D chart of a shell surface read in 3D, (x, y) of its point X (3 entries);
   /// empty: the projection chart of mesh/SurfaceChart.hpp.

@@ -1,5 +1,6 @@
 #include "scene/SceneMeshChecks.hpp"
 
+#include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_LAPACK.hpp>
 
 #include <algorithm>
@@ -26,7 +27,8 @@ std::vector<std::string> names_of(const std::vector<Set>& sets) {
 
 class Checker {
  public:
-  Checker(const Scene& s, const BackgroundMesh& m) : s_(s), m_(m) {}
+  Checker(const Scene& s, const BackgroundMesh& m, const MeshOwners& owners)
+      : s_(s), m_(m), owners_(owners) {}
 
   [[noreturn]] void fail(const YAML::Node& at, const std::string& path,
                          const std::string& message) const {
@@ -132,8 +134,8 @@ class Checker {
         require_name(wd["node_set"], path + ".node_set", w.node_set, "node set", node_sets);
     }
     check_rigid_bodies();
-    check_conflicting_conditions();
-    check_parts_do_not_share_nodes();
+    on_this_rank([&] { check_conflicting_conditions(); });
+    on_this_rank([&] { check_parts_do_not_share_nodes(); });
     check_parts_held();
     for (std::size_t i = 0; i < s_.output.history_node_sets.size(); ++i)
       require_name(d["output"]["history_node_sets"][i],
@@ -160,9 +162,29 @@ class Checker {
                           s_.user_solution->body_force.size());
     }
     check_expressions_at_nodes(s_, m_);
+    if (deferred_) throw InputError(*deferred_);
   }
 
  private:
+  bool distributed() const { return owners_.owner != nullptr; }
+  bool owned(std::size_t n) const { return !distributed() || (*owners_.owner)[n] == owners_.rank; }
+  void sum_over_ranks(double* values, int count, Teuchos::EReductionType how) const {
+    if (!distributed()) return;
+    std::vector<double> mine(values, values + count);
+    Teuchos::reduceAll(*owners_.comm, how, count, mine.data(), values);
+  }
+
+  // A check on data of this rank alone: on a rank's part of a mesh its failure waits until the
+  // collective checks are done (every rank must reach them), then is thrown.
+  template <class Check>
+  void on_this_rank(Check check) const {
+    if (!distributed()) return check();
+    try {
+      check();
+    } catch (const InputError& e) {
+      if (!deferred_) deferred_ = e.what();
+    }
+  }
   // An implicit stage needs every part held against rigid-body motion by its displacement
   // conditions, or its stiffness is singular (a consistent load then "solves" with an arbitrary
   // rigid motion, an inconsistent one fails in the linear solver). The test: the rigid-body
@@ -235,7 +257,7 @@ class Checker {
     double centre[3] = {0, 0, 0}, lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
     double count = 0;
     for (std::size_t n = 0; n < m_.node_count(); ++n)
-      if (in_part[n]) {
+      if (in_part[n] && owned(n)) {
         count += 1;
         for (std::size_t k = 0; k < udim; ++k) {
           const double x = m_.coordinates[n * udim + k];
@@ -244,6 +266,10 @@ class Checker {
           hi[k] = std::max(hi[k], x);
         }
       }
+    sum_over_ranks(centre, 3, Teuchos::REDUCE_SUM);
+    sum_over_ranks(&count, 1, Teuchos::REDUCE_SUM);
+    sum_over_ranks(lo, 3, Teuchos::REDUCE_MIN);
+    sum_over_ranks(hi, 3, Teuchos::REDUCE_MAX);
     if (count == 0) return "";
     double size = 0;
     for (std::size_t k = 0; k < udim; ++k) {
@@ -263,7 +289,7 @@ class Checker {
             constrained[static_cast<std::size_t>(n) * udim + c] = 1;
     }
     for (std::size_t n = 0; n < m_.node_count(); ++n) {
-      if (!in_part[n]) continue;
+      if (!in_part[n] || !owned(n)) continue;
       double r[3] = {0, 0, 0};
       for (std::size_t k = 0; k < udim; ++k)
         r[k] = (m_.coordinates[n * udim + k] - centre[k]) / size;
@@ -283,6 +309,7 @@ class Checker {
             gram[static_cast<std::size_t>(a * modes + b)] += row[a] * row[b];
       }
     }
+    sum_over_ranks(gram.data(), modes * modes, Teuchos::REDUCE_SUM);
     std::vector<double> eig(static_cast<std::size_t>(modes)),
         work(static_cast<std::size_t>(4 * modes));
     int info = 0;
@@ -322,7 +349,8 @@ class Checker {
             const auto& blocks = s_.document["parts"][p]["blocks"];
             fail(blocks.IsSequence() ? blocks[b] : blocks,
                  "parts[" + std::to_string(p) + "].blocks[" + std::to_string(b) + "]",
-                 "part '" + s_.parts[p].name + "' shares mesh node " + std::to_string(node + 1) +
+                 "part '" + s_.parts[p].name + "' shares mesh node " +
+                     std::to_string(m_.global_node(static_cast<std::size_t>(node)) + 1) +
                      " with part '" + s_.parts[static_cast<std::size_t>(owner)].name +
                      "'; bonded parts that share nodes are not supported yet: expected each "
                      "part to have its own nodes (or put both blocks in one part of one "
@@ -336,8 +364,11 @@ class Checker {
   // A condition, load or initial value on an empty set would silently do nothing.
   void require_nodes(const YAML::Node& at, const std::string& path, const std::string& name) const {
     const auto* set = m_.find_node_set(name);
-    if (set && set->nodes.empty())
-      fail(at, path, "node set '" + name + "' is empty; expected a set with nodes");
+    if (!set) return;
+    double count = 0;
+    for (auto n : set->nodes) count += owned(static_cast<std::size_t>(n)) ? 1 : 0;
+    sum_over_ranks(&count, 1, Teuchos::REDUCE_SUM);
+    if (count == 0) fail(at, path, "node set '" + name + "' is empty; expected a set with nodes");
   }
 
   static bool same_prescription(const BoundaryConditionSpec& a, const BoundaryConditionSpec& b,
@@ -367,7 +398,8 @@ class Checker {
           fail(s_.document["boundary_conditions"][j],
                "boundary_conditions[" + std::to_string(j) + "]",
                "condition '" + bcs[j].name + "' and condition '" + bcs[i].name +
-                   "' prescribe component " + axis + " of node " + std::to_string(shared + 1) +
+                   "' prescribe component " + axis + " of node " +
+                   std::to_string(m_.global_node(static_cast<std::size_t>(shared)) + 1) +
                    " differently (node sets '" + bcs[j].node_set + "' and '" + bcs[i].node_set +
                    "' share it); expected one prescription per component of a node");
         }
@@ -395,13 +427,16 @@ class Checker {
 
   const Scene& s_;
   const BackgroundMesh& m_;
+  MeshOwners owners_;
+  mutable std::optional<std::string> deferred_;
 };
 
 }  // namespace
 
-void check_scene_against_mesh(const Scene& scene, const BackgroundMesh& mesh) {
+void check_scene_against_mesh(const Scene& scene, const BackgroundMesh& mesh,
+                              const MeshOwners& owners) {
   check_shell_scene(scene, mesh);
-  Checker(scene, mesh).run();
+  Checker(scene, mesh, owners).run();
 }
 
 }  // namespace efg

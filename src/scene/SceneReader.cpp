@@ -7,6 +7,7 @@
 
 #include "core/Errors.hpp"
 #include "scene/ContactInput.hpp"
+#include "scene/DistributedReadChecks.hpp"
 #include "scene/FieldInput.hpp"
 #include "scene/InitialStateInput.hpp"
 #include "scene/MeshInput.hpp"
@@ -121,6 +122,7 @@ class SceneBuilder {
         fail(d["loads"][i]["from_exact_solution"],
              "loads[" + std::to_string(i) + "].from_exact_solution",
              "needs verification.exact_solution, which the scene does not name");
+    check_distributed_read(s_);
   }
 
  private:

@@ -30,7 +30,8 @@ constexpr int nd = shell_dofs_per_node;
 FlatShellOperator::FlatShellOperator(const Model& model, int thickness_points,
                                      double shear_stabilization)
     : model_(model),
-      maps_(make_dof_maps(model.maps.owned_nodes->getComm(), model.partition, nd)),
+      maps_(
+          make_dof_maps(model.maps.owned_nodes->getComm(), model.partition, nd, model.mesh.global)),
       importer_(Teuchos::rcp(new Tpetra::Import<>(maps_.owned_dofs, maps_.overlap_dofs))),
       exporter_(Teuchos::rcp(new Tpetra::Export<>(maps_.overlap_dofs, maps_.owned_dofs))) {
   ++instances_;

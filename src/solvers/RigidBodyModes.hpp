@@ -10,21 +10,23 @@
 
 #include <vector>
 
+#include "mesh/BackgroundMesh.hpp"
 #include "parallel/DofMaps.hpp"
 
 namespace efg {
 
 /// Columns: dim translations, then the rotations (1 in 2D about z; 3 in 3D about x, y, z), all
-/// about the centroid of `coordinates` so that the columns are well scaled. `coordinates` holds
-/// every mesh node (the owned ones are looked up by global id in maps.owned_nodes; the same on
-/// every rank); dof = node * dim + component.
-Teuchos::RCP<Tpetra::MultiVector<>> rigid_body_modes(const DofMaps& maps, int dimension,
-                                                     const std::vector<double>& coordinates);
+/// about the centroid of the mesh's nodes so that the columns are well scaled (the same centre on
+/// every rank: of the whole mesh, or summed over the ranks' owned nodes for a rank's part of a
+/// mesh read in slices). The owned particles are looked up in `mesh` by their global id in
+/// maps.owned_nodes; dof = node * dim + component.
+Teuchos::RCP<Tpetra::MultiVector<>> rigid_body_modes(const DofMaps& maps,
+                                                     const BackgroundMesh& mesh);
 
 /// Owned particle coordinates on maps.owned_nodes, one column per dimension (for multigrid's
 /// distance-based aggregation).
-Teuchos::RCP<Tpetra::MultiVector<>> particle_coordinates(const DofMaps& maps, int dimension,
-                                                         const std::vector<double>& coordinates);
+Teuchos::RCP<Tpetra::MultiVector<>> particle_coordinates(const DofMaps& maps,
+                                                         const BackgroundMesh& mesh);
 
 /// Number of rigid-body modes in `dimension` space dimensions: 1, 3 or 6.
 int rigid_body_mode_count(int dimension);

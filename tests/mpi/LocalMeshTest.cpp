@@ -113,25 +113,25 @@ TEST(LocalMesh, IsThePartOfTheWholeMeshAroundTheOwnedNodes) {
   const auto expected = expected_local_mesh(whole, p, kHalo);
   const auto dim = static_cast<std::size_t>(whole.dimension);
 
-  ASSERT_EQ(local.node_ids.size(), expected.nodes.size());
+  ASSERT_EQ(local.mesh.global.nodes.size(), expected.nodes.size());
   for (std::size_t i = 0; i < expected.nodes.size(); ++i) {
     const auto n = static_cast<std::size_t>(expected.nodes[i]);
-    ASSERT_EQ(local.node_ids[i], static_cast<GlobalIndex>(n));
+    ASSERT_EQ(local.mesh.global.nodes[i], static_cast<GlobalIndex>(n));
     EXPECT_EQ(local.owner[i], p.owner[n]);
     for (std::size_t d = 0; d < dim; ++d)
       EXPECT_EQ(local.mesh.coordinates[i * dim + d], whole.coordinates[n * dim + d]);
   }
-  ASSERT_EQ(local.cell_ids.size(), expected.cells.size());
+  ASSERT_EQ(local.mesh.global.cells.size(), expected.cells.size());
   for (std::size_t c = 0; c < expected.cells.size(); ++c) {
-    ASSERT_EQ(local.cell_ids[c], expected.cells[c]);
+    ASSERT_EQ(local.mesh.global.cells[c], expected.cells[c]);
     const auto [block, index] = whole.locate_cell(static_cast<std::size_t>(expected.cells[c]));
     const auto [local_block, local_index] = local.mesh.locate_cell(c);
     EXPECT_EQ(local_block->name, block->name);
     const auto per = static_cast<std::size_t>(cell_node_count(block->type));
     for (std::size_t a = 0; a < per; ++a)
       EXPECT_EQ(
-          local
-              .node_ids[static_cast<std::size_t>(local_block->connectivity[local_index * per + a])],
+          local.mesh.global
+              .nodes[static_cast<std::size_t>(local_block->connectivity[local_index * per + a])],
           block->connectivity[index * per + a]);
   }
   ASSERT_EQ(local.mesh.node_sets.size(), whole.node_sets.size());
@@ -140,7 +140,7 @@ TEST(LocalMesh, IsThePartOfTheWholeMeshAroundTheOwnedNodes) {
     for (auto n : whole.node_sets[s].nodes)
       if (std::binary_search(expected.nodes.begin(), expected.nodes.end(), n)) want.push_back(n);
     for (auto n : local.mesh.node_sets[s].nodes)
-      got.push_back(local.node_ids[static_cast<std::size_t>(n)]);
+      got.push_back(local.mesh.global.nodes[static_cast<std::size_t>(n)]);
     EXPECT_EQ(got, want) << whole.node_sets[s].name;
     EXPECT_EQ(local.mesh.node_sets[s].name, whole.node_sets[s].name);
   }
@@ -153,7 +153,8 @@ TEST(LocalMesh, IsThePartOfTheWholeMeshAroundTheOwnedNodes) {
         want.emplace_back(set.cells[i], set.sides[i]);
     const auto& mine = local.mesh.side_sets[s];
     for (std::size_t i = 0; i < mine.cells.size(); ++i)
-      got.emplace_back(local.cell_ids[static_cast<std::size_t>(mine.cells[i])], mine.sides[i]);
+      got.emplace_back(local.mesh.global.cells[static_cast<std::size_t>(mine.cells[i])],
+                       mine.sides[i]);
     EXPECT_EQ(got, want) << set.name;
   }
   // The blocks' largest cell extents, by hand: hex cells 0.25 wide whose nodes move by up to 20 %
@@ -184,8 +185,8 @@ TEST(LocalMesh, HoldsAboutOneRanksShareOfTheMesh) {
   if (p > 1) {
     EXPECT_LE(local.mesh.node_count(), bar_nodes / p + 6 * plane + tet_nodes);
   }
-  EXPECT_EQ(local.mesh.coordinates.size(), 3 * local.node_ids.size());
-  EXPECT_EQ(local.owner.size(), local.node_ids.size());
+  EXPECT_EQ(local.mesh.coordinates.size(), 3 * local.mesh.global.nodes.size());
+  EXPECT_EQ(local.owner.size(), local.mesh.global.nodes.size());
   std::size_t owned = 0;
   for (auto o : local.owner) owned += o == comm->getRank() ? 1 : 0;
   std::size_t total = 0;

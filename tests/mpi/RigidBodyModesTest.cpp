@@ -26,7 +26,7 @@ materials:
   auto K = problem.create_matrix();
   problem.jacobian(d, *K);
   const int dim = model.mesh.dimension;
-  const auto z = rigid_body_modes(model.maps, dim, model.mesh.coordinates);
+  const auto z = rigid_body_modes(model.maps, model.mesh);
   ASSERT_EQ(static_cast<int>(z->getNumVectors()), modes);
   Tpetra::MultiVector<> kz(model.maps.owned_dofs, z->getNumVectors());
   K->apply(*z, kz);

@@ -1,0 +1,91 @@
+#include "model/DistributedMesh.hpp"
+
+#include <Teuchos_CommHelpers.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/Errors.hpp"
+#include "io/ExodusSliceReader.hpp"
+#include "mesh/MeshValidation.hpp"
+#include "model/GradedMaterials.hpp"
+#include "parallel/Collective.hpp"
+#include "parallel/LocalMesh.hpp"
+#include "scene/SceneMeshChecks.hpp"
+#include "scene/SceneNodeSets.hpp"
+#include "scene/SchemaValidator.hpp"
+
+namespace efg {
+
+double halo_width(const Scene& scene, const std::vector<std::string>& block_names,
+                  const std::vector<std::vector<double>>& extents) {
+  double halo = 0;
+  for (const auto& part : scene.parts)
+    for (std::size_t b = 0; b < block_names.size(); ++b) {
+      if (std::find(part.blocks.begin(), part.blocks.end(), block_names[b]) == part.blocks.end())
+        continue;
+      // support_sizes (discretization/ParticleCloud.hpp): a_d = dilation_d h_d with h_d at most
+      // the largest cell extent in d; a sphere takes dilation x max_d h_d.
+      const auto& e = extents[b];
+      const auto& dilation = part.section.dilation;
+      auto dil = [&](std::size_t d) { return dilation.size() == 1 ? dilation[0] : dilation[d]; };
+      double reach2 = 0, diameter2 = 0, largest = 0, largest_dilation = 0;
+      for (std::size_t d = 0; d < e.size(); ++d) {
+        reach2 += dil(d) * e[d] * dil(d) * e[d];
+        diameter2 += e[d] * e[d];
+        largest = std::max(largest, e[d]);
+        largest_dilation = std::max(largest_dilation, dil(d));
+      }
+      const double reach = part.section.support == SupportShape::sphere ? largest_dilation * largest
+                                                                        : std::sqrt(reach2);
+      halo = std::max(halo, 2 * reach + std::sqrt(diameter2));
+    }
+  return halo * (1 + 1e-9);  // the ghost layer's own arithmetic may round the other way
+}
+
+BackgroundMesh load_distributed_mesh(const CommPtr& comm, Scene& scene, NodePartition& partition) {
+  MeshSlice slice;
+  run_collectively(comm, [&] {
+    try {
+      slice = read_exodus_slice(scene.mesh_file, comm->getRank(), comm->getSize());
+    } catch (const InputError& e) {
+      throw InputError(schema::located_message(scene.file, scene.document["mesh"]["file"],
+                                               "mesh.file", e.what()));
+    }
+  });
+  std::vector<std::string> names;
+  for (const auto& b : slice.blocks) names.push_back(b.name);
+  auto local = distribute_mesh(
+      comm, slice, [&](const BlockExtents& extents) { return halo_width(scene, names, extents); });
+  slice = MeshSlice();  // the slice has served: free it before the discretization
+  auto& mesh = local.mesh;
+  run_collectively(comm, [&] {
+    try {
+      validate_mesh(mesh);
+    } catch (const InputError& e) {
+      throw InputError(schema::located_message(scene.file, scene.document["mesh"]["file"],
+                                               "mesh.file", e.what()));
+    }
+  });
+  partition.rank = comm->getRank();
+  partition.size = comm->getSize();
+  partition.owner = std::move(local.owner);
+  partition.owned.clear();
+  for (std::size_t n = 0; n < partition.owner.size(); ++n)
+    if (partition.owner[n] == partition.rank) partition.owned.push_back(static_cast<LocalIndex>(n));
+  add_scene_node_sets(scene, mesh);
+  run_collectively(comm, [&] {
+    check_scene_against_mesh(scene, mesh, MeshOwners{comm, &partition.owner, partition.rank});
+  });
+  // A graded modulus' reference is its largest value over the whole mesh.
+  set_graded_references(scene, mesh);
+  for (auto& m : scene.materials) {
+    if (!m.youngs_modulus_field) continue;
+    double mine = m.constants["youngs_modulus"], largest = 0;
+    Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, mine, Teuchos::outArg(largest));
+    m.constants["youngs_modulus"] = largest;
+  }
+  return std::move(mesh);
+}
+
+}  // namespace efg

@@ -1,0 +1,40 @@
+#include "scene/DistributedReadChecks.hpp"
+
+#include "core/Errors.hpp"
+#include "scene/SchemaValidator.hpp"
+
+namespace efg {
+namespace {
+
+[[noreturn]] void refuse(const Scene& scene, const std::string& what) {
+  throw InputError(schema::located_message(
+      scene.file, scene.document["mesh"]["read"], "mesh.read",
+      "a distributed read does not provide " + what +
+          " yet; expected read: root (rank 0 reads the mesh whole) for this scene"));
+}
+
+}  // namespace
+
+// Contact and rigid bodies need the whole boundary, shells their chart of the whole surface,
+// mixed u-p its pressure groups across the cut, per-part supports a part-wide maximum, an
+// initial state a whole results file.
+void check_distributed_read(Scene& scene) {
+  if (!scene.distributed_read) return;
+  if (scene.has_shells()) refuse(scene, "shell parts");
+  if (!scene.contacts.empty()) refuse(scene, "contact");
+  if (!scene.rigid_walls.empty() || !scene.rigid_bodies.empty()) refuse(scene, "rigid bodies");
+  if (scene.initial_state) refuse(scene, "an initial state");
+  for (const auto& p : scene.parts) {
+    if (p.formulation == PartFormulation::mixed_up) refuse(scene, "mixed u-p parts");
+    if (p.section.per_part_support) refuse(scene, "per-part supports");
+  }
+  const auto files = scene.document["output"]["files"];
+  if (files && files.as<std::string>() == "gathered")
+    throw InputError(schema::located_message(
+        scene.file, files, "output.files",
+        "no rank holds the whole mesh of a distributed read (mesh.read: distributed); expected "
+        "files: per_rank (the pieces join with SEACAS epu)"));
+  scene.output.per_rank_files = true;
+}
+
+}  // namespace efg

@@ -1,0 +1,80 @@
+#include <gtest/gtest.h>
+
+#include <Teuchos_CommHelpers.hpp>
+#include <Tpetra_Core.hpp>
+
+#include <cmath>
+
+#include "io/ExodusReader.hpp"
+#include "io/ExodusWriter.hpp"
+#include "model/Model.hpp"
+#include "scene/SceneReader.hpp"
+#include "support/TestMeshes.hpp"
+
+namespace efg {
+namespace {
+
+// A 120 x 4 x 4 hex bar on [0, 30] x [0, 1] x [0, 1] (cells 0.25 wide: 121 planes of 25 nodes),
+// written by rank 0, read by a scene with mesh.read: distributed.
+const char* kScene = R"(
+mesh: {file: bar.exo, read: distributed}
+parts:
+  - {name: bar, blocks: [block_1], material: steel, section: {dilation: 1.5, integration: scni}}
+materials:
+  - {name: steel, model: linear_elastic, density: 1, youngs_modulus: 100, poissons_ratio: 0.3}
+boundary_conditions:
+  - {name: clamp, type: displacement, node_set: xmin, x: 0, y: 0, z: 0}
+loads:
+  - {name: tip, type: nodal_force, node_set: xmax, value: [0, 0, -1]}
+stages:
+  - {name: load, driver: implicit, end_time: 1}
+)";
+
+std::string bar_scene(const CommPtr& comm) {
+  const auto dir = test::scratch_dir("distributed_model_np" + std::to_string(comm->getSize()));
+  if (comm->getRank() == 0) {
+    GeneratorSpec bar;
+    bar.upper = {30, 1, 1};
+    bar.cells = {120, 4, 4};
+    ExodusWriter writer(dir + "/bar.exo", generate_mesh(bar), {}, "distributed model test");
+    writer.close();
+  }
+  comm->barrier();
+  return dir + "/bar.yaml";
+}
+
+// The model of a mesh read in slices holds about one rank's share of the mesh on each rank.
+// The halo (model/DistributedMesh.hpp) for dilation 1.5 box supports on 0.25 cells, by hand:
+// reach sqrt(3) x 0.375 = 0.650, halo 2 x 0.650 + sqrt(3) x 0.25 = 1.732, so at most 7 planes
+// beyond the owned ones, plus a partly owned plane and the far plane of the cells reaching into
+// the box: 9 per cut. Bound: 121 / p + 1 planes owned + 9 per side, 25 nodes each (p = 2: 66 %
+// of the mesh, p = 3: 49 %); the owned particles are those RCB gives the whole mesh.
+TEST(DistributedModel, HoldsAboutOneRanksShareOfTheMeshRead) {
+  const auto comm = Tpetra::getDefaultComm();
+  const auto path = bar_scene(comm);
+  const auto model = build_model(comm, parse_scene(kScene, path));
+  const auto p = static_cast<double>(comm->getSize());
+  const double nodes = 121 * 25;
+  EXPECT_TRUE(model.mesh.is_part());
+  EXPECT_TRUE(model.scene.output.per_rank_files);  // no rank could gather the whole mesh
+  EXPECT_EQ(model.mesh.whole_node_count(), 121 * 25);
+  EXPECT_EQ(model.mesh.whole_cell_count(), 120 * 16);
+  if (comm->getSize() > 1) {
+    EXPECT_LE(static_cast<double>(model.mesh.node_count()), (121 / p + 1 + 2 * 9) * 25);
+    EXPECT_LE(static_cast<double>(model.mesh.cell_count()), (120 / p + 2 + 2 * 9) * 16);
+  }
+  double owned = static_cast<double>(model.partition.owned.size()), total = 0;
+  Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, owned, Teuchos::outArg(total));
+  EXPECT_EQ(total, nodes);
+
+  // The same owners as the whole mesh's partition (read whole here for the test only).
+  const auto whole = read_exodus_mesh(path.substr(0, path.size() - 5) + ".exo");
+  const auto reference = partition_nodes(comm, whole);
+  ASSERT_EQ(model.partition.owned.size(), reference.owned.size());
+  for (std::size_t i = 0; i < reference.owned.size(); ++i)
+    EXPECT_EQ(model.mesh.global_node(static_cast<std::size_t>(model.partition.owned[i])),
+              reference.owned[i]);
+}
+
+}  // namespace
+}  // namespace efg
