@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <filesystem>
+#include <iomanip>
 #include <sstream>
 #include <stdexcept>
 
@@ -37,6 +38,17 @@ void log_model(const Model& model, const CommPtr& comm) {
             " particles, " + std::to_string(model.mesh.whole_cell_count()) +
             " background cells; particles per rank " + std::to_string(min) + " to " +
             std::to_string(max));
+  if (!model.mesh.is_part()) return;
+  // mesh.read: distributed: how much of the mesh each rank holds (owned, ghosts, halo cells)
+  const auto held = static_cast<long long>(model.mesh.node_count());
+  Teuchos::reduceAll(*comm, Teuchos::REDUCE_MIN, held, Teuchos::outArg(min));
+  Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, held, Teuchos::outArg(max));
+  std::ostringstream o;
+  o << std::fixed << std::setprecision(1) << "mesh read in slices: each rank holds " << min
+    << " to " << max << " of its nodes (at most "
+    << 100.0 * static_cast<double>(max) / static_cast<double>(model.mesh.whole_node_count())
+    << " % of the mesh)";
+  Log::info(o.str());
 }
 
 void log_discretization(const Model& model, const CommPtr& comm) {

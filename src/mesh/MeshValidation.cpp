@@ -54,6 +54,7 @@ void validate_mesh(const BackgroundMesh& mesh, const std::vector<std::string>& t
   require_unique_names(mesh, mesh.node_sets, "node sets");
   require_unique_names(mesh, mesh.side_sets, "side sets");
 
+  std::size_t first = 0;  // this mesh's index of the block's first cell
   for (const auto& block : mesh.blocks) {
     const bool tool =
         std::find(tool_blocks.begin(), tool_blocks.end(), block.name) != tool_blocks.end();
@@ -89,13 +90,18 @@ void validate_mesh(const BackgroundMesh& mesh, const std::vector<std::string>& t
       if (!(g.min_corner_det > 0) || !(g.volume > degenerate_cell_tolerance * scale) ||
           scale == 0) {
         std::ostringstream o;
-        o << "block '" << block.name << "' cell " << c + 1 << " is "
-          << (g.volume < 0 || g.min_corner_det < 0 ? "inverted" : "degenerate") << " (volume "
-          << g.volume << ", smallest corner Jacobian " << g.min_corner_det
+        o << "block '" << block.name << "' cell ";
+        if (mesh.is_part())  // a rank's part: the cell by its index in the whole mesh
+          o << "(mesh cell " << mesh.global_cell(first + c) + 1 << ")";
+        else
+          o << c + 1;
+        o << " is " << (g.volume < 0 || g.min_corner_det < 0 ? "inverted" : "degenerate")
+          << " (volume " << g.volume << ", smallest corner Jacobian " << g.min_corner_det
           << "); expected a positive volume with the Exodus node ordering";
         fail(mesh, o.str());
       }
     }
+    first += block.cell_count();
   }
 
   for (const auto& set : mesh.node_sets)

@@ -77,9 +77,9 @@ Model build_model(const CommPtr& comm, Scene scene) {
   Model model;
   model.scene = std::move(scene);
   if (model.scene.distributed_read) {
-    // Each rank reads its slice and keeps its part: read, partition and mesh checks in one.
-    Teuchos::TimeMonitor timer(
-        *Teuchos::TimeMonitor::getNewCounter("efg: distributed mesh read and partition"));
+    // Each rank reads its slice and keeps its part: read, partition (RCB of the slices) and mesh
+    // checks in one phase.
+    Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewCounter("efg: scene and mesh"));
     model.mesh = load_distributed_mesh(comm, model.scene, model.partition);
     memory.mark("scene and mesh");
     memory.mark("partition");

@@ -182,8 +182,8 @@ void EssentialConditions::add_collocated_nodes(const Model& model, const SolidOp
     }
     if (!found)
       throw InputError(model.scene.file + ": boundary condition '" + bc.name + "': node " +
-                       std::to_string(node + 1) + " of node set '" + bc.node_set +
-                       "' is not a particle of any meshfree part");
+                       std::to_string(model.mesh.global_node(static_cast<std::size_t>(node)) + 1) +
+                       " of node set '" + bc.node_set + "' is not a particle of any meshfree part");
   }
 }
 

@@ -177,7 +177,7 @@ void write_run_report(const CommPtr& comm, const Model& model, const std::string
     << ",\n  \"results\": " << quoted(results_path) << ",\n  \"ranks\": " << comm->getSize()
     << ",\n  \"threads_per_rank\": " << threads_per_rank()
     << ",\n  \"execution_space\": " << quoted(ExecSpace::name())
-    << ",\n  \"particles\": " << model.mesh.node_count()
+    << ",\n  \"particles\": " << model.mesh.whole_node_count()
     << ",\n  \"dofs\": " << model.maps.owned_dofs->getGlobalNumElements()
     << ",\n  \"end_time\": " << number(state.time) << ",\n  \"phase_seconds\": {";
   for (std::size_t i = 0; i < global.size(); ++i)

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """A scripted mutation fuzzer for efg's input readers (issue 14): scene files (YAML syntax, schema,
 cross-references, solver maps) and Exodus meshes. Each case mutates a seed file, runs
-`efg check` on it (and `efg run` on some that pass, on a tiny model), and requires a clean outcome:
+`efg check` on it (and `efg run` on some that pass, on a tiny model; every mutated mesh is also
+run read in slices, mesh.read: distributed, on 1 or 2 ranks), and requires a clean outcome:
 exit 0, 2 (bad input), 3 (numerical failure: check builds the model and plans explicit steps too)
 or, for runs, 4 (verification); no signal, no timeout, no raw library exception (exit 1). Deterministic for a given --seed.
 
@@ -123,6 +124,20 @@ def one_case(args, index, scene_seeds, mesh_bytes):
         f.write(text)
     code, log = run([args.efg, "check", "scene.yaml"], case, args.timeout)
     problem = verdict(code, log, (0, 2, 3))
+    # The mutated mesh read in slices (mesh.read: distributed), on 1 or 2 ranks: every rank
+    # reads part of the file, so a bad index or set must stop them all cleanly, never hang.
+    if problem is None and what == "exodus":
+        with open(os.path.join(case, "distributed.yaml"), "w") as f:
+            f.write(text.replace("file: mesh.e", "file: mesh.e\n  read: distributed"))
+        launch = []
+        if rng.random() < 0.5 and shutil.which("mpirun"):
+            launch = ["mpirun", "-np", "2", "--oversubscribe"]
+            if os.geteuid() == 0:
+                launch.append("--allow-run-as-root")
+        code, log = run(launch + [args.efg, "run", "distributed.yaml", "-o", "out"], case,
+                        args.timeout)
+        problem = verdict(code, log, (0, 2, 3, 4))
+        what += "+distributed run on %d rank(s)" % (2 if launch else 1)
     # A scene that passes check and is small must also run cleanly (tiny meshes only).
     if problem is None and code == 0 and what == "scene" and rng.random() < 0.3 and small(text):
         code, log = run([args.efg, "run", "scene.yaml", "-o", "out"], case, args.timeout)

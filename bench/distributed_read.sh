@@ -1,0 +1,60 @@
+#!/usr/bin/env bash
+# The mesh read whole on rank 0 and sent to every rank (mesh.read: root) against each rank
+# reading only its slice and keeping its part (mesh.read: distributed; docs/scaling.md), side by
+# side in one run: the explicit 3D block of bench/block_scene.py at NX x 0.35 NX x 0.35 NX cells
+# (NX = 100: 130,896 particles, dilation 1.2) written once with `efg mesh`, 100 steps, on 1, 2
+# and 3 ranks. Prints the nodes each rank holds, the "scene and mesh" phase's resident growth per
+# rank, the setup (scene and mesh, partition, neighbour search, shape functions: the slower
+# rank's) and each rank's memory high-water mark.
+#   bench/distributed_read.sh [NX]
+set -euo pipefail
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+"$here/scripts/setup.sh" >/dev/null
+efg="${EFG_BUILD_DIR:-$here/build}/efg"
+nx="${1:-100}"
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+
+/usr/bin/python3 "$here/bench/block_scene.py" "$work/generated.yaml" "$nx" explicit
+"$efg" mesh "$work/generated.yaml" "$work/block.exo" >/dev/null
+for read in root distributed; do
+  /usr/bin/python3 - "$work/generated.yaml" "$work/$read.yaml" "$read" <<'PY'
+import re, sys
+s = open(sys.argv[1]).read()
+s = re.sub(r"mesh:\n  generate: \{[^}]*\}\n", "mesh: {file: block.exo, read: %s}\n" % sys.argv[3], s)
+open(sys.argv[2], "w").write(s)
+PY
+done
+
+row() {  # row RANKS READ
+  local out="$work/out_$1_$2" launch=()
+  rm -rf "$out"
+  if [ "$1" -gt 1 ]; then
+    launch=(mpirun -np "$1")
+    if [ "$(id -u)" -eq 0 ]; then launch+=(--allow-run-as-root --oversubscribe); fi
+  fi
+  "${launch[@]}" "$efg" run "$work/$2.yaml" -o "$out" >"$work/$2.log" 2>&1
+  /usr/bin/python3 - "$work/$2.log" "$1" "$2" "$out/$2.e.report.json" <<'PY'
+import json, re, sys
+log, ranks = open(sys.argv[1]).read(), int(sys.argv[2])
+r = json.load(open(sys.argv[4]))
+nodes = r["particles"]
+held = re.search(r"each rank holds (\d+) to (\d+) of its nodes", log)
+held = "%s-%s" % held.groups() if held else "%d (whole)" % nodes
+mesh = float(re.search(r"\n  scene and mesh +([0-9.]+) MiB", log).group(1)) / ranks
+peak = re.search(r"memory high-water mark: ([0-9.]+) MiB per rank", log).group(1)
+ph = r["phase_seconds"]
+one = lambda v: max(v) if isinstance(v, list) else v
+setup = sum(one(ph[k]) for k in ("scene and mesh", "partition (Zoltan2 RCB)",
+                                 "neighbour search (ghosts, particles)",
+                                 "shape functions and integration"))
+print("| %d | %s | %d | %s | %.1f | %.2f | %s |" % (ranks, sys.argv[3], nodes, held, mesh, setup,
+      peak))
+PY
+}
+
+echo "| ranks | mesh.read | particles | nodes per rank | scene and mesh MiB per rank | setup s | high-water MiB per rank |"
+echo "|---|---|---|---|---|---|---|"
+for ranks in 1 2 3; do
+  for read in root distributed; do row "$ranks" "$read"; done
+done
