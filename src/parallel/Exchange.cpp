@@ -4,54 +4,78 @@
 #include <Teuchos_DefaultMpiComm.hpp>
 
 #include <algorithm>
+#include <limits>
+#include <numeric>
 #include <stdexcept>
 
 namespace efg {
+namespace {
 
-std::vector<std::vector<char>> exchange_bytes(const CommPtr& comm,
-                                              const std::vector<std::vector<char>>& outgoing) {
+std::vector<long long> offsets_of(const std::vector<long long>& counts) {
+  std::vector<long long> offsets(counts.size() + 1, 0);
+  std::partial_sum(counts.begin(), counts.end(), offsets.begin() + 1);
+  return offsets;
+}
+
+}  // namespace
+
+PackedLists exchange_packed(const CommPtr& comm, PackedLists outgoing) {
   const auto size = static_cast<std::size_t>(comm->getSize());
-  if (outgoing.size() != size)
+  if (outgoing.counts.size() != size)
     throw std::logic_error("exchange: one outgoing list per rank expected");
   const auto* mpi = dynamic_cast<const Teuchos::MpiComm<int>*>(comm.get());
   if (!mpi || size == 1) return outgoing;  // one process: the list to itself
   const MPI_Comm raw = (*mpi->getRawMpiComm())();
-  // Counts first (as long long: a list may pass 2 GiB), then the bytes in rounds whose counts
-  // and displacements MPI's int can describe.
-  std::vector<long long> send_count(size), receive_count(size);
-  for (std::size_t q = 0; q < size; ++q) send_count[q] = static_cast<long long>(outgoing[q].size());
-  MPI_Alltoall(send_count.data(), 1, MPI_LONG_LONG, receive_count.data(), 1, MPI_LONG_LONG, raw);
-  std::vector<std::vector<char>> received(size);
-  for (std::size_t s = 0; s < size; ++s)
-    received[s].resize(static_cast<std::size_t>(receive_count[s]));
-  // every round's total stays within an int
-  const long long kChunk = std::max(1LL, (1LL << 30) / static_cast<long long>(size));
-  for (long long offset = 0;; offset += kChunk) {
+  PackedLists received;
+  received.counts.resize(size);
+  MPI_Alltoall(outgoing.counts.data(), 1, MPI_LONG_LONG, received.counts.data(), 1, MPI_LONG_LONG,
+               raw);
+  const auto send_at = offsets_of(outgoing.counts), receive_at = offsets_of(received.counts);
+  received.bytes.resize(static_cast<std::size_t>(receive_at.back()));
+  long long largest[2] = {send_at.back(), receive_at.back()}, all[2] = {0, 0};
+  MPI_Allreduce(largest, all, 2, MPI_LONG_LONG, MPI_MAX, raw);
+  constexpr long long kIntMax = std::numeric_limits<int>::max();
+  if (std::max(all[0], all[1]) <= kIntMax) {  // one call, in place
+    std::vector<int> sc(size), sd(size), rc(size), rd(size);
+    for (std::size_t q = 0; q < size; ++q) {
+      sc[q] = static_cast<int>(outgoing.counts[q]);
+      sd[q] = static_cast<int>(send_at[q]);
+      rc[q] = static_cast<int>(received.counts[q]);
+      rd[q] = static_cast<int>(receive_at[q]);
+    }
+    MPI_Alltoallv(outgoing.bytes.data(), sc.data(), sd.data(), MPI_CHAR, received.bytes.data(),
+                  rc.data(), rd.data(), MPI_CHAR, raw);
+    return received;
+  }
+  // Over 2 GiB on some rank: rounds of at most 2^30 / ranks bytes per list, whose counts and
+  // displacements MPI's int can describe.
+  const long long chunk = std::max(1LL, (1LL << 30) / static_cast<long long>(size));
+  for (long long offset = 0;; offset += chunk) {
     std::vector<int> sc(size), sd(size), rc(size), rd(size);
     std::vector<char> send, receive;
     bool more = false;
     for (std::size_t q = 0; q < size; ++q) {
-      const auto n = std::max(0LL, std::min(kChunk, send_count[q] - offset));
+      const auto n = std::max(0LL, std::min(chunk, outgoing.counts[q] - offset));
       sd[q] = static_cast<int>(send.size());
       sc[q] = static_cast<int>(n);
-      if (n > 0)
-        send.insert(send.end(), outgoing[q].begin() + offset, outgoing[q].begin() + offset + n);
-      more = more || send_count[q] > offset + kChunk;
+      const auto from = outgoing.bytes.begin() + send_at[q] + offset;
+      if (n > 0) send.insert(send.end(), from, from + n);
+      more = more || outgoing.counts[q] > offset + chunk;
     }
-    int receive_total = 0;
+    int total = 0;
     for (std::size_t s = 0; s < size; ++s) {
-      const auto n = std::max(0LL, std::min(kChunk, receive_count[s] - offset));
-      rd[s] = receive_total;
+      const auto n = std::max(0LL, std::min(chunk, received.counts[s] - offset));
+      rd[s] = total;
       rc[s] = static_cast<int>(n);
-      receive_total += rc[s];
-      more = more || receive_count[s] > offset + kChunk;
+      total += rc[s];
+      more = more || received.counts[s] > offset + chunk;
     }
-    receive.resize(static_cast<std::size_t>(receive_total));
+    receive.resize(static_cast<std::size_t>(total));
     MPI_Alltoallv(send.data(), sc.data(), sd.data(), MPI_CHAR, receive.data(), rc.data(), rd.data(),
                   MPI_CHAR, raw);
     for (std::size_t s = 0; s < size; ++s)
       std::copy(receive.begin() + rd[s], receive.begin() + rd[s] + rc[s],
-                received[s].begin() + offset);
+                received.bytes.begin() + receive_at[s] + offset);
     int any = more ? 1 : 0, all_any = 0;
     MPI_Allreduce(&any, &all_any, 1, MPI_INT, MPI_MAX, raw);
     if (!all_any) break;

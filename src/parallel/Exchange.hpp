@@ -1,6 +1,8 @@
 // Personalized all-to-all: each rank hands one list per destination rank and receives the lists
 // addressed to it, one per source rank (MPI_Alltoallv with the counts exchanged first). The
 // distributed mesh read routes nodes, cells and set entries with it (parallel/LocalMesh.hpp).
+// The lists travel in one flat buffer each way: what is sent is released as it is packed, so a
+// list exists at most twice (packed and received) rather than once per copy.
 #pragma once
 
 #include <cstring>
@@ -11,25 +13,39 @@
 
 namespace efg {
 
-/// Bytes version: outgoing[q] goes to rank q; the result's [s] came from rank s.
-std::vector<std::vector<char>> exchange_bytes(const CommPtr& comm,
-                                              const std::vector<std::vector<char>>& outgoing);
+/// Lists of bytes back to back: list q is bytes [offset(q), offset(q) + counts[q]).
+struct PackedLists {
+  std::vector<char> bytes;
+  std::vector<long long> counts;
+};
 
-/// The same for lists of a trivially copyable type.
+/// Sends list q of `outgoing` to rank q; returns the lists received, list s from rank s.
+PackedLists exchange_packed(const CommPtr& comm, PackedLists outgoing);
+
+/// The same for lists of a trivially copyable type; `outgoing` is consumed.
 template <class T>
-std::vector<std::vector<T>> all_to_all(const CommPtr& comm,
-                                       const std::vector<std::vector<T>>& outgoing) {
-  static_assert(std::is_trivially_copyable_v<T>, "exchange sends raw bytes");
-  std::vector<std::vector<char>> bytes(outgoing.size());
-  for (std::size_t q = 0; q < outgoing.size(); ++q) {
-    bytes[q].resize(outgoing[q].size() * sizeof(T));
-    if (!bytes[q].empty()) std::memcpy(bytes[q].data(), outgoing[q].data(), bytes[q].size());
+std::vector<std::vector<T>> all_to_all(const CommPtr& comm, std::vector<std::vector<T>> outgoing) {
+  static_assert(std::is_trivially_copyable_v<T>, "all_to_all sends raw bytes");
+  PackedLists send;
+  std::size_t total = 0;
+  for (const auto& list : outgoing) total += list.size() * sizeof(T);
+  send.bytes.resize(total);
+  std::size_t at = 0;
+  for (auto& list : outgoing) {
+    const auto n = list.size() * sizeof(T);
+    if (n > 0) std::memcpy(send.bytes.data() + at, list.data(), n);
+    at += n;
+    send.counts.push_back(static_cast<long long>(n));
+    std::vector<T>().swap(list);  // released as packed
   }
-  const auto received = exchange_bytes(comm, bytes);
-  std::vector<std::vector<T>> result(received.size());
-  for (std::size_t s = 0; s < received.size(); ++s) {
-    result[s].resize(received[s].size() / sizeof(T));
-    if (!result[s].empty()) std::memcpy(result[s].data(), received[s].data(), received[s].size());
+  const auto received = exchange_packed(comm, std::move(send));
+  std::vector<std::vector<T>> result(received.counts.size());
+  at = 0;
+  for (std::size_t s = 0; s < result.size(); ++s) {
+    const auto n = static_cast<std::size_t>(received.counts[s]);
+    result[s].resize(n / sizeof(T));
+    if (n > 0) std::memcpy(result[s].data(), received.bytes.data() + at, n);
+    at += n;
   }
   return result;
 }

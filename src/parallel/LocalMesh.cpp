@@ -67,8 +67,7 @@ NodeRecords fetch_nodes(const CommPtr& comm, const MeshSlice& slice,
   const SliceRanges ranges(slice.node_count, comm->getSize());
   PerRank<GlobalIndex> ask(p);
   for (auto g : ids) ask[static_cast<std::size_t>(ranges.holder(g))].push_back(g);
-  const auto asked = all_to_all(comm, ask);
-  ask = {};
+  const auto asked = all_to_all(comm, std::move(ask));
   PerRank<double> x(p);
   PerRank<int> owner(p);
   for (std::size_t s = 0; s < p; ++s)
@@ -80,8 +79,8 @@ NodeRecords fetch_nodes(const CommPtr& comm, const MeshSlice& slice,
       if (holders) holders->emplace_back(g, static_cast<int>(s));
     }
   if (holders) std::sort(holders->begin(), holders->end());
-  const auto got_x = all_to_all(comm, x);
-  const auto got_owner = all_to_all(comm, owner);
+  const auto got_x = all_to_all(comm, std::move(x));
+  const auto got_owner = all_to_all(comm, std::move(owner));
   // Each holder answered in the order asked, and holders' ranges ascend with the ids: the
   // answers concatenated in rank order follow `ids`.
   NodeRecords r;
@@ -187,20 +186,21 @@ std::vector<CellStream> route_cells(const CommPtr& comm, const MeshSlice& slice,
     }
   }
   std::sort(holders.begin(), holders.end());
-  const auto got_cells = all_to_all(comm, cells);
-  const auto got_thickness = all_to_all(comm, thickness);
+  auto got_cells = all_to_all(comm, std::move(cells));
+  auto got_thickness = all_to_all(comm, std::move(thickness));
   std::vector<CellStream> streams(p);
-  for (std::size_t s = 0; s < p; ++s) streams[s] = {got_cells[s], got_thickness[s]};
+  for (std::size_t s = 0; s < p; ++s)
+    streams[s] = {std::move(got_cells[s]), std::move(got_thickness[s])};
   return streams;
 }
 
 // Node set entries [set, position, node] and side set entries [set, position, cell, side] go to
 // the rank that read the node or cell, which forwards them to every rank holding it.
-PerRank<GlobalIndex> route_set_entries(const CommPtr& comm, const PerRank<GlobalIndex>& to_reader,
+PerRank<GlobalIndex> route_set_entries(const CommPtr& comm, PerRank<GlobalIndex> to_reader,
                                        std::size_t width, std::size_t item,
                                        const Holders& holders) {
   const auto p = static_cast<std::size_t>(comm->getSize());
-  const auto arrived = all_to_all(comm, to_reader);
+  const auto arrived = all_to_all(comm, std::move(to_reader));
   PerRank<GlobalIndex> forward(p);
   for (const auto& entries : arrived)
     for (std::size_t e = 0; e + width <= entries.size(); e += width)
@@ -209,7 +209,7 @@ PerRank<GlobalIndex> route_set_entries(const CommPtr& comm, const PerRank<Global
         out.insert(out.end(), entries.begin() + static_cast<std::ptrdiff_t>(e),
                    entries.begin() + static_cast<std::ptrdiff_t>(e + width));
       });
-  return all_to_all(comm, forward);
+  return all_to_all(comm, std::move(forward));
 }
 
 void add_node_sets(const CommPtr& comm, const MeshSlice& slice, const Holders& node_holders,
@@ -225,7 +225,7 @@ void add_node_sets(const CommPtr& comm, const MeshSlice& slice, const Holders& n
                          set.nodes[i]});
     }
   }
-  const auto got = route_set_entries(comm, out, 3, 2, node_holders);
+  const auto got = route_set_entries(comm, std::move(out), 3, 2, node_holders);
   std::vector<std::vector<std::pair<GlobalIndex, LocalIndex>>> entries(slice.node_sets.size());
   for (const auto& list : got)
     for (std::size_t e = 0; e + 3 <= list.size(); e += 3)
@@ -252,7 +252,7 @@ void add_side_sets(const CommPtr& comm, const MeshSlice& slice, const Holders& c
                          set.cells[i], static_cast<GlobalIndex>(set.sides[i])});
     }
   }
-  const auto got = route_set_entries(comm, out, 4, 2, cell_holders);
+  const auto got = route_set_entries(comm, std::move(out), 4, 2, cell_holders);
   std::vector<std::vector<std::pair<GlobalIndex, std::pair<LocalIndex, int>>>> entries(
       slice.side_sets.size());
   for (const auto& list : got)
@@ -337,7 +337,8 @@ LocalMesh distribute_mesh(const CommPtr& comm, const MeshSlice& slice,
     owned[static_cast<std::size_t>(slice_owner[i])].push_back(slice.first_node +
                                                               static_cast<GlobalIndex>(i));
   std::vector<GlobalIndex> ids;
-  for (const auto& list : all_to_all(comm, owned)) ids.insert(ids.end(), list.begin(), list.end());
+  for (const auto& list : all_to_all(comm, std::move(owned)))
+    ids.insert(ids.end(), list.begin(), list.end());
   for (const auto& stream : streams)
     for (std::size_t e = 0; e < stream.cells.size();) {
       const auto per = static_cast<std::size_t>(
