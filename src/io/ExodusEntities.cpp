@@ -8,6 +8,38 @@
 
 namespace efg::exodus {
 
+MeshHeader read_mesh_header(const File& f, const std::string& path) {
+  ex_set_max_name_length(f.id(), kNameLength);
+  char title[MAX_LINE_LENGTH + 1] = {};
+  std::int64_t dim = 0;
+  MeshHeader h;
+  f.check(
+      ex_get_init(f.id(), title, &dim, &h.nodes, &h.cells, &h.blocks, &h.node_sets, &h.side_sets),
+      "reading the header");
+  if (dim != 2 && dim != 3)
+    throw InputError("mesh file '" + path + "': dimension " + std::to_string(dim) +
+                     " is not supported (expected 2 or 3)");
+  h.dimension = static_cast<int>(dim);
+  return h;
+}
+
+std::vector<double> read_coordinates(const File& f, int dimension, std::int64_t first,
+                                     std::int64_t count) {
+  std::vector<double> x(static_cast<std::size_t>(count)), y(x.size()), z(x.size());
+  if (count > 0)
+    f.check(ex_get_partial_coord(f.id(), first + 1, count, x.data(), y.data(),
+                                 dimension == 3 ? z.data() : nullptr),
+            "reading coordinates");
+  std::vector<double> xyz;
+  xyz.reserve(static_cast<std::size_t>(dimension * count));
+  for (std::size_t n = 0; n < x.size(); ++n) {
+    xyz.push_back(x[n]);
+    xyz.push_back(y[n]);
+    if (dimension == 3) xyz.push_back(z[n]);
+  }
+  return xyz;
+}
+
 std::vector<std::int64_t> read_ids(const File& f, ex_entity_type type, std::int64_t count) {
   std::vector<std::int64_t> ids(static_cast<std::size_t>(count));
   if (count > 0) f.check(ex_get_ids(f.id(), type, ids.data()), "reading entity ids");

@@ -14,6 +14,19 @@ namespace efg::exodus {
 
 constexpr int kNameLength = 256;
 
+struct MeshHeader {
+  int dimension = 3;
+  std::int64_t nodes = 0, cells = 0, blocks = 0, node_sets = 0, side_sets = 0;
+};
+
+/// The file's sizes (names up to kNameLength from here on); InputError for a dimension other
+/// than 2 or 3.
+MeshHeader read_mesh_header(const File& f, const std::string& path);
+
+/// Coordinates of `count` nodes from `first` (0-based), node after node, `dimension` each.
+std::vector<double> read_coordinates(const File& f, int dimension, std::int64_t first,
+                                     std::int64_t count);
+
 std::vector<std::int64_t> read_ids(const File& f, ex_entity_type type, std::int64_t count);
 
 /// Entity names; unnamed entities get `prefix` followed by their id ("block_7").

@@ -92,31 +92,15 @@ void read_side_sets(const exodus::File& f, std::int64_t nside_sets, BackgroundMe
 
 BackgroundMesh read_exodus_mesh(const std::string& path) {
   auto f = exodus::File::open_read(path);
-  ex_set_max_name_length(f.id(), kNameLength);
-  char title[MAX_LINE_LENGTH + 1] = {};
-  std::int64_t dim = 0, nodes = 0, cells = 0, nblocks = 0, nnode_sets = 0, nside_sets = 0;
-  f.check(ex_get_init(f.id(), title, &dim, &nodes, &cells, &nblocks, &nnode_sets, &nside_sets),
-          "reading the header");
-  if (dim != 2 && dim != 3)
-    throw InputError("mesh file '" + path + "': dimension " + std::to_string(dim) +
-                     " is not supported (expected 2 or 3)");
-
+  const auto header = exodus::read_mesh_header(f, path);
   BackgroundMesh mesh;
   mesh.source = path;
-  mesh.dimension = static_cast<int>(dim);
-  std::vector<double> x(static_cast<std::size_t>(nodes)), y(x.size()), z(x.size());
-  f.check(ex_get_coord(f.id(), x.data(), y.data(), dim == 3 ? z.data() : nullptr),
-          "reading coordinates");
-  mesh.coordinates.reserve(static_cast<std::size_t>(dim * nodes));
-  for (std::size_t n = 0; n < x.size(); ++n) {
-    mesh.coordinates.push_back(x[n]);
-    mesh.coordinates.push_back(y[n]);
-    if (dim == 3) mesh.coordinates.push_back(z[n]);
-  }
-
-  read_blocks(f, path, nblocks, mesh);
-  read_node_sets(f, nnode_sets, mesh);
-  read_side_sets(f, nside_sets, mesh);
+  mesh.dimension = header.dimension;
+  mesh.coordinates = exodus::read_coordinates(f, header.dimension, 0, header.nodes);
+  read_blocks(f, path, header.blocks, mesh);
+  read_node_sets(f, header.node_sets, mesh);
+  read_side_sets(f, header.side_sets, mesh);
+  const auto cells = header.cells;
   if (static_cast<std::int64_t>(mesh.cell_count()) != cells)
     throw InputError("mesh file '" + path + "': header says " + std::to_string(cells) +
                      " elements but the blocks hold " + std::to_string(mesh.cell_count()));

@@ -121,34 +121,18 @@ void read_set_slices(const exodus::File& f, std::int64_t nnode_sets, std::int64_
 
 MeshSlice read_exodus_slice(const std::string& path, int rank, int size) {
   auto f = exodus::File::open_read(path);
-  ex_set_max_name_length(f.id(), exodus::kNameLength);
-  char title[MAX_LINE_LENGTH + 1] = {};
-  std::int64_t dim = 0, nodes = 0, cells = 0, nblocks = 0, nnode_sets = 0, nside_sets = 0;
-  f.check(ex_get_init(f.id(), title, &dim, &nodes, &cells, &nblocks, &nnode_sets, &nside_sets),
-          "reading the header");
-  if (dim != 2 && dim != 3)
-    throw InputError("mesh file '" + path + "': dimension " + std::to_string(dim) +
-                     " is not supported (expected 2 or 3)");
+  const auto header = exodus::read_mesh_header(f, path);
   MeshSlice slice;
   slice.source = path;
-  slice.dimension = static_cast<int>(dim);
-  slice.node_count = nodes;
-  slice.cell_count = cells;
-  slice.first_node = slice_begin(nodes, rank, size);
-  const auto count = slice_begin(nodes, rank + 1, size) - slice.first_node;
-  std::vector<double> x(static_cast<std::size_t>(count)), y(x.size()), z(x.size());
-  if (count > 0)
-    f.check(ex_get_partial_coord(f.id(), slice.first_node + 1, count, x.data(), y.data(),
-                                 dim == 3 ? z.data() : nullptr),
-            "reading coordinates");
-  slice.coordinates.reserve(static_cast<std::size_t>(dim * count));
-  for (std::size_t n = 0; n < x.size(); ++n) {
-    slice.coordinates.push_back(x[n]);
-    slice.coordinates.push_back(y[n]);
-    if (dim == 3) slice.coordinates.push_back(z[n]);
-  }
-  read_block_slices(f, path, nblocks, rank, size, slice);
-  read_set_slices(f, nnode_sets, nside_sets, rank, size, slice);
+  slice.dimension = header.dimension;
+  slice.node_count = header.nodes;
+  slice.cell_count = header.cells;
+  slice.first_node = slice_begin(header.nodes, rank, size);
+  slice.coordinates =
+      exodus::read_coordinates(f, header.dimension, slice.first_node,
+                               slice_begin(header.nodes, rank + 1, size) - slice.first_node);
+  read_block_slices(f, path, header.blocks, rank, size, slice);
+  read_set_slices(f, header.node_sets, header.side_sets, rank, size, slice);
   return slice;
 }
 
