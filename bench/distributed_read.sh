@@ -3,10 +3,11 @@
 # reading only its slice and keeping its part (mesh.read: distributed; docs/scaling.md), side by
 # side in one run: the explicit 3D block of bench/block_scene.py at NX x 0.35 NX x 0.35 NX cells
 # (NX = 100: 130,896 particles, dilation 1.2) written once with `efg mesh`, 100 steps, on 1, 2
-# and 3 ranks. Prints the nodes each rank holds, the "scene and mesh" phase's resident growth per
-# rank, the setup (scene and mesh, partition, neighbour search, shape functions: the slower
-# rank's) and each rank's memory high-water mark.
-#   bench/distributed_read.sh [NX]
+# and 3 ranks. Prints the nodes each rank holds, the resident growth per rank of the "scene and
+# mesh" and "partition" phases (a distributed read partitions while it reads), the setup (scene
+# and mesh, partition, neighbour search, shape functions: the slower rank's) and each rank's
+# memory high-water mark.
+#   bench/distributed_read.sh [NX]      (RANKS="2" for some rank counts only; default "1 2 3")
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 "$here/scripts/setup.sh" >/dev/null
@@ -41,7 +42,9 @@ r = json.load(open(sys.argv[4]))
 nodes = r["particles"]
 held = re.search(r"each rank holds (\d+) to (\d+) of its nodes", log)
 held = "%s-%s" % held.groups() if held else "%d (whole)" % nodes
-mesh = float(re.search(r"\n  scene and mesh +([0-9.]+) MiB", log).group(1)) / ranks
+# the read with the partition: a distributed read does both in "scene and mesh"
+mesh = sum(float(re.search(r"\n  %s +([0-9.]+) MiB" % phase, log).group(1))
+           for phase in ("scene and mesh", "partition")) / ranks
 peak = re.search(r"memory high-water mark: ([0-9.]+) MiB per rank", log).group(1)
 ph = r["phase_seconds"]
 one = lambda v: max(v) if isinstance(v, list) else v
@@ -53,8 +56,8 @@ print("| %d | %s | %d | %s | %.1f | %.2f | %s |" % (ranks, sys.argv[3], nodes, h
 PY
 }
 
-echo "| ranks | mesh.read | particles | nodes per rank | scene and mesh MiB per rank | setup s | high-water MiB per rank |"
+echo "| ranks | mesh.read | particles | nodes per rank | mesh + partition MiB per rank | setup s | high-water MiB per rank |"
 echo "|---|---|---|---|---|---|---|"
-for ranks in 1 2 3; do
+for ranks in ${RANKS:-1 2 3}; do
   for read in root distributed; do row "$ranks" "$read"; done
 done

@@ -366,6 +366,17 @@ LocalMesh distribute_mesh(const CommPtr& comm, const MeshSlice& slice,
   add_blocks(slice, streams, local);
   add_node_sets(comm, slice, node_holders, local);
   add_side_sets(comm, slice, cell_holders, local);
+  // The ids came from a list of every cell's nodes (8 per hex) made unique, the rest grew entry
+  // by entry: kept at their capacity they held 2.5 times the part (103 against 41 MiB per rank,
+  // 1e6 particles on 2 ranks).
+  for (auto* v : {&local.mesh.global.nodes, &local.mesh.global.cells}) v->shrink_to_fit();
+  local.mesh.coordinates.shrink_to_fit();
+  local.owner.shrink_to_fit();
+  for (auto& set : local.mesh.node_sets) set.nodes.shrink_to_fit();
+  for (auto& set : local.mesh.side_sets) {
+    set.cells.shrink_to_fit();
+    set.sides.shrink_to_fit();
+  }
   return local;
 }
 
