@@ -61,10 +61,13 @@ std::vector<double> support_sizes(const BackgroundMesh& mesh,
       part_max[d] = std::max(part_max[d], a[n * dim + d]);
     }
   }
-  if (section.per_part_support)
+  if (section.per_part_support) {
+    // (a rank's part of a mesh holds part of the part: its maximum comes over all ranks)
+    if (!section.part_support.empty()) part_max = section.part_support;
     for (std::size_t n = 0; n < mesh.node_count(); ++n)
       if (h[n * dim] > 0)
         for (std::size_t d = 0; d < dim; ++d) a[n * dim + d] = part_max[d];
+  }
   return a;
 }
 

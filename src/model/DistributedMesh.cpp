@@ -1,12 +1,13 @@
 #include "model/DistributedMesh.hpp"
 
-#include <Teuchos_CommHelpers.hpp>
 #include <malloc.h>
+#include <Teuchos_CommHelpers.hpp>
 
 #include <algorithm>
 #include <cmath>
 
 #include "core/Errors.hpp"
+#include "discretization/ParticleCloud.hpp"
 #include "io/ExodusSliceReader.hpp"
 #include "mesh/MeshValidation.hpp"
 #include "model/GradedMaterials.hpp"
@@ -78,6 +79,23 @@ BackgroundMesh load_distributed_mesh(const CommPtr& comm, Scene& scene, NodePart
   run_collectively(comm, [&] {
     check_scene_against_mesh(scene, mesh, MeshOwners{comm, &partition.owner, partition.rank});
   });
+  // Per-part supports take the part's largest half-widths over the whole mesh: each node's are
+  // right on its owner (all its cells are there), so the largest over the owned nodes, over the
+  // ranks.
+  for (auto& part : scene.parts) {
+    if (!part.section.per_part_support) continue;
+    auto section = part.section;
+    section.per_part_support = false;
+    const auto a = support_sizes(mesh, part.blocks, section);
+    const auto dim = static_cast<std::size_t>(mesh.dimension);
+    std::vector<double> mine(dim, 0.0), largest(dim, 0.0);
+    for (auto n : partition.owned)
+      for (std::size_t d = 0; d < dim; ++d)
+        mine[d] = std::max(mine[d], a[static_cast<std::size_t>(n) * dim + d]);
+    Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, static_cast<int>(dim), mine.data(),
+                       largest.data());
+    part.section.part_support = largest;
+  }
   // A graded modulus' reference is its largest value over the whole mesh.
   set_graded_references(scene, mesh);
   for (auto& m : scene.materials) {

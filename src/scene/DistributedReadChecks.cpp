@@ -16,8 +16,7 @@ namespace {
 }  // namespace
 
 // Contact and rigid bodies need the whole boundary, shells their chart of the whole surface,
-// mixed u-p its pressure groups across the cut, per-part supports a part-wide maximum, an
-// initial state a whole results file.
+// mixed u-p its pressure groups across the cut, an initial state a whole results file.
 void check_distributed_read(Scene& scene) {
   if (!scene.distributed_read) return;
   if (scene.has_shells()) refuse(scene, "shell parts");
@@ -26,7 +25,6 @@ void check_distributed_read(Scene& scene) {
   if (scene.initial_state) refuse(scene, "an initial state");
   for (const auto& p : scene.parts) {
     if (p.formulation == PartFormulation::mixed_up) refuse(scene, "mixed u-p parts");
-    if (p.section.per_part_support) refuse(scene, "per-part supports");
   }
   const auto files = scene.document["output"]["files"];
   if (files && files.as<std::string>() == "gathered")

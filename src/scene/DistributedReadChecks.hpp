@@ -8,7 +8,7 @@
 namespace efg {
 
 /// For a distributed read: throws InputError at mesh.read for shells, contact, rigid bodies and
-/// walls, an initial state, mixed u-p and per-part supports, and at output.files for gathered
+/// walls, an initial state and mixed u-p, and at output.files for gathered
 /// results; otherwise makes the results one file per rank. Nothing for a read by rank 0.
 void check_distributed_read(Scene& scene);
 

@@ -56,7 +56,7 @@ schema::SpecPtr mesh_spec() {
                        "cells around them and those within reach of their supports; no rank "
                        "holds the whole mesh, results are written one file per rank). "
                        "Distributed reading is for solid parts without contact, rigid bodies, "
-                       "mixed u-p, per-part supports or an initial state (docs/scaling.md).",
+                       "mixed u-p or an initial state (docs/scaling.md).",
                        {"root", "distributed"}),
                 "root")
       .optional("generate", generate_spec("Built-in structured mesh generator.", "block_1"))

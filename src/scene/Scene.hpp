@@ -53,6 +53,9 @@ struct SectionSpec {
   std::vector<double> dilation = {1.5};  ///< one value, or one per direction
   SpacingMeasure spacing = SpacingMeasure::cells;
   bool per_part_support = false;
+  /// per_part_support on a rank's part of a mesh read in slices: the part's largest half-width
+  /// per direction over the whole mesh (set by model/DistributedMesh; empty otherwise).
+  std::vector<double> part_support;
   Integration integration = Integration::scni;
   int gauss_order = 2;
   Formulation formulation = Formulation::small_strain;

@@ -76,5 +76,47 @@ TEST(DistributedModel, HoldsAboutOneRanksShareOfTheMeshRead) {
               reference.owned[i]);
 }
 
+// support_size: per_part gives every particle of a part the part's largest half-widths over the
+// whole mesh. On a bar graded along x (cells from 0.05 to 0.45 long: x = 30 s^2 for s in
+// [0, 1]) the largest is at x = 30, far from the ranks owning the small cells: each rank's
+// part alone would give those a smaller support. Read in slices, every owned particle has the
+// supports it has when the mesh is read whole (same partition, same order), exactly.
+TEST(DistributedModel, PerPartSupportsAreTheWholePartsLargest) {
+  const auto comm = Tpetra::getDefaultComm();
+  const auto dir = test::scratch_dir("distributed_support_np" + std::to_string(comm->getSize()));
+  if (comm->getRank() == 0) {
+    GeneratorSpec bar;
+    bar.upper = {1, 1, 1};
+    bar.cells = {60, 3, 3};
+    bar.coordinate_map = [](const double* box, double* x) {
+      x[0] = 30 * box[0] * box[0];
+      x[1] = box[1];
+      x[2] = box[2];
+    };
+    ExodusWriter writer(dir + "/graded.exo", generate_mesh(bar), {}, "graded bar");
+    writer.close();
+  }
+  comm->barrier();
+  std::string text = kScene;
+  text.replace(text.find("bar.exo"), 7, "graded.exo");
+  text.replace(text.find("dilation: 1.5"), 13, "dilation: 1.5, support_size: per_part");
+  const auto distributed = build_model(comm, parse_scene(text, dir + "/graded.yaml"));
+  text.replace(text.find(", read: distributed"), 19, "");
+  const auto whole = build_model(comm, parse_scene(text, dir + "/graded.yaml"));
+  ASSERT_TRUE(distributed.mesh.is_part());
+  ASSERT_FALSE(whole.mesh.is_part());
+  const auto& a = distributed.parts[0].cloud;
+  const auto& b = whole.parts[0].cloud;
+  ASSERT_EQ(a.owned_count, b.owned_count);
+  for (std::size_t i = 0; i < a.owned_count; ++i) {
+    EXPECT_EQ(distributed.mesh.global_node(static_cast<std::size_t>(a.mesh_node[i])),
+              b.mesh_node[i]);
+    for (std::size_t d = 0; d < 3; ++d) EXPECT_EQ(a.a(i)[d], b.a(i)[d]) << "particle " << i;
+  }
+  // The largest cell is 30 (1 - (59/60)^2) = 0.99 long: with dilation 1.5 no support is shorter
+  // than 1.49 along x.
+  EXPECT_GT(a.a(0)[0], 1.48);
+}
+
 }  // namespace
 }  // namespace efg
