@@ -12,6 +12,7 @@
 #include "app/Commands.hpp"
 #include "core/Errors.hpp"
 #include "core/Log.hpp"
+#include "core/MpiSingleton.hpp"
 #include "core/Threads.hpp"
 #include "core/Version.hpp"
 #include "parallel/Collective.hpp"
@@ -70,10 +71,7 @@ int main(int argc, char** argv) {
   int code = 0;
   {
     efg::LibraryArguments library(argc, argv);  // Kokkos sees only the thread count
-    // Started without mpirun, Open MPI 4.1 forks an `orted` daemon for the singleton (0.13 s
-    // of a 0.5 s start here); efg never spawns processes, so the singleton may stay isolated.
-    // Ignored under mpirun and by other MPI libraries; a value set by the user wins.
-    setenv("OMPI_MCA_ess_singleton_isolated", "1", 0);
+    const efg::MpiSingletonSetup singleton;     // before MPI_Init, removed after MPI_Finalize
     Tpetra::ScopeGuard scope(library.argc(), library.argv());
     const auto comm = Tpetra::getDefaultComm();
     efg::Log::set_rank(comm->getRank());

@@ -15,6 +15,7 @@ import random
 import shutil
 import subprocess
 import sys
+import tempfile
 from concurrent.futures import ThreadPoolExecutor
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -88,12 +89,19 @@ def seeds():
 
 
 def run(cmd, cwd, timeout):
+    # Each run its own Open MPI session folder: two MPI starts at once in one folder race on
+    # creating it (Open MPI 4.1: "mkdir ... File exists", orte_init fails, exit 1), and the
+    # fuzzer's two workers start processes side by side. Short, under /tmp: it holds sockets.
+    session = tempfile.mkdtemp(prefix="efz")
+    env = dict(os.environ, OMPI_MCA_orte_tmpdir_base=session)
     try:
         p = subprocess.run(cmd, cwd=cwd, capture_output=True, text=True, timeout=timeout,
-                           errors="replace")
+                           errors="replace", env=env)
         return p.returncode, p.stdout + p.stderr
     except subprocess.TimeoutExpired:
         return "timeout", ""
+    finally:
+        shutil.rmtree(session, ignore_errors=True)
 
 
 def verdict(code, log, allowed):

@@ -7,11 +7,13 @@
 #include <Tpetra_Core.hpp>
 
 #include "core/Log.hpp"
+#include "core/MpiSingleton.hpp"
 #include "core/Threads.hpp"
 
 int main(int argc, char** argv) {
   ::testing::InitGoogleTest(&argc, argv);
   efg::LibraryArguments library(argc, argv);  // as efg itself: --threads N, OMP_PROC_BIND
+  const efg::MpiSingletonSetup singleton;     // as efg itself: an isolated singleton
   Tpetra::ScopeGuard scope(library.argc(), library.argv());
   const auto comm = Tpetra::getDefaultComm();
   efg::Log::set_rank(comm->getRank());
