@@ -57,6 +57,14 @@ struct NodeRecords {
   std::vector<int> owner;
 };
 
+// The coordinates of each node of a slice cell, looked up once per cell (a binary search each).
+void cell_coordinates(const NodeRecords& cell_nodes, const GlobalIndex* node, std::size_t per,
+                      std::size_t dim, std::vector<const double*>& x) {
+  x.resize(per);
+  for (std::size_t a = 0; a < per; ++a)
+    x[a] = cell_nodes.x.data() + position_of(cell_nodes.ids, node[a]) * dim;
+}
+
 // Asks the slice holders of `ids` (ascending, unique) for their coordinates and owners; with
 // `holders` the slice holders note who asked (the ranks holding each node).
 NodeRecords fetch_nodes(const CommPtr& comm, const MeshSlice& slice,
@@ -125,16 +133,18 @@ BlockExtents block_extents(const CommPtr& comm, const MeshSlice& slice,
   for (std::size_t b = 0; b < slice.blocks.size(); ++b) {
     const auto& block = slice.blocks[b];
     const auto per = static_cast<std::size_t>(cell_node_count(block.type));
-    for (std::size_t c = 0; c < block.read_count(); ++c)
+    std::vector<const double*> x;
+    for (std::size_t c = 0; c < block.read_count(); ++c) {
+      cell_coordinates(cell_nodes, block.connectivity.data() + c * per, per, dim, x);
       for (std::size_t d = 0; d < dim; ++d) {
         double lo = std::numeric_limits<double>::max(), hi = -lo;
         for (std::size_t a = 0; a < per; ++a) {
-          const auto k = position_of(cell_nodes.ids, block.connectivity[c * per + a]);
-          lo = std::min(lo, cell_nodes.x[k * dim + d]);
-          hi = std::max(hi, cell_nodes.x[k * dim + d]);
+          lo = std::min(lo, x[a][d]);
+          hi = std::max(hi, x[a][d]);
         }
         local[b * dim + d] = std::max(local[b * dim + d], hi - lo);
       }
+    }
   }
   if (!local.empty())
     Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, static_cast<int>(local.size()), local.data(),
@@ -169,13 +179,14 @@ std::vector<CellStream> route_cells(const CommPtr& comm, const MeshSlice& slice,
   for (std::size_t b = 0; b < slice.blocks.size(); ++b) {
     const auto& block = slice.blocks[b];
     const auto per = static_cast<std::size_t>(cell_node_count(block.type));
+    std::vector<const double*> x;
     for (std::size_t c = 0; c < block.read_count(); ++c) {
       const auto* node = block.connectivity.data() + c * per;
       const auto id = block.first_read + static_cast<GlobalIndex>(c);
+      cell_coordinates(cell_nodes, node, per, dim, x);
       for (std::size_t q = 0; q < p; ++q) {
         bool send = false;
-        for (std::size_t a = 0; a < per && !send; ++a)
-          send = inside(q, cell_nodes.x.data() + position_of(cell_nodes.ids, node[a]) * dim);
+        for (std::size_t a = 0; a < per && !send; ++a) send = inside(q, x[a]);
         if (!send) continue;
         cells[q].push_back(static_cast<GlobalIndex>(b));
         cells[q].push_back(id);

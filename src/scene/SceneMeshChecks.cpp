@@ -168,7 +168,7 @@ class Checker {
  private:
   bool distributed() const { return owners_.owner != nullptr; }
   bool owned(std::size_t n) const { return !distributed() || (*owners_.owner)[n] == owners_.rank; }
-  void sum_over_ranks(double* values, int count, Teuchos::EReductionType how) const {
+  void reduce_over_ranks(double* values, int count, Teuchos::EReductionType how) const {
     if (!distributed()) return;
     std::vector<double> mine(values, values + count);
     Teuchos::reduceAll(*owners_.comm, how, count, mine.data(), values);
@@ -266,10 +266,10 @@ class Checker {
           hi[k] = std::max(hi[k], x);
         }
       }
-    sum_over_ranks(centre, 3, Teuchos::REDUCE_SUM);
-    sum_over_ranks(&count, 1, Teuchos::REDUCE_SUM);
-    sum_over_ranks(lo, 3, Teuchos::REDUCE_MIN);
-    sum_over_ranks(hi, 3, Teuchos::REDUCE_MAX);
+    reduce_over_ranks(centre, 3, Teuchos::REDUCE_SUM);
+    reduce_over_ranks(&count, 1, Teuchos::REDUCE_SUM);
+    reduce_over_ranks(lo, 3, Teuchos::REDUCE_MIN);
+    reduce_over_ranks(hi, 3, Teuchos::REDUCE_MAX);
     if (count == 0) return "";
     double size = 0;
     for (std::size_t k = 0; k < udim; ++k) {
@@ -309,7 +309,7 @@ class Checker {
             gram[static_cast<std::size_t>(a * modes + b)] += row[a] * row[b];
       }
     }
-    sum_over_ranks(gram.data(), modes * modes, Teuchos::REDUCE_SUM);
+    reduce_over_ranks(gram.data(), modes * modes, Teuchos::REDUCE_SUM);
     std::vector<double> eig(static_cast<std::size_t>(modes)),
         work(static_cast<std::size_t>(4 * modes));
     int info = 0;
@@ -367,7 +367,7 @@ class Checker {
     if (!set) return;
     double count = 0;
     for (auto n : set->nodes) count += owned(static_cast<std::size_t>(n)) ? 1 : 0;
-    sum_over_ranks(&count, 1, Teuchos::REDUCE_SUM);
+    reduce_over_ranks(&count, 1, Teuchos::REDUCE_SUM);
     if (count == 0) fail(at, path, "node set '" + name + "' is empty; expected a set with nodes");
   }
 
