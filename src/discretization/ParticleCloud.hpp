@@ -30,8 +30,11 @@ struct ParticleCloud {
 
 /// Support half-widths of every node of `blocks` (a_d = dilation_d x h_d), indexed by mesh node;
 /// nodes outside the blocks get 0. The nodal spacing h_d of node I is
+///   spacing: edges     - the largest, over the background cells around I, of |e_d| of the cell
+///                        edge e most nearly parallel to axis d (the distance between rows of
+///                        nodes, also where cells are sheared against the axes);
 ///   spacing: cells     - the largest extent in direction d of the background cells around I
-///                        (LS-DYNA IDILA = 0);
+///                        (LS-DYNA IDILA = 0; on axis-aligned cells the same as edges);
 ///   spacing: neighbors - the largest |X_J,d - X_I,d| over the nodes J sharing a cell with I
 ///                        (IDILA = 1).
 /// A sphere support takes a = dilation x max_d h_d in every direction. With per_part_support

@@ -69,6 +69,20 @@ std::vector<int> cell_side_nodes(CellType type, int side) {
   return table[static_cast<std::size_t>(side)];
 }
 
+std::vector<std::array<int, 2>> cell_edges(CellType type) {
+  std::vector<std::array<int, 2>> edges;
+  for (const auto& side : side_table(type)) {
+    // a 2D side is an edge; a 3D face is bounded by a cycle of edges, each shared by two faces
+    const std::size_t segments = cell_dimension(type) == 2 ? 1 : side.size();
+    for (std::size_t k = 0; k < segments; ++k) {
+      std::array<int, 2> e = {side[k], side[(k + 1) % side.size()]};
+      if (e[0] > e[1]) std::swap(e[0], e[1]);
+      if (std::find(edges.begin(), edges.end(), e) == edges.end()) edges.push_back(e);
+    }
+  }
+  return edges;
+}
+
 std::string cell_exodus_name(CellType type) {
   switch (type) {
     case CellType::quad4:

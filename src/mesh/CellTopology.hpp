@@ -20,6 +20,9 @@ int cell_side_count(CellType type);
 /// Local node indices (0-based) of side `side` (0-based), ordered so that the side's normal by the
 /// right-hand rule points out of the cell.
 std::vector<int> cell_side_nodes(CellType type, int side);
+/// The cell's edges as pairs of local node indices (0-based), each edge once: the sides in 2D,
+/// the sides' boundary segments in 3D.
+std::vector<std::array<int, 2>> cell_edges(CellType type);
 
 /// The Exodus element type name written to files ("QUAD4", "TRI3", "HEX8", "TETRA4", "WEDGE6").
 std::string cell_exodus_name(CellType type);

@@ -20,7 +20,7 @@ namespace efg {
 enum class Basis { linear, quadratic };
 enum class KernelType { cubic_spline, quadratic_spline, quartic_spline };
 enum class SupportShape { box, sphere };
-enum class SpacingMeasure { cells, neighbors };
+enum class SpacingMeasure { cells, edges, neighbors };
 enum class Integration { scni, scni_subcells, nodal, gauss };
 enum class Formulation { small_strain, total_lagrangian };
 /// The fields of a part: displacement only, or displacement and a pressure per background cell

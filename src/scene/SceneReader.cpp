@@ -193,9 +193,10 @@ class SceneBuilder {
         enum_of<SupportShape>(sec["support"].as<std::string>(),
                               {{"box", SupportShape::box}, {"sphere", SupportShape::sphere}});
     out.dilation = as_vector<double>(sec["dilation"]);
-    out.spacing = enum_of<SpacingMeasure>(
-        sec["spacing"].as<std::string>(),
-        {{"cells", SpacingMeasure::cells}, {"neighbors", SpacingMeasure::neighbors}});
+    out.spacing = enum_of<SpacingMeasure>(sec["spacing"].as<std::string>(),
+                                          {{"cells", SpacingMeasure::cells},
+                                           {"edges", SpacingMeasure::edges},
+                                           {"neighbors", SpacingMeasure::neighbors}});
     out.per_part_support = sec["support_size"].as<std::string>() == "per_part";
     out.integration = enum_of<Integration>(sec["integration"].as<std::string>(),
                                            {{"scni", Integration::scni},

@@ -34,9 +34,14 @@ SpecPtr section_spec() {
           "1.5")
       .optional(
           "spacing",
-          choice("How the nodal spacing is measured: from the background cells around the node "
-                 "(LS-DYNA IDILA=0) or from the nearest surrounding nodes (IDILA=1).",
-                 {"cells", "neighbors"}),
+          choice("How the nodal spacing h_d is measured: cells, the extent in d of the "
+                 "background cells around the node (LS-DYNA IDILA=0); edges, the length along d "
+                 "of the cell edges running mainly along d (the distance between rows of nodes: "
+                 "on cells sheared against the axes, such as a tapered panel, the extent also "
+                 "counts the shear and the supports grow several rows wide; equal to cells on "
+                 "axis-aligned cells); neighbors, the largest distance in d to the nodes sharing "
+                 "a cell (IDILA=1). See docs/discretization.md.",
+                 {"cells", "edges", "neighbors"}),
           "cells")
       .optional("support_size",
                 choice("Each particle its own support size, or the part's largest for all.",
