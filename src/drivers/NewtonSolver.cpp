@@ -60,8 +60,10 @@ std::string linear_failure_advice(const LinearSolverPlan& plan) {
          ". Candidates: a body or part not held against rigid motion (missing essential "
          "conditions), a nearly incompressible material (nu >= 0.49: the displacement-only "
          "formulation locks and its system is ill-conditioned), an inverted or degenerate "
-         "state. Try solver: direct on one rank, or a preconditioner suited to the problem "
-         "(docs/implicit.md, 'When a solve fails')";
+         "state; with multigrid, supports several rows of particles wide where the cells are "
+         "sheared or curved against the axes (try section.spacing: edges) or SCNI's soft modes "
+         "(try integration: scni_subcells). Try solver: direct, or a preconditioner suited to "
+         "the problem (docs/implicit.md, 'When a solve fails')";
 }
 
 }  // namespace
