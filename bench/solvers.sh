@@ -2,8 +2,8 @@
 # Implicit solve time, today's default solver against the previous defaults, side by side in one
 # run (docs/implicit.md): the Timoshenko beam at 8,514 dofs (default MUMPS, the previous direct
 # default UMFPACK, the first default GMRES + Ifpack2 ILU(2)), at 33,410 and 132,354 dofs on 1 and
-# 2 ranks (MUMPS; UMFPACK on 1), the cantilever block at about 10,000 and 75,000 particles, and
-# the block with SCNI subcells at 30,927 dofs (auxiliary space against multigrid on the Jacobian).
+# 2 ranks (MUMPS; UMFPACK on 1; with SCNI subcells multigrid and MUMPS on 1 and 2), the
+# cantilever block at about 10,000 and 75,000 particles, and the block with SCNI subcells at 30,927 dofs (auxiliary space against multigrid on the Jacobian).
 # Prints, per model and solver, the Newton phase (linear solver setup + Krylov + assembly inside
 # Newton), the setup share and the linear iterations. Runs longer than EFG_BENCH_TIMEOUT seconds
 # (default 600) are stopped and shown as "> limit". Not part of the test suite.
@@ -69,6 +69,16 @@ for cells in "${beams[@]}"; do
   run "$tag, default" "$work/beam.yaml"
   run "$tag, default, 2 ranks" "$work/beam.yaml" 2
   run "$tag, UMFPACK" "$work/beam_umf.yaml"
+  # The iterative path on the same beam with SCNI subcells (multigrid on the Jacobian, its coarse
+  # levels gathered onto fewer ranks): issue 12's two-rank speedup, side by side with MUMPS.
+  scene "$here/input/timoshenko_beam.yaml" "$work/beam_mg.yaml" "$cells" ", solver: iterative"
+  sed -i 's/integration: scni/integration: scni_subcells/' "$work/beam_mg.yaml"
+  scene "$here/input/timoshenko_beam.yaml" "$work/beam_sub.yaml" "$cells" ", solver: direct"
+  sed -i 's/integration: scni/integration: scni_subcells/' "$work/beam_sub.yaml"
+  run "$tag subcells, multigrid" "$work/beam_mg.yaml"
+  run "$tag subcells, multigrid, 2 ranks" "$work/beam_mg.yaml" 2
+  run "$tag subcells, MUMPS" "$work/beam_sub.yaml"
+  run "$tag subcells, MUMPS, 2 ranks" "$work/beam_sub.yaml" 2
 done
 models=("45, 14, 14")                 # 46 x 15 x 15 = 10,350 particles
 if [ $quick -eq 0 ]; then models+=("100, 26, 26"); fi  # 101 x 27 x 27 = 73,629 particles
