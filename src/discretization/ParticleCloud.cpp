@@ -105,6 +105,19 @@ std::vector<double> support_sizes(const BackgroundMesh& mesh,
   return a;
 }
 
+double extent_over_rows(const BackgroundMesh& mesh, const std::vector<std::string>& blocks) {
+  SectionSpec measure;
+  measure.dilation = {1.0};
+  measure.spacing = SpacingMeasure::cells;
+  const auto extents = support_sizes(mesh, blocks, measure);
+  measure.spacing = SpacingMeasure::edges;
+  const auto rows = support_sizes(mesh, blocks, measure);
+  double ratio = 1.0;
+  for (std::size_t k = 0; k < rows.size(); ++k)
+    if (rows[k] > 0) ratio = std::max(ratio, extents[k] / rows[k]);
+  return ratio;
+}
+
 ParticleCloud make_particle_cloud(const BackgroundMesh& mesh, const PartSpec& part,
                                   const std::vector<int>& owner, int rank,
                                   const std::vector<LocalIndex>& ghost_nodes) {
