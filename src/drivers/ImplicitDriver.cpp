@@ -24,11 +24,13 @@ StageSummary ImplicitDriver::run(Vector& d, const OutputHook& output) {
   const int steps = stage_.settings["load_steps"].as<int>();
   const double min_step = stage_.settings["min_step_fraction"].as<double>() * span;
   const double interval = stage_.output_interval.value_or(span);
+  YAML::Node settings = stage_.settings;
   const auto make_newton = [&] {
-    return std::make_unique<NewtonSolver>(problem_, stage_.settings, scene.file,
+    return std::make_unique<NewtonSolver>(problem_, settings, scene.file,
                                           "stage '" + stage_.name + "'");
   };
-  problem_.take_graph_change();  // a graph rebuilt at the stage start is the one used here
+  double earlier_setup_seconds = 0;  // of a solver given up for the direct one
+  problem_.take_graph_change();      // a graph rebuilt at the stage start is the one used here
   auto newton_owner = make_newton();
   Progress progress("stage '" + stage_.name + "'", span);
   StageSummary summary;
@@ -76,7 +78,21 @@ StageSummary ImplicitDriver::run(Vector& d, const OutputHook& output) {
     summary.newton_iterations += result.iterations;
     summary.linear_iterations += result.linear_iterations;
     summary.newton_records.push_back(result.record);
-    summary.linear_setup_seconds = newton.preconditioner_seconds();
+    summary.linear_setup_seconds = earlier_setup_seconds + newton.preconditioner_seconds();
+    if (result.linear_failure && newton.direct_fallback()) {
+      // The automatic choice's iterative path stalled on a model it can factor: the step is
+      // retried with the direct solver, which the rest of the stage keeps.
+      Log::warning("stage '" + stage_.name + "': " + result.record.reason +
+                   " with the automatic choice's " + newton.plan().describe() +
+                   "; the stage goes on with the direct solver");
+      earlier_setup_seconds = summary.linear_setup_seconds;
+      settings = YAML::Clone(stage_.settings);
+      settings["solver"] = "direct";
+      newton_owner = make_newton();
+      summary.linear_solver += ", then direct (the iterative solve stalled)";
+      Tpetra::deep_copy(d, saved);
+      continue;
+    }
     if (result.linear_failure) {
       // The linear system itself cannot be solved (singular, or beyond the preconditioner):
       // a smaller load step has the same matrix, so cutting back would only repeat it.

@@ -130,6 +130,17 @@ NewtonSolver::NewtonSolver(NonlinearProblem& problem, const YAML::Node& stage,
                              from_stage(stage, "preconditioner", file, where), dofs,
                              model.mesh.dimension, ranks, model.scene.largest_poissons_ratio(),
                              problem.auxiliary_misfit(), problem.auxiliary_impossible());
+  {
+    // A stalled multigrid need not end a stage the automatic choice could also have factored
+    // (sheared supports, SCNI's soft modes: docs/implicit.md, "When a solve fails").
+    const bool chosen_by_auto = plan_.reason.rfind("auto:", 0) == 0;
+    const std::int64_t factorable =
+        4 * default_direct_limit(model.mesh.dimension,
+                                 model.scene.largest_poissons_ratio() >= kNearlyIncompressible);
+    direct_fallback_ = chosen_by_auto &&
+                       plan_.preconditioner != LinearSolverPlan::Preconditioner::direct &&
+                       dofs <= factorable;
+  }
   if (stage["residual_tolerance"]) tolerance_ = stage["residual_tolerance"].as<double>();
   try {
     nox_params_ = nonlinear_parameters(from_stage(stage, "nonlinear_solver", file, where),

@@ -50,12 +50,16 @@ class NewtonSolver {
   int solve_tangent(const Vector& d, const Vector& b, Vector& x);
 
   const LinearSolverPlan& plan() const { return plan_; }
+  /// True when `solver: auto` took the iterative path for a model it could still factor (up to
+  /// 4x the direct limit): a linear solve that stalls then retries with the direct solver.
+  bool direct_fallback() const { return direct_fallback_; }
   /// Seconds spent building preconditioners / factorizations so far.
   double preconditioner_seconds() const;
 
  private:
   NonlinearProblem& problem_;
   LinearSolverPlan plan_;
+  bool direct_fallback_ = false;
   double tolerance_ = 1e-9, energy_tolerance_ = 1e-12;
   Teuchos::RCP<Teuchos::ParameterList> nox_params_;
   Teuchos::RCP<const Thyra::LinearOpWithSolveFactoryBase<double>> lows_factory_;
