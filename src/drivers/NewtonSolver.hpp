@@ -51,7 +51,8 @@ class NewtonSolver {
 
   const LinearSolverPlan& plan() const { return plan_; }
   /// True when `solver: auto` took the iterative path for a model it could still factor (up to
-  /// 4x the direct limit): a linear solve that stalls then retries with the direct solver.
+  /// the nearly incompressible models' direct limit): a stalled linear solve then retries with
+  /// the direct solver.
   bool direct_fallback() const { return direct_fallback_; }
   /// Seconds spent building preconditioners / factorizations so far.
   double preconditioner_seconds() const;
