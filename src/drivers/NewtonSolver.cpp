@@ -135,9 +135,8 @@ NewtonSolver::NewtonSolver(NonlinearProblem& problem, const YAML::Node& stage,
     // (sheared supports, SCNI's soft modes: docs/implicit.md, "When a solve fails"), up to the
     // raised limit of nearly incompressible models (300,000 dofs in 2D, 120,000 in 3D: about
     // 7-8 GB of factors, measured growth).
-    const bool chosen_by_auto = plan_.reason.rfind("auto:", 0) == 0;
     const std::int64_t factorable = default_direct_limit(model.mesh.dimension, true);
-    direct_fallback_ = chosen_by_auto &&
+    direct_fallback_ = plan_.automatic &&
                        plan_.preconditioner != LinearSolverPlan::Preconditioner::direct &&
                        dofs <= factorable;
   }

@@ -129,10 +129,12 @@ LinearSolverPlan plan_linear_solver(const std::string& solver, std::int64_t dire
     plan.preconditioner = Plan::Preconditioner::multigrid;
     plan.reason = "solver: iterative";
   } else if (global_dofs <= limit) {
+    plan.automatic = true;
     plan.preconditioner = Plan::Preconditioner::direct;
     plan.reason =
         "auto: " + std::to_string(global_dofs) + " dofs <= " + std::to_string(limit) + why_limit;
   } else {
+    plan.automatic = true;
     plan.preconditioner = Plan::Preconditioner::multigrid;
     plan.reason =
         "auto: " + std::to_string(global_dofs) + " dofs > " + std::to_string(limit) + why_limit;

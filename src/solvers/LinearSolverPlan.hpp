@@ -26,6 +26,7 @@ struct LinearSolverPlan {
   enum class Preconditioner { direct, multigrid, auxiliary, ifpack2, none };
   Preconditioner preconditioner = Preconditioner::direct;
   std::string reason;               ///< why this one (for the log)
+  bool automatic = false;           ///< chosen by `solver: auto` (not named by the stage)
   Teuchos::ParameterList krylov;    ///< the Belos list for the chosen method
   Teuchos::ParameterList settings;  ///< the preconditioner's own list (MueLu, Ifpack2, Amesos2)
   int max_iterations = 0;
