@@ -124,12 +124,12 @@ NewtonSolver::NewtonSolver(NonlinearProblem& problem, const YAML::Node& stage,
   const std::string solver = !problem.displacement_dofs() ? "direct"
                              : stage["solver"]            ? stage["solver"].as<std::string>()
                                                           : "auto";
-  plan_ = plan_linear_solver(solver,
-                             stage["direct_limit"] ? stage["direct_limit"].as<std::int64_t>() : 0,
-                             from_stage(stage, "linear_solver", file, where),
-                             from_stage(stage, "preconditioner", file, where), dofs,
-                             model.mesh.dimension, ranks, model.scene.largest_poissons_ratio(),
-                             problem.auxiliary_misfit(), problem.auxiliary_impossible());
+  plan_ = plan_linear_solver(
+      solver, stage["direct_limit"] ? stage["direct_limit"].as<std::int64_t>() : 0,
+      from_stage(stage, "linear_solver", file, where),
+      from_stage(stage, "preconditioner", file, where), dofs, model.mesh.dimension, ranks,
+      model.scene.largest_poissons_ratio(), problem.auxiliary_misfit(),
+      problem.auxiliary_impossible(), problem.bulk_split_misfit().empty());
   {
     // A stalled multigrid need not end a stage the automatic choice could also have factored
     // (sheared supports, SCNI's soft modes: docs/implicit.md, "When a solve fails"), up to the
@@ -157,13 +157,19 @@ NewtonSolver::NewtonSolver(NonlinearProblem& problem, const YAML::Node& stage,
   AuxiliaryMatrix auxiliary;
   if (plan_.preconditioner == LinearSolverPlan::Preconditioner::auxiliary)
     auxiliary = [&problem](const Tpetra::CrsMatrix<>& K) { return problem.auxiliary_matrix(K); };
+  BulkSplit bulk;
+  if (plan_.preconditioner == LinearSolverPlan::Preconditioner::bulk_split) {
+    bulk = problem.bulk_split();
+    bulk.tolerance = plan_.saddle_tolerance;
+  }
   if (plan_.preconditioner == LinearSolverPlan::Preconditioner::multigrid ||
-      plan_.preconditioner == LinearSolverPlan::Preconditioner::auxiliary) {
+      plan_.preconditioner == LinearSolverPlan::Preconditioner::auxiliary ||
+      plan_.preconditioner == LinearSolverPlan::Preconditioner::bulk_split) {
     modes = rigid_body_modes(model.maps, model.mesh);
     coordinates = particle_coordinates(model.maps, model.mesh);
   }
   preconditioner_ =
-      make_matrix_preconditioner(plan_, problem.owned_dofs(), modes, coordinates, auxiliary);
+      make_matrix_preconditioner(plan_, problem.owned_dofs(), modes, coordinates, auxiliary, bulk);
   Vector zero(problem.owned_dofs());
   model_ = Teuchos::rcp(new SolidModelEvaluator(problem_, zero));
   model_->set_W_factory(lows_factory_);

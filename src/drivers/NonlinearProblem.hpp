@@ -10,6 +10,7 @@
 #include <string>
 
 #include "model/Model.hpp"
+#include "solvers/MatrixPreconditioner.hpp"
 
 namespace efg {
 
@@ -50,6 +51,10 @@ class NonlinearProblem {
       const Tpetra::CrsMatrix<>& /*K*/) const {
     return Teuchos::null;
   }
+  /// The mixed u-p parts' bulk split of the iterative solver (operators/BulkSplit): why it does
+  /// not apply ("" when it does), and the blocks of its saddle point.
+  virtual std::string bulk_split_misfit() const { return "not a solid problem"; }
+  virtual BulkSplit bulk_split() { return {}; }
 };
 
 }  // namespace efg

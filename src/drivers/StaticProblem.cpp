@@ -217,3 +217,33 @@ std::vector<std::array<double, 3>> StaticProblem::reactions(const Vector& d_owne
 }
 
 }  // namespace efg
+
+namespace efg {
+
+std::string StaticProblem::bulk_split_misfit() const {
+  return efg::bulk_split_misfit(*ops_, *conditions_);
+}
+
+BulkSplit StaticProblem::bulk_split() {
+  BulkSplit split;
+  auto coupling = std::make_shared<BulkCoupling>(*ops_, *conditions_);
+  split.relieved = [this, coupling](const Tpetra::CrsMatrix<>& K) {
+    if (bulk_scratch_.is_null() || bulk_scratch_graph_ != graph_) {  // contact refreshes it
+      bulk_scratch_ = create_matrix();
+      bulk_scratch_graph_ = graph_;
+    }
+    return coupling->relieved(K, *bulk_scratch_);
+  };
+  split.cells = coupling->cells();
+  split.pressures = [coupling](const Vector& x, double* q) { coupling->pressures(x, q); };
+  split.forces = [coupling](const double* q, Vector& y) { coupling->forces(q, y); };
+  split.schur.resize(split.cells);
+  ops_->mixed()->bulk_schur_diagonal(split.schur.data());
+  split.weights.resize(split.cells);
+  ops_->mixed()->bulk_weights(split.weights.data());
+  split.constrained_rows = coupling->constrained_rows();
+  split.row_factor = coupling->row_factor();
+  return split;
+}
+
+}  // namespace efg

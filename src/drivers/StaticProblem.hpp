@@ -14,6 +14,7 @@
 #include "contact/ImplicitSurfaceContact.hpp"
 #include "drivers/NonlinearProblem.hpp"
 #include "operators/AuxiliaryStiffness.hpp"
+#include "operators/BulkSplit.hpp"
 #include "operators/EssentialConditions.hpp"
 #include "operators/ModelOperators.hpp"
 
@@ -100,6 +101,9 @@ class StaticProblem : public NonlinearProblem {
     return auxiliary_stiffness(model_, K, conditions_->constrained_rows());
   }
 
+  std::string bulk_split_misfit() const override;
+  BulkSplit bulk_split() override;
+
   /// The force scale of the last residual evaluation: max(||f_ext||, ||f_int(d)||) (2-norms over
   /// the owned dofs; f_int without the boundary terms, so that it carries the reactions).
   /// Newton's tolerance is relative to it, so that a step that starts converged (a hold stage)
@@ -131,6 +135,8 @@ class StaticProblem : public NonlinearProblem {
   bool graph_changed_ = false;
   Teuchos::RCP<const FEGraph> graph_;
   Vector d_overlap_, r_overlap_, f_ext_;
+  Teuchos::RCP<FEMatrix> bulk_scratch_;  ///< the bulk split's matrix (built on first use)
+  Teuchos::RCP<const FEGraph> bulk_scratch_graph_;  ///< the graph it was built on
   Vector boundary_owned_;          ///< the boundary terms' and contacts' share of the residual
   Teuchos::RCP<Vector> released_;  ///< springback: r(d0) of the stage (null: no release)
   double release_scale_ = 0;

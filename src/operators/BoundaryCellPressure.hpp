@@ -23,7 +23,9 @@ namespace efg {
 struct BoundaryCellPressure {
   double kappa = 0;
   bool finite = false;
-  std::vector<double> bbar;  ///< b_a of the cell, dim per entry of the point's node list
+  std::vector<double> bbar;         ///< b_a of the cell, dim per entry of the point's node list
+  std::size_t part = 0, group = 0;  ///< model part and pressure cell (the bulk split's coupling)
+  double volume = 0;                ///< V_c of the pressure cell (x thickness in 2D)
   bool active() const { return !bbar.empty(); }
 };
 

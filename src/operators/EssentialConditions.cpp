@@ -51,6 +51,7 @@ EssentialConditions::EssentialConditions(const Model& model, const SolidOperator
   // and 3 kappa = E / (1 - 2 nu) there (Nitsche's stability needs beta above it).
   for (std::size_t p = 0; p < model.parts.size(); ++p)
     largest_modulus = std::max(largest_modulus, 3 * op.history().part(p).law.bulk_modulus);
+  row_modulus_ = largest_modulus;
   for (std::size_t c = 0; c < model.scene.boundary_conditions.size(); ++c) {
     const auto& bc = model.scene.boundary_conditions[c];
     if (bc.type != "displacement") continue;   // velocity conditions belong to the explicit driver
@@ -263,6 +264,9 @@ long long EssentialConditions::add_boundary_points(const Model& model, const Sol
                     .first;
         b.cell_pressure =
             attach_cell_pressure(row->second, d, op.overlap_node(p), law, b.nodes, b.phi, b.grad);
+        b.cell_pressure.part = p;
+        b.cell_pressure.group = group;
+        b.cell_pressure.volume = row->second.volume[0] * thickness;
       }
       points_.push_back(std::move(b));
     }

@@ -79,6 +79,22 @@ class EssentialConditions {
   void replace_rows(FEMatrix& K) const;
   /// The owned rows (local) that replace_rows replaces.
   std::vector<int> constrained_rows() const;
+  /// The modulus the collocation rows are scaled by (the largest E and 3 kappa of the model).
+  double row_modulus() const { return row_modulus_; }
+  /// The cell pressures in the boundary traction of the transformation conditions' points on
+  /// mixed u-p parts, linearized: row (a, i) of the residual gains coefficient x p_c, p_c the
+  /// pressure of the point's pressure cell (operators/BulkSplit: these rows couple to the split
+  /// bulk excess like the cells' own). `weak`: whether a Nitsche or penalty point has a cell
+  /// pressure (its terms are not of this form; EssentialConditionsMixed.cpp).
+  struct CellPressureTraction {
+    std::size_t part, group;
+    double volume;
+    std::vector<int> rows;  ///< overlap dofs
+    std::vector<double> coefficient;
+    std::vector<int> columns;  ///< overlap dofs of the cell's b (theta_c = sum b x d)
+    std::vector<double> b;
+  };
+  std::vector<CellPressureTraction> cell_pressure_tractions(bool& weak) const;
 
   /// Path-dependent parts: the boundary points keep a plastic history of their own (the
   /// traction term needs the stress there); the last evaluation's state becomes the committed one
@@ -180,6 +196,7 @@ class EssentialConditions {
   long long add_boundary_points(const Model& model, const SolidOperator& op, const Setup& setup);
 
   int dim_;
+  double row_modulus_ = 0;
   std::size_t conditions_;
   std::vector<std::vector<double>>
       reaction_weight_;  // per owned particle (node order), per condition and component

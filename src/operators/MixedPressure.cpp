@@ -119,6 +119,19 @@ MixedPressure::MixedPressure(const Model& model, const SolidOperator& solid)
     Part p;
     p.model_part = m;
     p.kappa = law.bulk_modulus;
+    {
+      // The iterative path's split (operators/BulkSplit.hpp) at nu_0 = 1/4, kappa_0 = 5 mu / 3:
+      // compressible, where multigrid converges, and below nu = 0.3, so that moderately
+      // compressible mixed parts take the same saddle-point path as nearly incompressible ones.
+      const double mu = law.elastic.mu;
+      p.kappa0 = std::min(p.kappa, 5.0 * mu / 3.0);
+      p.kappa_excess = p.kappa - p.kappa0;
+      p.schur = 1.0 + p.kappa_excess / (p.kappa0 + 4.0 * mu / 3.0);
+    }
+    p.groups = d.cells.group;
+    for (std::size_t q = 0; q < m; ++q)
+      if (model.parts[q].part->formulation == PartFormulation::mixed_up)
+        p.group_base += static_cast<long long>(model.parts[q].pressure_cells.size());
     p.finite = d.part->section.formulation != Formulation::small_strain;
     if (const auto rho = model.scene.find_material(d.part->material)->density) {
       p.density = *rho;
@@ -201,6 +214,72 @@ void MixedPressure::add_tangent(const Vector& d_overlap, FEMatrix& K) const {
                               static_cast<int>(cols.size()), vals.data(), true, false);
         }
     }
+}
+
+bool MixedPressure::has_bulk_excess() const {
+  for (const auto& p : parts_)
+    if (p.kappa_excess > 0) return true;
+  return false;
+}
+
+void MixedPressure::add_bulk_excess_tangent(FEMatrix& K) const {
+  auto local = K.getLocalMatrixDevice();
+  const auto udim = static_cast<std::size_t>(dim_);
+  std::vector<int> cols;
+  std::vector<double> vals;
+  for (const auto& p : parts_) {
+    if (!(p.kappa_excess > 0)) continue;
+    for (std::size_t c = 0; c < p.volume.size(); ++c) {
+      const auto first = p.offsets[c], last = p.offsets[c + 1];
+      const double s = p.volume[c] * p.kappa_excess;
+      cols.clear();
+      for (auto k = first; k < last; ++k)
+        for (std::size_t j = 0; j < udim; ++j)
+          cols.push_back(p.node[k] * dim_ + static_cast<int>(j));
+      vals.resize(cols.size());
+      for (auto k = first; k < last; ++k)
+        for (std::size_t i = 0; i < udim; ++i) {
+          for (std::size_t e = 0; e < cols.size(); ++e)
+            vals[e] = s * p.bbar[k * udim + i] * p.bbar[first * udim + e];
+          local.sumIntoValues(p.node[k] * dim_ + static_cast<int>(i), cols.data(),
+                              static_cast<int>(cols.size()), vals.data(), true, false);
+        }
+    }
+  }
+}
+
+std::size_t MixedPressure::cell_count() const {
+  std::size_t n = 0;
+  for (const auto& p : parts_) n += p.volume.size();
+  return n;
+}
+
+void MixedPressure::bulk_excess_pressures(const Vector& x_overlap, double* q) const {
+  const auto x = x_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
+  for (const auto& p : parts_)
+    for (std::size_t c = 0; c < p.volume.size(); ++c)
+      *q++ = p.volume[c] * p.kappa_excess * cell_dilatation(p, c, x, dim_);
+}
+
+void MixedPressure::add_cell_forces(const double* q, Vector& y_overlap) const {
+  auto y = y_overlap.getLocalViewHost(Tpetra::Access::ReadWrite);
+  const auto udim = static_cast<std::size_t>(dim_);
+  for (const auto& p : parts_)
+    for (std::size_t c = 0; c < p.volume.size(); ++c, ++q)
+      for (auto k = p.offsets[c]; k < p.offsets[c + 1]; ++k) {
+        const auto n = static_cast<std::size_t>(p.node[k]);
+        for (std::size_t i = 0; i < udim; ++i) y(n * udim + i, 0) += *q * p.bbar[k * udim + i];
+      }
+}
+
+void MixedPressure::bulk_weights(double* w) const {
+  for (const auto& p : parts_)
+    for (std::size_t c = 0; c < p.volume.size(); ++c) *w++ = p.volume[c] * p.kappa_excess;
+}
+
+void MixedPressure::bulk_schur_diagonal(double* s) const {
+  for (const auto& p : parts_)
+    for (std::size_t c = 0; c < p.volume.size(); ++c) *s++ = p.schur;
 }
 
 void MixedPressure::add_bulk_viscosity(const Vector& v_overlap, double linear, double quadratic,
@@ -308,6 +387,37 @@ std::vector<double> MixedPressure::overlap_pressures(const Vector& d_overlap) co
   overlap.doImport(owned, Tpetra::Import<>(maps.owned_nodes, maps.overlap_nodes), Tpetra::INSERT);
   const auto v = overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
   return std::vector<double>(v.data(), v.data() + v.extent(0));
+}
+
+}  // namespace efg
+
+namespace efg {
+
+bool MixedPressure::bulk_splittable() const {
+  bool excess = false;
+  for (const auto& p : parts_) {
+    if (p.finite) return false;
+    excess = excess || p.kappa_excess > 0;
+  }
+  return excess;
+}
+
+void MixedPressure::bulk_group_ids(long long* gid) const {
+  for (const auto& p : parts_)
+    for (std::size_t c = 0; c < p.volume.size(); ++c)
+      *gid++ = p.group_base + static_cast<long long>(p.groups[c]);
+}
+
+long long MixedPressure::bulk_group_id(std::size_t part, std::size_t group) const {
+  return parts_[static_cast<std::size_t>(index_[part])].group_base + static_cast<long long>(group);
+}
+
+double MixedPressure::bulk_excess(std::size_t part) const {
+  return index_[part] < 0 ? 0.0 : parts_[static_cast<std::size_t>(index_[part])].kappa_excess;
+}
+
+double MixedPressure::bulk_reference(std::size_t part) const {
+  return index_[part] < 0 ? 0.0 : parts_[static_cast<std::size_t>(index_[part])].kappa0;
 }
 
 }  // namespace efg

@@ -60,6 +60,32 @@ class MixedPressure {
   void add_bulk_viscosity(const Vector& v_overlap, double linear, double quadratic,
                           Vector& f_overlap) const;
 
+  /// The iterative path's split of the bulk stiffness (operators/BulkSplit.hpp): every part's
+  /// kappa = kappa_0 + kappa_1, kappa_0 = min(kappa, 5 mu / 3) (nu_0 = 1/4). True when some part
+  /// has kappa_1 > 0 and every mixed part is small strain (at finite strain the cells' tangent is
+  /// not V kappa b (x) b).
+  bool bulk_splittable() const;
+  bool has_bulk_excess() const;
+  /// kappa_1 and kappa_0 of model part p (0 when it is not mixed).
+  double bulk_excess(std::size_t part) const;
+  double bulk_reference(std::size_t part) const;
+  /// A global id of every cell of this rank (cell_count() of them, in order), and of pressure
+  /// cell `group` of model part `part`: the mixed parts' groups numbered one after another.
+  void bulk_group_ids(long long* gid) const;
+  long long bulk_group_id(std::size_t part, std::size_t group) const;
+  /// K += sum_c V_c kappa_1 b_c (x) b_c: the bulk stiffness above kappa_0, with the reference
+  /// configuration's cell gradients (the small-strain tangent; an approximation at finite strain).
+  void add_bulk_excess_tangent(FEMatrix& K) const;
+  /// The saddle point of the bulk excess (operators/BulkSplit.hpp), over this rank's cells of all
+  /// mixed parts in order: their count, q_c = V_c kappa_1 (b_c . x) (D_1 B x), y += sum_c q_c
+  /// b_c (B^T q), and the Schur complement's diagonal 1 + kappa_1 / M_0, M_0 = kappa_0 + 4 mu / 3.
+  std::size_t cell_count() const;
+  void bulk_excess_pressures(const Vector& x_overlap, double* q) const;
+  void add_cell_forces(const double* q, Vector& y_overlap) const;
+  void bulk_schur_diagonal(double* s) const;
+  /// V_c kappa_1 of every cell (D_1's diagonal).
+  void bulk_weights(double* w) const;
+
   /// Whether model part p carries a pressure, and its bulk modulus.
   bool mixed(std::size_t part) const { return index_[part] >= 0; }
   double bulk_modulus(std::size_t part) const;
@@ -80,6 +106,9 @@ class MixedPressure {
   struct Part {
     std::size_t model_part = 0;
     double kappa = 0;
+    double kappa0 = 0, kappa_excess = 0, schur = 1;  // kappa_0, kappa_1, 1 + kappa_1 / M_0
+    std::vector<std::size_t> groups;                 // each cell's pressure cell (group)
+    long long group_base = 0;            // global id of the part's group 0 (operators/BulkSplit)
     double density = 0, wave_speed = 0;  // rho, sqrt((kappa + 4 mu / 3) / rho); 0 without density
     std::vector<double> volume;          // V_c x thickness (2D)
     std::vector<double> length;  // l_c = V_c^(1/dim) (without thickness), the bulk viscosity's

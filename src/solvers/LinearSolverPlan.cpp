@@ -1,5 +1,8 @@
 #include "solvers/LinearSolverPlan.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace efg {
@@ -72,6 +75,10 @@ std::string LinearSolverPlan::describe() const {
       return krylov_name + " + MueLu smoothed aggregation with rigid-body modes";
     case Preconditioner::auxiliary:
       return krylov_name + " + MueLu smoothed aggregation on the background cells' finite elements";
+    case Preconditioner::bulk_split:
+      return krylov_name +
+             " + block triangular saddle point (mixed u-p bulk stiffness; MueLu smoothed "
+             "aggregation on the rest)";
     case Preconditioner::ifpack2:
       return krylov_name + " + Ifpack2 " + text(settings, "Prec Type", "RILUK");
     case Preconditioner::none:
@@ -101,7 +108,7 @@ LinearSolverPlan plan_linear_solver(const std::string& solver, std::int64_t dire
                                     const Teuchos::ParameterList& preconditioner,
                                     std::int64_t global_dofs, int dimension, int ranks,
                                     double poissons_ratio, const std::string& auxiliary_misfit,
-                                    const std::string& auxiliary_impossible) {
+                                    const std::string& auxiliary_impossible, bool bulk_split_fits) {
   Plan plan;
   const bool typed = preconditioner.isParameter("Type");
   const std::string type = typed ? preconditioner.get<std::string>("Type") : "";
@@ -139,6 +146,14 @@ LinearSolverPlan plan_linear_solver(const std::string& solver, std::int64_t dire
     plan.reason =
         "auto: " + std::to_string(global_dofs) + " dofs > " + std::to_string(limit) + why_limit;
   }
+  // Mixed u-p parts with nu above 1/4: the saddle point of their bulk stiffness above nu = 1/4's,
+  // multigrid on the rest (operators/BulkSplit.hpp; docs/mixed.md): GMRES on the Jacobian alone
+  // stalls as nu -> 1/2 (its near kernel is every divergence-free field). Multigrid on the
+  // relieved Jacobian itself, also in 3D.
+  if (!typed && plan.preconditioner == Plan::Preconditioner::multigrid && bulk_split_fits) {
+    plan.preconditioner = Plan::Preconditioner::bulk_split;
+    plan.reason += "; the mixed u-p parts' bulk stiffness above nu = 1/4 as a saddle point";
+  }
   // In 3D the iterative path's multigrid goes on the background cells' finite elements where
   // they fit (docs/implicit.md, "Auxiliary space": cantilever block at 30,927 dofs, subcells,
   // 46 iterations and a 3.0 s Newton phase against 21 and 5.7 s on the Jacobian, flat under
@@ -158,10 +173,28 @@ LinearSolverPlan plan_linear_solver(const std::string& solver, std::int64_t dire
   const std::string method = text(linear_solver, "Solver Type", "Block GMRES");
   plan.krylov.set("Solver Type", method);
   auto& chosen = plan.krylov.sublist("Solver Types").sublist(method);
-  chosen.set("Convergence Tolerance", 1e-10);
+  double tolerance = 1e-10;
+  if (plan.preconditioner == Plan::Preconditioner::bulk_split) {
+    // Not below the round-off floor of the condensed system, whose entries grow with kappa /
+    // mu = 2 (1 + nu) / (3 (1 - 2 nu)): measured 15 eps kappa / mu at nu = 0.499999 (the direct
+    // solver's too); below it each further outer iteration costs a whole inner solve and gains
+    // nothing. The inner solve goes below it by 10 sqrt(kappa / mu), the factor by which a
+    // residual of its pressure rows (scaled by D^1/2, operators/BulkSplit.hpp) reaches the
+    // condensed residual, so that one outer iteration suffices.
+    const double nu = std::min(poissons_ratio, 0.4999999);
+    const double kappa_over_mu = 2 * (1 + nu) / (3 * (1 - 2 * nu));
+    tolerance = std::max(tolerance, 100 * std::numeric_limits<double>::epsilon() * kappa_over_mu);
+    plan.saddle_tolerance = tolerance / (10 * std::sqrt(kappa_over_mu));
+  }
+  chosen.set("Convergence Tolerance", tolerance);
   plan.max_iterations = plan.preconditioner == Plan::Preconditioner::direct ? 20 : 500;
   chosen.set("Maximum Iterations", plan.max_iterations);
   if (method == "Block GMRES" || method == "Pseudo Block GMRES") chosen.set("Num Blocks", 100);
+  // The saddle point's inner GMRES is a preconditioner that changes from one application to the
+  // next (it stops at a tolerance): flexible GMRES keeps the preconditioned vectors, which also
+  // saves the application that forms the update.
+  if (method == "Block GMRES" && plan.preconditioner == Plan::Preconditioner::bulk_split)
+    chosen.set("Flexible Gmres", true);
   chosen.set("Verbosity", 1);  // errors only
   for (auto it = linear_solver.begin(); it != linear_solver.end(); ++it)
     if (linear_solver.name(it) != "Solver Type")
@@ -174,6 +207,7 @@ LinearSolverPlan plan_linear_solver(const std::string& solver, std::int64_t dire
       plan.settings.set("solver", "MUMPS");
       break;
     case Plan::Preconditioner::multigrid:
+    case Plan::Preconditioner::bulk_split:
       plan.settings = multigrid_defaults(dimension);
       break;
     case Plan::Preconditioner::auxiliary:
@@ -193,7 +227,8 @@ LinearSolverPlan plan_linear_solver(const std::string& solver, std::int64_t dire
            preconditioner.get<std::string>(key) != plan.settings.get<std::string>(key);
   };
   if (plan.preconditioner == Plan::Preconditioner::multigrid ||
-      plan.preconditioner == Plan::Preconditioner::auxiliary) {
+      plan.preconditioner == Plan::Preconditioner::auxiliary ||
+      plan.preconditioner == Plan::Preconditioner::bulk_split) {
     if (replaced("smoother: type")) plan.settings.remove("smoother: params");
     if (replaced("coarse: type")) plan.settings.remove("coarse: params");
   }

@@ -23,13 +23,15 @@
 namespace efg {
 
 struct LinearSolverPlan {
-  enum class Preconditioner { direct, multigrid, auxiliary, ifpack2, none };
+  enum class Preconditioner { direct, multigrid, auxiliary, bulk_split, ifpack2, none };
   Preconditioner preconditioner = Preconditioner::direct;
   std::string reason;               ///< why this one (for the log)
   bool automatic = false;           ///< chosen by `solver: auto` (not named by the stage)
   Teuchos::ParameterList krylov;    ///< the Belos list for the chosen method
   Teuchos::ParameterList settings;  ///< the preconditioner's own list (MueLu, Ifpack2, Amesos2)
   int max_iterations = 0;
+  /// bulk_split: the inner saddle-point GMRES's tolerance (relative).
+  double saddle_tolerance = 0;
 
   /// A short name for messages: "direct (MUMPS LU)", "GMRES + MueLu SA-AMG", ...
   std::string describe() const;
@@ -50,13 +52,15 @@ std::int64_t default_direct_limit(int dimension, bool nearly_incompressible = fa
 /// kNearlyIncompressible on). `auxiliary_misfit`: empty when the auxiliary space fits the model
 /// (the iterative path then uses it in 3D), else why not; `auxiliary_impossible`: empty when it
 /// can stand in at all (a stage's `Type: auxiliary` falls back to multigrid on the Jacobian
-/// otherwise).
+/// otherwise). `bulk_split_fits`: a mixed u-p part's bulk modulus exceeds nu = 1/4's, so the
+/// iterative path splits it off (operators/BulkSplit.hpp) unless a `Type` is named.
 LinearSolverPlan plan_linear_solver(const std::string& solver, std::int64_t direct_limit,
                                     const Teuchos::ParameterList& linear_solver,
                                     const Teuchos::ParameterList& preconditioner,
                                     std::int64_t global_dofs, int dimension, int ranks,
                                     double poissons_ratio = 0.0,
                                     const std::string& auxiliary_misfit = "no model",
-                                    const std::string& auxiliary_impossible = "no model");
+                                    const std::string& auxiliary_impossible = "no model",
+                                    bool bulk_split_fits = false);
 
 }  // namespace efg

@@ -9,10 +9,12 @@
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_MultiVector.hpp>
 #include <Tpetra_Operator.hpp>
+#include <Tpetra_Vector.hpp>
 
 #include <functional>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "solvers/LinearSolverPlan.hpp"
 
@@ -53,12 +55,27 @@ class MatrixPreconditioner : public Tpetra::Operator<> {
 using AuxiliaryMatrix =
     std::function<Teuchos::RCP<const Tpetra::CrsMatrix<>>(const Tpetra::CrsMatrix<>& K)>;
 
+/// The saddle point of the mixed u-p parts' bulk excess (operators/BulkSplit.hpp): the Jacobian
+/// relieved of it (A), this rank's cells, q = D_1 B x, y = C^T q, the Schur diagonal, D_1's
+/// diagonal (weights), the collocation rows and their scale in A, the inner tolerance.
+struct BulkSplit {
+  AuxiliaryMatrix relieved;
+  std::size_t cells = 0;
+  std::function<void(const Tpetra::Vector<>& x, double* q)> pressures;
+  std::function<void(const double* q, Tpetra::Vector<>& y)> forces;
+  std::vector<double> schur, weights;
+  std::vector<int> constrained_rows;  ///< collocation rows (owned, local), scaled in A by
+  double row_factor = 1;              ///< row_factor
+  double tolerance = 1e-13;           ///< of the inner GMRES, relative
+};
+
 /// The preconditioner of `plan`; `near_null_space` (the rigid-body modes) is used by multigrid,
-/// `auxiliary` by the auxiliary-space multigrid.
+/// `auxiliary` by the auxiliary-space multigrid, `bulk` by the bulk split.
 Teuchos::RCP<MatrixPreconditioner> make_matrix_preconditioner(
     const LinearSolverPlan& plan, const Teuchos::RCP<const Tpetra::Map<>>& dofs,
     const Teuchos::RCP<Tpetra::MultiVector<>>& near_null_space,
-    const Teuchos::RCP<Tpetra::MultiVector<>>& coordinates, const AuxiliaryMatrix& auxiliary = {});
+    const Teuchos::RCP<Tpetra::MultiVector<>>& coordinates, const AuxiliaryMatrix& auxiliary = {},
+    const BulkSplit& bulk = {});
 
 Teuchos::RCP<MatrixPreconditioner> make_direct_preconditioner(
     const Teuchos::ParameterList& settings);
@@ -72,6 +89,12 @@ Teuchos::RCP<MatrixPreconditioner> make_auxiliary_preconditioner(
     const Teuchos::ParameterList& settings,
     const Teuchos::RCP<Tpetra::MultiVector<>>& near_null_space,
     const Teuchos::RCP<Tpetra::MultiVector<>>& coordinates, AuxiliaryMatrix auxiliary);
+/// K^-1 by GMRES on the saddle point of the bulk excess, block upper triangular preconditioned
+/// with one multigrid cycle on A (solvers/BulkSplitPreconditioner.cpp).
+Teuchos::RCP<MatrixPreconditioner> make_bulk_split_preconditioner(
+    const Teuchos::ParameterList& settings,
+    const Teuchos::RCP<Tpetra::MultiVector<>>& near_null_space,
+    const Teuchos::RCP<Tpetra::MultiVector<>>& coordinates, BulkSplit bulk);
 Teuchos::RCP<MatrixPreconditioner> make_ifpack2_preconditioner(
     const Teuchos::ParameterList& settings);
 

@@ -4,6 +4,8 @@
 // 33,516 dofs: 500 GMRES iterations, exit 3; direct: solved in 53 s).
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "solvers/LinearSolverPlan.hpp"
 
 namespace efg {
@@ -68,6 +70,49 @@ TEST(LinearSolverPlan, TheIterativePathUsesTheAuxiliarySpaceIn3DWhereItFits) {
   EXPECT_EQ(refused.preconditioner, P::multigrid);
   EXPECT_EQ(refused.settings.get<std::string>("smoother: type"), "RILUK");
   EXPECT_NE(refused.reason.find("nitsche"), std::string::npos) << refused.reason;
+}
+
+}  // namespace
+}  // namespace efg
+
+namespace efg {
+namespace {
+
+// Mixed u-p parts above nu = 1/4 (operators/BulkSplit.hpp): the iterative path goes through the
+// saddle point of their bulk stiffness, in 2D and 3D, unless a preconditioner is named; its outer
+// tolerance stays above the round-off floor of the condensed system (100 eps kappa / mu, by hand:
+// kappa / mu = 2 (1 + nu) / (3 (1 - 2 nu)) = 499,999.33 at nu = 0.499999) and the inner one
+// goes below it by 10 sqrt(kappa / mu).
+TEST(LinearSolverPlan, MixedPartsTakeTheSaddlePointOnTheIterativePath) {
+  const auto plan = [](const std::string& solver, int dim, double nu,
+                       const Teuchos::ParameterList& preconditioner = Teuchos::ParameterList()) {
+    return plan_linear_solver(solver, 0, Teuchos::ParameterList(), preconditioner, 1000, dim, 1, nu,
+                              "", "", true);
+  };
+  for (int dim : {2, 3}) {
+    const auto split = plan("iterative", dim, 0.499999);
+    EXPECT_EQ(split.preconditioner, P::bulk_split) << split.reason;
+    const double kappa_over_mu = 2 * 1.499999 / (3 * 2e-6);
+    const double tolerance = split.krylov.sublist("Solver Types")
+                                 .sublist("Block GMRES")
+                                 .get<double>("Convergence Tolerance");
+    EXPECT_NEAR(tolerance, 100 * 2.220446049250313e-16 * kappa_over_mu, 1e-8 * tolerance);
+    EXPECT_NEAR(split.saddle_tolerance, tolerance / (10 * std::sqrt(kappa_over_mu)),
+                1e-8 * split.saddle_tolerance);
+    EXPECT_TRUE(
+        split.krylov.sublist("Solver Types").sublist("Block GMRES").get<bool>("Flexible Gmres"));
+  }
+  // Below the floor the Newton's 1e-10 stands.
+  const auto compressible = plan("iterative", 2, 0.3);
+  EXPECT_EQ(compressible.krylov.sublist("Solver Types")
+                .sublist("Block GMRES")
+                .get<double>("Convergence Tolerance"),
+            1e-10);
+  EXPECT_EQ(plan("direct", 2, 0.499999).preconditioner, P::direct);
+  EXPECT_EQ(plan("auto", 2, 0.499999).preconditioner, P::direct);  // 1,000 dofs: factored
+  Teuchos::ParameterList named;
+  named.set("Type", std::string("MueLu"));
+  EXPECT_EQ(plan("iterative", 2, 0.499999, named).preconditioner, P::multigrid);
 }
 
 }  // namespace

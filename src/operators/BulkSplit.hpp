@@ -1,0 +1,65 @@
+// The mixed u-p parts' bulk stiffness as a saddle point for the iterative solver
+// (solvers/BulkSplitPreconditioner.cpp). At small strain the condensed Jacobian of a nearly
+// incompressible part is linear in its bulk modulus kappa = kappa_0 + kappa_1:
+//   K = A + C^T D_1 B,   D_1 = diag(V_c kappa_1),
+// with A the Jacobian at kappa_0 = 5 mu / 3 (nu_0 = 1/4: compressible, where multigrid
+// converges), B the cells' average dilatations (rows b_c, theta_c = b_c . d) and C^T q the
+// forces of cell pressures q_c / V_c: the cells' own (b_c, zero in the rows the transformation
+// method replaces) and the transformation conditions' boundary tractions
+// (EssentialConditionsMixed.cpp), which carry kappa as well. K du = f is the first row of
+//   [ A          C^T D^1/2 ] [du]   [f]
+//   [ D^1/2 B    -I        ] [p ] = [0],      p = D^1/2 B du,
+// whose Schur complement I + D^1/2 B A^-1 C^T D^1/2 is taken as diag(1 + kappa_1 / M_0),
+// M_0 = kappa_0 + 4 mu / 3 (a cell's dilatation under its own pressure); for an inf-sup stable
+// pairing this is spectrally equivalent to the true one whatever kappa_1 (Brezzi & Fortin 1991;
+// for block preconditioners of elasticity: Klawonn 1998), which is the point: the iteration count
+// does not grow as nu -> 1/2. The scaling by D^1/2 keeps a residual of the pressure rows from
+// reaching K's multiplied by kappa (unscaled) or the matrix's conditioning (scaled by D).
+// The collocation rows of A are scaled by the modulus at kappa_0 (K's follow 3 kappa).
+#pragma once
+
+#include <Tpetra_CrsMatrix.hpp>
+
+#include <string>
+#include <vector>
+
+#include "operators/EssentialConditions.hpp"
+#include "operators/ModelOperators.hpp"
+
+namespace efg {
+
+/// Why the split does not apply to this model ("" when it does): no mixed part with kappa above
+/// kappa_0, finite strain, or Nitsche/penalty conditions on a mixed part.
+std::string bulk_split_misfit(const ModelOperators& ops, const EssentialConditions& conditions);
+
+/// The blocks of the saddle point on this rank's pressure cells (MixedPressure's order).
+class BulkCoupling {
+ public:
+  BulkCoupling(const ModelOperators& ops, const EssentialConditions& conditions);
+  std::size_t cells() const { return cells_; }
+  /// q = D_1 B x (owned x).
+  void pressures(const Vector& x_owned, double* q) const;
+  /// y = C^T q (owned y; zero on the collocation rows).
+  void forces(const double* q, Vector& y_owned) const;
+  /// A = K - C^T D_1 B, its collocation rows scaled by row_factor(); `scratch` is a matrix on
+  /// K's graph (the problem's create_matrix).
+  Teuchos::RCP<const Tpetra::CrsMatrix<>> relieved(const Tpetra::CrsMatrix<>& K,
+                                                   FEMatrix& scratch) const;
+  double row_factor() const { return row_factor_; }
+  const std::vector<int>& constrained_rows() const { return constrained_; }
+
+ private:
+  const ModelOperators& ops_;
+  std::vector<int> constrained_;
+  std::vector<EssentialConditions::CellPressureTraction> tractions_;
+  std::vector<int> traction_cell_;      // each traction's entry in the overlap pressures
+  std::vector<double> traction_kappa_;  // kappa_1 of its part
+  std::size_t cells_ = 0;
+  bool any_tractions_ = false;  // on some rank
+  double row_factor_ = 1;
+  Teuchos::RCP<const Tpetra::Map<>> owned_cells_, overlap_cells_;
+  Teuchos::RCP<Tpetra::Import<>> import_;
+  mutable Vector x_overlap_, y_overlap_;
+};
+
+}  // namespace efg
