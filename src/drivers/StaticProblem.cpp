@@ -232,7 +232,7 @@ BulkSplit StaticProblem::bulk_split() {
       bulk_scratch_ = create_matrix();
       bulk_scratch_graph_ = graph_;
     }
-    return coupling->relieved(K, *bulk_scratch_);
+    return coupling->relieved(K, *bulk_scratch_, d_overlap_);  // the Jacobian's state
   };
   split.cells = coupling->cells();
   split.pressures = [coupling](const Vector& x, double* q) { coupling->pressures(x, q); };

@@ -37,16 +37,24 @@ BoundaryCellPressure attach_cell_pressure(const CellAverages& row, const PartDis
                                           const MaterialLaw& law, std::vector<int>& nodes,
                                           std::vector<double>& phi, std::vector<double>& grad);
 
-/// Adds the volumetric traction to Pn (N = weighted normal, n dA) and its derivative to
-/// S[(a Dim + k) Dim + i] at generalized displacements `d` (a host view on the overlap dofs).
+/// The cell's kinematics at generalized displacements `d` (a host view on the overlap dofs):
+/// its measure m (theta = tr H, or ln J), m_f (ln J at finite strain, else 0), F^-T N and
+/// g_a = F^-T b_a (dim per entry of `nodes`); small strain: F^-T = I.
+template <int Dim>
+struct CellTractionState {
+  double m = 0, m_f = 0, FN[Dim] = {};
+  std::vector<double> g;
+};
+
 template <int Dim, class View>
-void add_cell_pressure_traction(const BoundaryCellPressure& c, const std::vector<int>& nodes,
-                                const View& d, const double* N, double* Pn,
-                                std::vector<double>& S) {
+CellTractionState<Dim> cell_traction_state(const BoundaryCellPressure& c,
+                                           const std::vector<int>& nodes, const View& d,
+                                           const double* N) {
   const std::size_t n = nodes.size();
+  CellTractionState<Dim> st;
   // H first: theta = tr H directly (1 + theta - 1 would lose a nearly incompressible theta's
   // digits).
-  double H[Dim][Dim] = {}, F[Dim][Dim], Finv[Dim][Dim] = {}, m = 0, m_f = 0;
+  double H[Dim][Dim] = {}, F[Dim][Dim], Finv[Dim][Dim] = {};
   for (std::size_t a = 0; a < n; ++a)
     for (int i = 0; i < Dim; ++i)
       for (int j = 0; j < Dim; ++j)
@@ -59,30 +67,38 @@ void add_cell_pressure_traction(const BoundaryCellPressure& c, const std::vector
     const double J = 1.0 + j_minus_1;
     if (!(J > 0)) throw NumericalError("det F <= 0 in the mixed u-p cell of a boundary point");
     physics::inverse<Dim>(F, J, Finv);
-    m = m_f = std::log1p(j_minus_1);
+    st.m = st.m_f = std::log1p(j_minus_1);
   } else {
     for (int i = 0; i < Dim; ++i) {
-      m += H[i][i];
+      st.m += H[i][i];
       Finv[i][i] = 1.0;
     }
   }
-  double FN[Dim] = {};
-  for (int k = 0; k < Dim; ++k) {
-    for (int l = 0; l < Dim; ++l) FN[k] += Finv[l][k] * N[l];
-    Pn[k] += c.kappa * m * FN[k];
-  }
-  std::vector<double> g(n * Dim, 0.0);  // (F^-T b_a)_i
+  for (int k = 0; k < Dim; ++k)
+    for (int l = 0; l < Dim; ++l) st.FN[k] += Finv[l][k] * N[l];
+  st.g.assign(n * Dim, 0.0);  // (F^-T b_a)_i
   for (std::size_t a = 0; a < n; ++a)
     for (int i = 0; i < Dim; ++i)
       for (int l = 0; l < Dim; ++l)
-        g[a * Dim + static_cast<std::size_t>(i)] +=
+        st.g[a * Dim + static_cast<std::size_t>(i)] +=
             Finv[l][i] * c.bbar[a * Dim + static_cast<std::size_t>(l)];
-  for (std::size_t a = 0; a < n; ++a)
+  return st;
+}
+
+/// Adds the volumetric traction to Pn (N = weighted normal, n dA) and its derivative to
+/// S[(a Dim + k) Dim + i] at generalized displacements `d` (a host view on the overlap dofs).
+template <int Dim, class View>
+void add_cell_pressure_traction(const BoundaryCellPressure& c, const std::vector<int>& nodes,
+                                const View& d, const double* N, double* Pn,
+                                std::vector<double>& S) {
+  const auto st = cell_traction_state<Dim>(c, nodes, d, N);
+  for (int k = 0; k < Dim; ++k) Pn[k] += c.kappa * st.m * st.FN[k];
+  for (std::size_t a = 0; a < nodes.size(); ++a)
     for (int k = 0; k < Dim; ++k)
       for (int i = 0; i < Dim; ++i)
         S[(a * Dim + static_cast<std::size_t>(k)) * Dim + static_cast<std::size_t>(i)] +=
-            c.kappa * (g[a * Dim + static_cast<std::size_t>(i)] * FN[k] -
-                       m_f * FN[i] * g[a * Dim + static_cast<std::size_t>(k)]);
+            c.kappa * (st.g[a * Dim + static_cast<std::size_t>(i)] * st.FN[k] -
+                       st.m_f * st.FN[i] * st.g[a * Dim + static_cast<std::size_t>(k)]);
 }
 
 }  // namespace efg

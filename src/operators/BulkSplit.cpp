@@ -13,22 +13,22 @@ namespace efg {
 std::string bulk_split_misfit(const ModelOperators& ops, const EssentialConditions& conditions) {
   const auto* mixed = ops.mixed();
   if (mixed == nullptr || !mixed->has_bulk_excess()) return "no mixed u-p part with nu above 1/4";
-  if (!mixed->bulk_splittable()) return "a mixed u-p part at finite strain";
   bool weak = false;
-  conditions.cell_pressure_tractions(weak);
+  conditions.cell_pressure_tractions(Vector(ops.model().maps.overlap_dofs), weak);
   if (weak) return "a Nitsche or penalty condition on a mixed u-p part";
   return "";
 }
 
 BulkCoupling::BulkCoupling(const ModelOperators& ops, const EssentialConditions& conditions)
     : ops_(ops),
+      conditions_(conditions),
       constrained_(conditions.constrained_rows()),
       x_overlap_(ops.model().maps.overlap_dofs),
       y_overlap_(ops.model().maps.overlap_dofs) {
   const auto& mixed = *ops.mixed();
   const auto& model = ops.model();
   bool weak = false;
-  tractions_ = conditions.cell_pressure_tractions(weak);
+  tractions_ = conditions.cell_pressure_tractions(x_overlap_, weak);  // the groups: any state
   cells_ = mixed.cell_count();
   std::vector<long long> owned(cells_);
   mixed.bulk_group_ids(owned.data());
@@ -107,7 +107,11 @@ void BulkCoupling::forces(const double* q, Vector& y_owned) const {
 }
 
 Teuchos::RCP<const Tpetra::CrsMatrix<>> BulkCoupling::relieved(const Tpetra::CrsMatrix<>& K,
-                                                               FEMatrix& scratch) const {
+                                                               FEMatrix& scratch,
+                                                               const Vector& d_overlap) {
+  ops_.mixed()->bulk_state(d_overlap);
+  bool weak = false;
+  tractions_ = conditions_.cell_pressure_tractions(d_overlap, weak);  // same points, same order
   scratch.beginAssembly();
   scratch.setAllToScalar(0.0);
   ops_.mixed()->add_bulk_excess_tangent(scratch);

@@ -16,6 +16,9 @@
 // does not grow as nu -> 1/2. The scaling by D^1/2 keeps a residual of the pressure rows from
 // reaching K's multiplied by kappa (unscaled) or the matrix's conditioning (scaled by D).
 // The collocation rows of A are scaled by the modulus at kappa_0 (K's follow 3 kappa).
+// Finite strain (total Lagrangian neo-Hookean cells, U = kappa/2 (ln J)^2): the cells' tangent
+// V kappa (g (x) g - ln J_c g_Ij g_Ji), g_c = F_c^-T b_c, splits the same way with B's rows g_c
+// at the Jacobian's state; the second term, kappa ln J = the pressure's size, stays in A.
 #pragma once
 
 #include <Tpetra_CrsMatrix.hpp>
@@ -29,7 +32,7 @@
 namespace efg {
 
 /// Why the split does not apply to this model ("" when it does): no mixed part with kappa above
-/// kappa_0, finite strain, or Nitsche/penalty conditions on a mixed part.
+/// kappa_0, or Nitsche/penalty conditions on a mixed part.
 std::string bulk_split_misfit(const ModelOperators& ops, const EssentialConditions& conditions);
 
 /// The blocks of the saddle point on this rank's pressure cells (MixedPressure's order).
@@ -41,15 +44,17 @@ class BulkCoupling {
   void pressures(const Vector& x_owned, double* q) const;
   /// y = C^T q (owned y; zero on the collocation rows).
   void forces(const double* q, Vector& y_owned) const;
-  /// A = K - C^T D_1 B, its collocation rows scaled by row_factor(); `scratch` is a matrix on
-  /// K's graph (the problem's create_matrix).
-  Teuchos::RCP<const Tpetra::CrsMatrix<>> relieved(const Tpetra::CrsMatrix<>& K,
-                                                   FEMatrix& scratch) const;
+  /// A = K - C^T D_1 B at the state d (K's), its collocation rows scaled by row_factor();
+  /// `scratch` is a matrix on K's graph (the problem's create_matrix). Sets the state of
+  /// pressures() and forces() (finite strain: g_c = F_c^-T b_c and F^-T N at d).
+  Teuchos::RCP<const Tpetra::CrsMatrix<>> relieved(const Tpetra::CrsMatrix<>& K, FEMatrix& scratch,
+                                                   const Vector& d_overlap);
   double row_factor() const { return row_factor_; }
   const std::vector<int>& constrained_rows() const { return constrained_; }
 
  private:
   const ModelOperators& ops_;
+  const EssentialConditions& conditions_;
   std::vector<int> constrained_;
   std::vector<EssentialConditions::CellPressureTraction> tractions_;
   std::vector<int> traction_cell_;      // each traction's entry in the overlap pressures

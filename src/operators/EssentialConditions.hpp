@@ -82,8 +82,8 @@ class EssentialConditions {
   /// The modulus the collocation rows are scaled by (the largest E and 3 kappa of the model).
   double row_modulus() const { return row_modulus_; }
   /// The cell pressures in the boundary traction of the transformation conditions' points on
-  /// mixed u-p parts, linearized: row (a, i) of the residual gains coefficient x p_c, p_c the
-  /// pressure of the point's pressure cell (operators/BulkSplit: these rows couple to the split
+  /// mixed u-p parts, linearized at d: row (a, i) of the residual gains coefficient x p_c, p_c
+  /// the pressure of the point's pressure cell (its rank-one part, columns x b) (operators/BulkSplit: these rows couple to the split
   /// bulk excess like the cells' own). `weak`: whether a Nitsche or penalty point has a cell
   /// pressure (its terms are not of this form; EssentialConditionsMixed.cpp).
   struct CellPressureTraction {
@@ -94,7 +94,8 @@ class EssentialConditions {
     std::vector<int> columns;  ///< overlap dofs of the cell's b (theta_c = sum b x d)
     std::vector<double> b;
   };
-  std::vector<CellPressureTraction> cell_pressure_tractions(bool& weak) const;
+  std::vector<CellPressureTraction> cell_pressure_tractions(const Vector& d_overlap,
+                                                            bool& weak) const;
 
   /// Path-dependent parts: the boundary points keep a plastic history of their own (the
   /// traction term needs the stress there); the last evaluation's state becomes the committed one

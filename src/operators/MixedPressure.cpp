@@ -39,6 +39,14 @@ struct CellState {
   std::vector<double> g;
 };
 
+// The overlap dofs of cell c's particles, dim per particle (its tangent's columns).
+template <class Part>
+void cell_columns(const Part& p, std::size_t c, int dim, std::vector<int>& cols) {
+  cols.clear();
+  for (auto k = p.offsets[c]; k < p.offsets[c + 1]; ++k)
+    for (int j = 0; j < dim; ++j) cols.push_back(p.node[k] * dim + j);
+}
+
 template <class Part, class View>
 bool cell_state(const Part& p, std::size_t c, const View& u, int dim, CellState& st) {
   const auto udim = static_cast<std::size_t>(dim);
@@ -196,10 +204,7 @@ void MixedPressure::add_tangent(const Vector& d_overlap, FEMatrix& K) const {
       const double s = p.volume[c] * p.kappa;
       // d(m g_Ii)/d d_Jj = g_Ii g_Jj - m g_Ij g_Ji (finite strain: d F^-T / dF; small: 0).
       const double m = p.finite ? st.measure : 0.0;
-      cols.clear();
-      for (auto k = first; k < last; ++k)
-        for (std::size_t j = 0; j < udim; ++j)
-          cols.push_back(p.node[k] * dim_ + static_cast<int>(j));
+      cell_columns(p, c, dim_, cols);
       vals.resize(cols.size());
       for (auto k = first; k < last; ++k)
         for (std::size_t i = 0; i < udim; ++i) {
@@ -229,18 +234,16 @@ void MixedPressure::add_bulk_excess_tangent(FEMatrix& K) const {
   std::vector<double> vals;
   for (const auto& p : parts_) {
     if (!(p.kappa_excess > 0)) continue;
+    const auto& g = excess_rows(p);
     for (std::size_t c = 0; c < p.volume.size(); ++c) {
       const auto first = p.offsets[c], last = p.offsets[c + 1];
       const double s = p.volume[c] * p.kappa_excess;
-      cols.clear();
-      for (auto k = first; k < last; ++k)
-        for (std::size_t j = 0; j < udim; ++j)
-          cols.push_back(p.node[k] * dim_ + static_cast<int>(j));
+      cell_columns(p, c, dim_, cols);
       vals.resize(cols.size());
       for (auto k = first; k < last; ++k)
         for (std::size_t i = 0; i < udim; ++i) {
           for (std::size_t e = 0; e < cols.size(); ++e)
-            vals[e] = s * p.bbar[k * udim + i] * p.bbar[first * udim + e];
+            vals[e] = s * g[k * udim + i] * g[first * udim + e];
           local.sumIntoValues(p.node[k] * dim_ + static_cast<int>(i), cols.data(),
                               static_cast<int>(cols.size()), vals.data(), true, false);
         }
@@ -256,20 +259,45 @@ std::size_t MixedPressure::cell_count() const {
 
 void MixedPressure::bulk_excess_pressures(const Vector& x_overlap, double* q) const {
   const auto x = x_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
-  for (const auto& p : parts_)
-    for (std::size_t c = 0; c < p.volume.size(); ++c)
-      *q++ = p.volume[c] * p.kappa_excess * cell_dilatation(p, c, x, dim_);
+  const auto udim = static_cast<std::size_t>(dim_);
+  for (const auto& p : parts_) {
+    const auto& g = excess_rows(p);
+    for (std::size_t c = 0; c < p.volume.size(); ++c) {
+      double theta = 0;  // the linearized measure: b_c . x (small strain), F_c^-T b_c . x
+      for (auto k = p.offsets[c]; k < p.offsets[c + 1]; ++k)
+        for (std::size_t i = 0; i < udim; ++i)
+          theta += g[k * udim + i] * x(static_cast<std::size_t>(p.node[k]) * udim + i, 0);
+      *q++ = p.volume[c] * p.kappa_excess * theta;
+    }
+  }
 }
 
 void MixedPressure::add_cell_forces(const double* q, Vector& y_overlap) const {
   auto y = y_overlap.getLocalViewHost(Tpetra::Access::ReadWrite);
   const auto udim = static_cast<std::size_t>(dim_);
-  for (const auto& p : parts_)
+  for (const auto& p : parts_) {
+    const auto& g = excess_rows(p);
     for (std::size_t c = 0; c < p.volume.size(); ++c, ++q)
       for (auto k = p.offsets[c]; k < p.offsets[c + 1]; ++k) {
         const auto n = static_cast<std::size_t>(p.node[k]);
-        for (std::size_t i = 0; i < udim; ++i) y(n * udim + i, 0) += *q * p.bbar[k * udim + i];
+        for (std::size_t i = 0; i < udim; ++i) y(n * udim + i, 0) += *q * g[k * udim + i];
       }
+  }
+}
+
+void MixedPressure::bulk_state(const Vector& d_overlap) const {
+  const auto u = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
+  const auto udim = static_cast<std::size_t>(dim_);
+  CellState st;
+  for (const auto& p : parts_) {
+    if (!p.finite) continue;  // small strain: b_c itself
+    p.excess_g.resize(p.bbar.size());
+    for (std::size_t c = 0; c < p.volume.size(); ++c) {
+      if (!cell_state(p, c, u, dim_, st)) report_inverted(p, c);
+      std::copy(st.g.begin(), st.g.end(),
+                p.excess_g.begin() + static_cast<std::ptrdiff_t>(p.offsets[c] * udim));
+    }
+  }
 }
 
 void MixedPressure::bulk_weights(double* w) const {
@@ -392,15 +420,6 @@ std::vector<double> MixedPressure::overlap_pressures(const Vector& d_overlap) co
 }  // namespace efg
 
 namespace efg {
-
-bool MixedPressure::bulk_splittable() const {
-  bool excess = false;
-  for (const auto& p : parts_) {
-    if (p.finite) return false;
-    excess = excess || p.kappa_excess > 0;
-  }
-  return excess;
-}
 
 void MixedPressure::bulk_group_ids(long long* gid) const {
   for (const auto& p : parts_)

@@ -62,9 +62,7 @@ class MixedPressure {
 
   /// The iterative path's split of the bulk stiffness (operators/BulkSplit.hpp): every part's
   /// kappa = kappa_0 + kappa_1, kappa_0 = min(kappa, 5 mu / 3) (nu_0 = 1/4). True when some part
-  /// has kappa_1 > 0 and every mixed part is small strain (at finite strain the cells' tangent is
-  /// not V kappa b (x) b).
-  bool bulk_splittable() const;
+  /// has kappa_1 > 0.
   bool has_bulk_excess() const;
   /// kappa_1 and kappa_0 of model part p (0 when it is not mixed).
   double bulk_excess(std::size_t part) const;
@@ -73,12 +71,15 @@ class MixedPressure {
   /// cell `group` of model part `part`: the mixed parts' groups numbered one after another.
   void bulk_group_ids(long long* gid) const;
   long long bulk_group_id(std::size_t part, std::size_t group) const;
-  /// K += sum_c V_c kappa_1 b_c (x) b_c: the bulk stiffness above kappa_0, with the reference
-  /// configuration's cell gradients (the small-strain tangent; an approximation at finite strain).
+  /// The state of the split's rows g_c: F_c^-T b_c at d (finite strain; small strain: b_c). The
+  /// cells' tangent is V kappa (g (x) g - ln J_c g_Ij g_Ji); its rank-one part above kappa_0 is
+  /// split off, the other term (of the size of the pressure) stays in A. Before the four below.
+  void bulk_state(const Vector& d_overlap) const;
+  /// K += sum_c V_c kappa_1 g_c (x) g_c: the bulk stiffness above kappa_0.
   void add_bulk_excess_tangent(FEMatrix& K) const;
   /// The saddle point of the bulk excess (operators/BulkSplit.hpp), over this rank's cells of all
-  /// mixed parts in order: their count, q_c = V_c kappa_1 (b_c . x) (D_1 B x), y += sum_c q_c
-  /// b_c (B^T q), and the Schur complement's diagonal 1 + kappa_1 / M_0, M_0 = kappa_0 + 4 mu / 3.
+  /// mixed parts in order: their count, q_c = V_c kappa_1 (g_c . x) (D_1 B x), y += sum_c q_c
+  /// g_c (B^T q), and the Schur complement's diagonal 1 + kappa_1 / M_0, M_0 = kappa_0 + 4 mu / 3.
   std::size_t cell_count() const;
   void bulk_excess_pressures(const Vector& x_overlap, double* q) const;
   void add_cell_forces(const double* q, Vector& y_overlap) const;
@@ -108,9 +109,10 @@ class MixedPressure {
     double kappa = 0;
     double kappa0 = 0, kappa_excess = 0, schur = 1;  // kappa_0, kappa_1, 1 + kappa_1 / M_0
     std::vector<std::size_t> groups;                 // each cell's pressure cell (group)
-    long long group_base = 0;            // global id of the part's group 0 (operators/BulkSplit)
-    double density = 0, wave_speed = 0;  // rho, sqrt((kappa + 4 mu / 3) / rho); 0 without density
-    std::vector<double> volume;          // V_c x thickness (2D)
+    long long group_base = 0;              // global id of the part's group 0 (operators/BulkSplit)
+    mutable std::vector<double> excess_g;  // g_c at the split's state (finite strain), as bbar
+    double density = 0, wave_speed = 0;    // rho, sqrt((kappa + 4 mu / 3) / rho); 0 without density
+    std::vector<double> volume;            // V_c x thickness (2D)
     std::vector<double> length;  // l_c = V_c^(1/dim) (without thickness), the bulk viscosity's
     std::vector<std::size_t> offsets;
     std::vector<int> node;     // overlap node of each entry
@@ -118,6 +120,9 @@ class MixedPressure {
     std::vector<std::size_t> cell;
     bool finite = false;  // total Lagrangian: U(J) of the cell's smoothed F
   };
+  const std::vector<double>& excess_rows(const Part& p) const {
+    return p.finite ? p.excess_g : p.bbar;
+  }
   [[noreturn]] void report_inverted(const Part& p, std::size_t c) const;
   const Model& model_;
   int dim_;
