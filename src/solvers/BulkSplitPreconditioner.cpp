@@ -66,7 +66,7 @@ class SaddleOperator : public OP {
     std::vector<double> q, Bq(b_.n_cells), sq(b_.n_cells);
     for (std::size_t j = 0; j < X.getNumVectors(); ++j) {
       b_.split(X, j, u, q);
-      // sqrt-scaled: [A, E^T D^1/2; D^1/2 B, -I] (the condensed residual is r_u + E^T D^1/2 r_p)
+      // sqrt-scaled: [A, C^T D^1/2; D^1/2 B, -I] (the condensed residual is r_u + C^T D^1/2 r_p)
       A_->apply(u, Au);
       for (std::size_t c = 0; c < b_.n_cells; ++c) sq[c] = std::sqrt(bulk_.weights[c]) * q[c];
       bulk_.forces(sq.data(), f);
@@ -98,7 +98,7 @@ class TriangularPreconditioner : public OP {
     std::vector<double> q, zq(b_.n_cells), sq(b_.n_cells);
     for (std::size_t j = 0; j < X.getNumVectors(); ++j) {
       b_.split(X, j, u, q);
-      // upper triangular: z_q = -S^-1 x_q, S = 1 + kappa_1 / M_0; z_u = A^-1 (x_u - E^T D^1/2 z_q)
+      // upper triangular: z_q = -S^-1 x_q, S = 1 + kappa_1 / M_0; z_u = A^-1 (x_u - C^T D^1/2 z_q)
       for (std::size_t c = 0; c < b_.n_cells; ++c) {
         const double w = bulk_.weights[c];
         zq[c] = w > 0 ? -q[c] / bulk_.schur[c] : -q[c];
