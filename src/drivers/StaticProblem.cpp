@@ -3,6 +3,7 @@
 #include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_TimeMonitor.hpp>
 
+#include <cmath>
 #include <exception>
 
 #include "core/Log.hpp"
@@ -239,8 +240,9 @@ BulkSplit StaticProblem::bulk_split() {
   split.forces = [coupling](const double* q, Vector& y) { coupling->forces(q, y); };
   split.schur.resize(split.cells);
   ops_->mixed()->bulk_schur_diagonal(split.schur.data());
-  split.weights.resize(split.cells);
-  ops_->mixed()->bulk_weights(split.weights.data());
+  split.root_weights.resize(split.cells);
+  ops_->mixed()->bulk_weights(split.root_weights.data());
+  for (auto& w : split.root_weights) w = std::sqrt(w);
   split.constrained_rows = coupling->constrained_rows();
   split.row_factor = coupling->row_factor();
   return split;

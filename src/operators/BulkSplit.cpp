@@ -56,6 +56,8 @@ BulkCoupling::BulkCoupling(const ModelOperators& ops, const EssentialConditions&
   overlap_cells_ =
       Teuchos::rcp(new Tpetra::Map<>(invalid, Teuchos::ArrayView<const GO>(overlap_go), 0, comm));
   import_ = Teuchos::rcp(new Tpetra::Import<>(owned_cells_, overlap_cells_));
+  q_owned_ = Teuchos::rcp(new Vector(owned_cells_));
+  q_overlap_ = Teuchos::rcp(new Vector(overlap_cells_));
   {
     int mine = tractions_.empty() ? 0 : 1, any = 0;
     Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, mine, Teuchos::outArg(any));
@@ -86,7 +88,8 @@ void BulkCoupling::forces(const double* q, Vector& y_owned) const {
   y_overlap_.putScalar(0.0);
   ops_.mixed()->add_cell_forces(q, y_overlap_);
   if (any_tractions_) {  // collective (the import)
-    Vector q_owned(owned_cells_), q_overlap(overlap_cells_);
+    auto& q_owned = *q_owned_;
+    auto& q_overlap = *q_overlap_;
     {
       auto v = q_owned.getLocalViewHost(Tpetra::Access::OverwriteAll);
       for (std::size_t c = 0; c < cells_; ++c) v(c, 0) = q[c];

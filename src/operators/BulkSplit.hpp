@@ -65,6 +65,7 @@ class BulkCoupling {
   Teuchos::RCP<const Tpetra::Map<>> owned_cells_, overlap_cells_;
   Teuchos::RCP<Tpetra::Import<>> import_;
   mutable Vector x_overlap_, y_overlap_;
+  Teuchos::RCP<Vector> q_owned_, q_overlap_;  // the cells' pressures, owned and overlap
 };
 
 }  // namespace efg

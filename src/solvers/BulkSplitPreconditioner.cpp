@@ -19,7 +19,6 @@
 #include <Teuchos_Time.hpp>
 
 #include <algorithm>
-#include <cmath>
 #include <cstdio>
 
 #include "core/Log.hpp"
@@ -68,13 +67,13 @@ class SaddleOperator : public OP {
       b_.split(X, j, u, q);
       // sqrt-scaled: [A, C^T D^1/2; D^1/2 B, -I] (the condensed residual is r_u + C^T D^1/2 r_p)
       A_->apply(u, Au);
-      for (std::size_t c = 0; c < b_.n_cells; ++c) sq[c] = std::sqrt(bulk_.weights[c]) * q[c];
+      for (std::size_t c = 0; c < b_.n_cells; ++c) sq[c] = bulk_.root_weights[c] * q[c];
       bulk_.forces(sq.data(), f);
       Au.update(1.0, f, 1.0);
       bulk_.pressures(u, Bq.data());  // D B u
       for (std::size_t c = 0; c < b_.n_cells; ++c) {
-        const double w = bulk_.weights[c];
-        Bq[c] = w > 0 ? Bq[c] / std::sqrt(w) - q[c] : -q[c];
+        const double r = bulk_.root_weights[c];
+        Bq[c] = r > 0 ? Bq[c] / r - q[c] : -q[c];
       }
       b_.join(Au, Bq, Y, j, alpha, beta);
     }
@@ -100,9 +99,9 @@ class TriangularPreconditioner : public OP {
       b_.split(X, j, u, q);
       // upper triangular: z_q = -S^-1 x_q, S = 1 + kappa_1 / M_0; z_u = A^-1 (x_u - C^T D^1/2 z_q)
       for (std::size_t c = 0; c < b_.n_cells; ++c) {
-        const double w = bulk_.weights[c];
-        zq[c] = w > 0 ? -q[c] / bulk_.schur[c] : -q[c];
-        sq[c] = std::sqrt(w) * zq[c];
+        const double r = bulk_.root_weights[c];
+        zq[c] = r > 0 ? -q[c] / bulk_.schur[c] : -q[c];
+        sq[c] = r * zq[c];
       }
       bulk_.forces(sq.data(), f);
       u.update(-1.0, f, 1.0);

@@ -57,13 +57,13 @@ using AuxiliaryMatrix =
 
 /// The saddle point of the mixed u-p parts' bulk excess (operators/BulkSplit.hpp): the Jacobian
 /// relieved of it (A), this rank's cells, q = D_1 B x, y = C^T q, the Schur diagonal, D_1's
-/// diagonal (weights), the collocation rows and their scale in A, the inner tolerance.
+/// diagonal square-rooted (D^1/2, the pressure rows' scale), the collocation rows and their scale in A, the inner tolerance.
 struct BulkSplit {
   AuxiliaryMatrix relieved;
   std::size_t cells = 0;
   std::function<void(const Tpetra::Vector<>& x, double* q)> pressures;
   std::function<void(const double* q, Tpetra::Vector<>& y)> forces;
-  std::vector<double> schur, weights;
+  std::vector<double> schur, root_weights;
   std::vector<int> constrained_rows;  ///< collocation rows (owned, local), scaled in A by
   double row_factor = 1;              ///< row_factor
   double tolerance = 1e-13;           ///< of the inner GMRES, relative
