@@ -69,13 +69,17 @@ std::string linear_failure_advice(const LinearSolverPlan& plan) {
 }  // namespace
 
 Teuchos::RCP<Teuchos::ParameterList> nonlinear_parameters(const Teuchos::ParameterList& user,
-                                                          bool line_search) {
+                                                          bool line_search,
+                                                          double linear_tolerance) {
   auto p = Teuchos::parameterList("Nonlinear Solver");
   p->set("Nonlinear Solver", "Line Search Based");
   auto& newton = p->sublist("Direction");
   newton.set("Method", "Newton");
   newton.sublist("Newton").set("Forcing Term Method", "Constant");
-  newton.sublist("Newton").sublist("Linear Solver").set("Tolerance", 1e-10);
+  // NOX passes this to Stratimikos as the solve criterion of every linear solve, where it
+  // overrides Belos' own "Convergence Tolerance": the plan's (and a stage's linear_solver
+  // map's) tolerance reaches Belos only through it.
+  newton.sublist("Newton").sublist("Linear Solver").set("Tolerance", linear_tolerance);
   auto& ls = p->sublist("Line Search");
   ls.set("Method", line_search ? "Backtrack" : "Full Step");
   ls.sublist("Backtrack").set("Minimum Step", 1e-6);
@@ -143,7 +147,7 @@ NewtonSolver::NewtonSolver(NonlinearProblem& problem, const YAML::Node& stage,
   if (stage["residual_tolerance"]) tolerance_ = stage["residual_tolerance"].as<double>();
   try {
     nox_params_ = nonlinear_parameters(from_stage(stage, "nonlinear_solver", file, where),
-                                       problem.residual_norm_is_a_merit());
+                                       problem.residual_norm_is_a_merit(), plan_.tolerance);
     Stratimikos::DefaultLinearSolverBuilder builder;
     builder.setParameterList(linear_parameters(plan_));
     lows_factory_ = builder.createLinearSolveStrategy("");

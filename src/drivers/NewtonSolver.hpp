@@ -73,9 +73,11 @@ class NewtonSolver {
 /// The default NOX list merged with a stage's map, and the Stratimikos list of a plan (exposed
 /// for tests and docs).
 /// `line_search`: false gives full Newton steps by default (NonlinearProblem::
-/// residual_norm_is_a_merit); the user's list overrides either.
+/// residual_norm_is_a_merit); `linear_tolerance`: the relative residual every linear solve
+/// reaches (LinearSolverPlan::tolerance); the user's list overrides either.
 Teuchos::RCP<Teuchos::ParameterList> nonlinear_parameters(const Teuchos::ParameterList& user,
-                                                          bool line_search = true);
+                                                          bool line_search = true,
+                                                          double linear_tolerance = 1e-10);
 Teuchos::RCP<Teuchos::ParameterList> linear_parameters(const LinearSolverPlan& plan);
 
 }  // namespace efg

@@ -30,6 +30,9 @@ struct LinearSolverPlan {
   Teuchos::ParameterList krylov;    ///< the Belos list for the chosen method
   Teuchos::ParameterList settings;  ///< the preconditioner's own list (MueLu, Ifpack2, Amesos2)
   int max_iterations = 0;
+  /// The Krylov solve's relative residual tolerance (Belos' "Convergence Tolerance" after the
+  /// stage's linear_solver map); NOX hands it to every solve (NewtonSolver).
+  double tolerance = 1e-10;
   /// bulk_split: the inner saddle-point GMRES's tolerance (relative).
   double saddle_tolerance = 0;
 
