@@ -153,6 +153,10 @@ void StaticProblem::residual(const Vector& d_owned, Vector& r_owned) {
 
 void StaticProblem::jacobian(const Vector& d_owned, FEMatrix& K) {
   to_overlap(d_owned, d_overlap_);
+  assemble_tangent(K, BulkTangent::full);
+}
+
+void StaticProblem::assemble_tangent(FEMatrix& K, BulkTangent bulk) {
   K.beginAssembly();
   K.setAllToScalar(0.0);
   // As in the residual: every rank learns of a failure before the assembly's communication, and
@@ -160,11 +164,11 @@ void StaticProblem::jacobian(const Vector& d_owned, FEMatrix& K) {
   std::exception_ptr failure;
   try {
     run_collectively(model_.maps.owned_dofs->getComm(), [&] {
-      ops_->add_tangent(d_overlap_, K);
+      ops_->add_tangent(d_overlap_, K, bulk);
       {
         Teuchos::TimeMonitor timer(
             *Teuchos::TimeMonitor::getNewCounter("efg: essential conditions"));
-        conditions_->add_boundary_terms(d_overlap_, K);
+        conditions_->add_boundary_terms(d_overlap_, K, bulk);
       }
       if (contact_) contact_->add_tangent(d_overlap_, K);
       if (surfaces_) surfaces_->add_tangent(d_overlap_, K);
@@ -233,7 +237,9 @@ BulkSplit StaticProblem::bulk_split() {
       bulk_scratch_ = create_matrix();
       bulk_scratch_graph_ = graph_;
     }
-    return coupling->relieved(K, *bulk_scratch_, d_overlap_);  // the Jacobian's state
+    // At the Jacobian's state (d_overlap_), with the mixed parts' bulk stiffness at kappa_0.
+    assemble_tangent(*bulk_scratch_, BulkTangent::relieved);
+    return coupling->relieved(K, *bulk_scratch_, d_overlap_);
   };
   split.cells = coupling->cells();
   split.pressures = [coupling](const Vector& x, double* q) { coupling->pressures(x, q); };

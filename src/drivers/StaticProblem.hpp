@@ -117,6 +117,9 @@ class StaticProblem : public NonlinearProblem {
 
  private:
   void unconstrained_residual(const Vector& d_owned, Vector& r_owned);
+  /// K at d_overlap_ (the Jacobian's assembly and its collocation rows), the mixed parts' bulk
+  /// stiffness at kappa or kappa_0 (operators/BulkTangent.hpp).
+  void assemble_tangent(FEMatrix& K, BulkTangent bulk);
   /// The stiffness graph: the operators', the conditions' and the contacts' couplings.
   void build_graph();
   /// The contacts between deformable parts at d_overlap_ reach new facets: rebuild the graph.

@@ -11,6 +11,7 @@ BoundaryCellPressure attach_cell_pressure(const CellAverages& row, const PartDis
   const auto udim = static_cast<std::size_t>(d.cloud.dimension);
   BoundaryCellPressure c;
   c.kappa = law.bulk_modulus;
+  c.kappa0 = relieved_bulk_modulus(c.kappa, law.elastic.mu);
   c.finite = d.part->section.formulation != Formulation::small_strain;
   c.bbar.assign(nodes.size() * udim, 0.0);
   for (std::size_t k = 0; k < row.gradients.particles.size(); ++k) {

@@ -16,12 +16,13 @@
 #include "core/Errors.hpp"
 #include "discretization/PartDiscretization.hpp"
 #include "model/MaterialLaws.hpp"
+#include "operators/BulkTangent.hpp"
 #include "tensor/Tensor.hpp"
 
 namespace efg {
 
 struct BoundaryCellPressure {
-  double kappa = 0;
+  double kappa = 0, kappa0 = 0;  ///< the part's bulk modulus and its relieved kappa_0
   bool finite = false;
   std::vector<double> bbar;         ///< b_a of the cell, dim per entry of the point's node list
   std::size_t part = 0, group = 0;  ///< model part and pressure cell (the bulk split's coupling)
@@ -86,19 +87,22 @@ CellTractionState<Dim> cell_traction_state(const BoundaryCellPressure& c,
 }
 
 /// Adds the volumetric traction to Pn (N = weighted normal, n dA) and its derivative to
-/// S[(a Dim + k) Dim + i] at generalized displacements `d` (a host view on the overlap dofs).
+/// S[(a Dim + k) Dim + i] at generalized displacements `d` (a host view on the overlap dofs);
+/// `bulk`: the derivative's rank-one part kappa g_ai (F^-T N)_k at kappa or kappa_0
+/// (operators/BulkTangent.hpp).
 template <int Dim, class View>
 void add_cell_pressure_traction(const BoundaryCellPressure& c, const std::vector<int>& nodes,
-                                const View& d, const double* N, double* Pn,
-                                std::vector<double>& S) {
+                                const View& d, const double* N, double* Pn, std::vector<double>& S,
+                                BulkTangent bulk = BulkTangent::full) {
+  const double rank_one = bulk == BulkTangent::full ? c.kappa : c.kappa0;
   const auto st = cell_traction_state<Dim>(c, nodes, d, N);
   for (int k = 0; k < Dim; ++k) Pn[k] += c.kappa * st.m * st.FN[k];
   for (std::size_t a = 0; a < nodes.size(); ++a)
     for (int k = 0; k < Dim; ++k)
       for (int i = 0; i < Dim; ++i)
         S[(a * Dim + static_cast<std::size_t>(k)) * Dim + static_cast<std::size_t>(i)] +=
-            c.kappa * (st.g[a * Dim + static_cast<std::size_t>(i)] * st.FN[k] -
-                       st.m_f * st.FN[i] * st.g[a * Dim + static_cast<std::size_t>(k)]);
+            rank_one * st.g[a * Dim + static_cast<std::size_t>(i)] * st.FN[k] -
+            c.kappa * st.m_f * st.FN[i] * st.g[a * Dim + static_cast<std::size_t>(k)];
 }
 
 }  // namespace efg

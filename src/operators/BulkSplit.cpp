@@ -63,10 +63,8 @@ BulkCoupling::BulkCoupling(const ModelOperators& ops, const EssentialConditions&
     Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, mine, Teuchos::outArg(any));
     any_tractions_ = any != 0;
   }
-  for (const auto& t : tractions_) {
+  for (const auto& t : tractions_)
     traction_cell_.push_back(overlap_cells_->getLocalElement(mixed.bulk_group_id(t.part, t.group)));
-    traction_kappa_.push_back(mixed.bulk_excess(t.part));
-  }
   // The collocation rows follow the largest of E and 3 kappa (EssentialConditions); in A the
   // mixed parts' kappa is kappa_0.
   double reference = 0;
@@ -110,54 +108,25 @@ void BulkCoupling::forces(const double* q, Vector& y_owned) const {
 }
 
 Teuchos::RCP<const Tpetra::CrsMatrix<>> BulkCoupling::relieved(const Tpetra::CrsMatrix<>& K,
-                                                               FEMatrix& scratch,
+                                                               const FEMatrix& relieved_tangent,
                                                                const Vector& d_overlap) {
   ops_.mixed()->bulk_state(d_overlap);
   bool weak = false;
   tractions_ = conditions_.cell_pressure_tractions(d_overlap, weak);  // same points, same order
-  scratch.beginAssembly();
-  scratch.setAllToScalar(0.0);
-  ops_.mixed()->add_bulk_excess_tangent(scratch);
-  {
-    std::vector<double> vals;
-    for (std::size_t k = 0; k < tractions_.size(); ++k) {
-      const auto& t = tractions_[k];
-      vals.resize(t.columns.size());
-      for (std::size_t r = 0; r < t.rows.size(); ++r) {
-        for (std::size_t c = 0; c < t.columns.size(); ++c)
-          vals[c] = t.coefficient[r] * traction_kappa_[k] * t.b[c];
-        scratch.sumIntoLocalValues(t.rows[r], static_cast<int>(t.columns.size()), vals.data(),
-                                   t.columns.data());
-      }
-    }
-  }
-  scratch.endAssembly();
-  auto A = Teuchos::rcp(new Tpetra::CrsMatrix<>(K, Teuchos::Copy));
-  std::vector<char> constrained(K.getNodeNumRows(), 0);
-  for (int r : constrained_) constrained[static_cast<std::size_t>(r)] = 1;
+  auto A = Teuchos::rcp(new Tpetra::CrsMatrix<>(relieved_tangent, Teuchos::Copy));
   A->resumeFill();
-  // Same graph, so the same column map: scratch's local columns are A's.
+  // The collocation rows: K's (same graph, so the same local columns), scaled to kappa_0's
+  // modulus.
   Teuchos::Array<int> cols;
   Teuchos::Array<double> vals;
-  for (std::size_t r = 0; r < constrained.size(); ++r) {
-    const auto row = static_cast<int>(r);
-    if (constrained[r]) {
-      const auto n = K.getNumEntriesInLocalRow(row);
-      cols.resize(n);
-      vals.resize(n);
-      std::size_t count = 0;
-      K.getLocalRowCopy(row, cols(), vals(), count);
-      for (auto& v : vals) v *= row_factor_;
-      A->replaceLocalValues(row, cols(), vals());
-      continue;
-    }
-    const auto n = scratch.getNumEntriesInLocalRow(row);
+  for (int row : constrained_) {
+    const auto n = K.getNumEntriesInLocalRow(row);
     cols.resize(n);
     vals.resize(n);
     std::size_t count = 0;
-    scratch.getLocalRowCopy(row, cols(), vals(), count);
-    for (auto& v : vals) v = -v;
-    A->sumIntoLocalValues(row, cols(), vals());
+    K.getLocalRowCopy(row, cols(), vals(), count);
+    for (auto& v : vals) v *= row_factor_;
+    A->replaceLocalValues(row, cols(), vals());
   }
   A->fillComplete(K.getDomainMap(), K.getRangeMap());
   return A;

@@ -3,7 +3,7 @@
 // incompressible part is linear in its bulk modulus kappa = kappa_0 + kappa_1:
 //   K = A + C^T D_1 B,   D_1 = diag(V_c kappa_1),
 // with A the Jacobian at kappa_0 = 5 mu / 3 (nu_0 = 1/4: compressible, where multigrid
-// converges), B the cells' average dilatations (rows b_c, theta_c = b_c . d) and C^T q the
+// converges; assembled as such, not as K - C^T D_1 B: operators/BulkTangent.hpp), B the cells' average dilatations (rows b_c, theta_c = b_c . d) and C^T q the
 // forces of cell pressures q_c / V_c: the cells' own (b_c, zero in the rows the transformation
 // method replaces) and the transformation conditions' boundary tractions
 // (EssentialConditionsMixed.cpp), which carry kappa as well. K du = f is the first row of
@@ -44,10 +44,12 @@ class BulkCoupling {
   void pressures(const Vector& x_owned, double* q) const;
   /// y = C^T q (owned y; zero on the collocation rows).
   void forces(const double* q, Vector& y_owned) const;
-  /// A = K - C^T D_1 B at the state d (K's), its collocation rows scaled by row_factor();
-  /// `scratch` is a matrix on K's graph (the problem's create_matrix). Sets the state of
-  /// pressures() and forces() (finite strain: g_c = F_c^-T b_c and F^-T N at d).
-  Teuchos::RCP<const Tpetra::CrsMatrix<>> relieved(const Tpetra::CrsMatrix<>& K, FEMatrix& scratch,
+  /// A = K - C^T D_1 B at the state d (K's): `relieved_tangent`, the Jacobian assembled at d
+  /// with the mixed parts' bulk stiffness at kappa_0 (operators/BulkTangent.hpp), its
+  /// collocation rows replaced by K's scaled by row_factor(). Sets the state of pressures() and
+  /// forces() (finite strain: g_c = F_c^-T b_c and F^-T N at d).
+  Teuchos::RCP<const Tpetra::CrsMatrix<>> relieved(const Tpetra::CrsMatrix<>& K,
+                                                   const FEMatrix& relieved_tangent,
                                                    const Vector& d_overlap);
   double row_factor() const { return row_factor_; }
   const std::vector<int>& constrained_rows() const { return constrained_; }
@@ -58,7 +60,6 @@ class BulkCoupling {
   std::vector<int> constrained_;
   std::vector<EssentialConditions::CellPressureTraction> tractions_;
   std::vector<int> traction_cell_;      // each traction's entry in the overlap pressures
-  std::vector<double> traction_kappa_;  // kappa_1 of its part
   std::size_t cells_ = 0;
   bool any_tractions_ = false;  // on some rank
   double row_factor_ = 1;

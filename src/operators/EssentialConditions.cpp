@@ -332,7 +332,8 @@ bool EssentialConditions::boundary_stress(const BoundaryPoint& p, const double (
 
 template <int Dim>
 EssentialConditions::PointState EssentialConditions::evaluate_point(const BoundaryPoint& p,
-                                                                    const Vector& d_overlap) const {
+                                                                    const Vector& d_overlap,
+                                                                    BulkTangent bulk) const {
   const std::size_t n = p.nodes.size();
   double H[Dim][Dim] = {}, u[Dim] = {};
   interpolate_at<Dim>(p, d_overlap, u, H);
@@ -362,16 +363,16 @@ EssentialConditions::PointState EssentialConditions::evaluate_point(const Bounda
   if (p.cell_pressure.active())  // mixed u-p: the cell's volumetric stress
     add_cell_pressure_traction<Dim>(p.cell_pressure, p.nodes,
                                     d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly),
-                                    p.weighted_normal.data(), st.Pn, st.S);
+                                    p.weighted_normal.data(), st.Pn, st.S, bulk);
   return st;
 }
 
 template <int Dim>
 void EssentialConditions::point_terms(const BoundaryPoint& p, const Vector& d_overlap,
                                       Vector* r_overlap, FEMatrix* K,
-                                      std::array<double, 3>* total) const {
+                                      std::array<double, 3>* total, BulkTangent bulk) const {
   const std::size_t n = p.nodes.size();
-  const PointState st = evaluate_point<Dim>(p, d_overlap);
+  const PointState st = evaluate_point<Dim>(p, d_overlap, bulk);
   const bool consistency = p.method != 2, stabilized = p.method != 0, symmetric = p.method == 1;
   if (r_overlap) {
     auto r = r_overlap->getLocalViewHost(Tpetra::Access::ReadWrite);
@@ -435,12 +436,13 @@ void EssentialConditions::add_boundary_terms(const Vector& d_overlap, Vector& r_
   }
 }
 
-void EssentialConditions::add_boundary_terms(const Vector& d_overlap, FEMatrix& K) const {
+void EssentialConditions::add_boundary_terms(const Vector& d_overlap, FEMatrix& K,
+                                             BulkTangent bulk) const {
   for (const auto& p : points_) {
     if (dim_ == 2)
-      point_terms<2>(p, d_overlap, nullptr, &K);
+      point_terms<2>(p, d_overlap, nullptr, &K, nullptr, bulk);
     else
-      point_terms<3>(p, d_overlap, nullptr, &K);
+      point_terms<3>(p, d_overlap, nullptr, &K, nullptr, bulk);
   }
 }
 

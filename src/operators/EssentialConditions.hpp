@@ -60,7 +60,10 @@ class EssentialConditions {
   /// rank's boundary points.
   void add_boundary_terms(const Vector& d_overlap, Vector& r_overlap,
                           std::vector<std::array<double, 3>>* totals = nullptr) const;
-  void add_boundary_terms(const Vector& d_overlap, FEMatrix& K) const;
+  /// `bulk`: a mixed part's cell pressure in the traction term at kappa or at the bulk split's
+  /// kappa_0 (operators/BulkTangent.hpp).
+  void add_boundary_terms(const Vector& d_overlap, FEMatrix& K,
+                          BulkTangent bulk = BulkTangent::full) const;
   /// The boundary points' tangents at d, kept for the products below (the stable-step estimate
   /// applies them a few hundred times at one d; evaluating them each time cost 17x the
   /// estimate's internal forces on a 10^3 block with three symmetry planes).
@@ -160,10 +163,12 @@ class EssentialConditions {
     }
   };
   template <int Dim>
-  PointState evaluate_point(const BoundaryPoint& p, const Vector& d_overlap) const;
+  PointState evaluate_point(const BoundaryPoint& p, const Vector& d_overlap,
+                            BulkTangent bulk = BulkTangent::full) const;
   template <int Dim>
   void point_terms(const BoundaryPoint& p, const Vector& d_overlap, Vector* r, FEMatrix* K,
-                   std::array<double, 3>* total = nullptr) const;
+                   std::array<double, 3>* total = nullptr,
+                   BulkTangent bulk = BulkTangent::full) const;
   template <int Dim>
   void point_product(const BoundaryPoint& p, const PointState& st, const Vector& x_overlap,
                      Vector& y_overlap) const;

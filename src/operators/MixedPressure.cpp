@@ -128,11 +128,9 @@ MixedPressure::MixedPressure(const Model& model, const SolidOperator& solid)
     p.model_part = m;
     p.kappa = law.bulk_modulus;
     {
-      // The iterative path's split (operators/BulkSplit.hpp) at nu_0 = 1/4, kappa_0 = 5 mu / 3:
-      // compressible, where multigrid converges, and below nu = 0.3, so that moderately
-      // compressible mixed parts take the same saddle-point path as nearly incompressible ones.
+      // The iterative path's split (operators/BulkSplit.hpp, BulkTangent.hpp).
       const double mu = law.elastic.mu;
-      p.kappa0 = std::min(p.kappa, 5.0 * mu / 3.0);
+      p.kappa0 = relieved_bulk_modulus(p.kappa, mu);
       p.kappa_excess = p.kappa - p.kappa0;
       p.schur = 1.0 + p.kappa_excess / (p.kappa0 + 4.0 * mu / 3.0);
     }
@@ -189,7 +187,7 @@ void MixedPressure::add_internal_force(const Vector& d_overlap, Vector& f_overla
     }
 }
 
-void MixedPressure::add_tangent(const Vector& d_overlap, FEMatrix& K) const {
+void MixedPressure::add_tangent(const Vector& d_overlap, FEMatrix& K, BulkTangent bulk) const {
   Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewCounter("efg: mixed u-p cells"));
   const auto u = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
   auto local = K.getLocalMatrixDevice();
@@ -202,8 +200,9 @@ void MixedPressure::add_tangent(const Vector& d_overlap, FEMatrix& K) const {
       if (!cell_state(p, c, u, dim_, st)) report_inverted(p, c);
       const auto first = p.offsets[c], last = p.offsets[c + 1];
       const double s = p.volume[c] * p.kappa;
+      const double rank_one = bulk == BulkTangent::full ? s : p.volume[c] * p.kappa0;
       // d(m g_Ii)/d d_Jj = g_Ii g_Jj - m g_Ij g_Ji (finite strain: d F^-T / dF; small: 0).
-      const double m = p.finite ? st.measure : 0.0;
+      const double sm = p.finite ? s * st.measure : 0.0;
       cell_columns(p, c, dim_, cols);
       vals.resize(cols.size());
       for (auto k = first; k < last; ++k)
@@ -212,7 +211,7 @@ void MixedPressure::add_tangent(const Vector& d_overlap, FEMatrix& K) const {
           for (auto l = first; l < last; ++l)
             for (std::size_t j = 0; j < udim; ++j) {
               const auto b = (l - first) * udim;
-              vals[b + j] = s * (st.g[a + i] * st.g[b + j] - m * st.g[a + j] * st.g[b + i]);
+              vals[b + j] = rank_one * st.g[a + i] * st.g[b + j] - sm * st.g[a + j] * st.g[b + i];
             }
           // Sorted rows (filled graph): binary search (SolidKernels.hpp, NodalTangentKernel).
           local.sumIntoValues(p.node[k] * dim_ + static_cast<int>(i), cols.data(),
@@ -225,30 +224,6 @@ bool MixedPressure::has_bulk_excess() const {
   for (const auto& p : parts_)
     if (p.kappa_excess > 0) return true;
   return false;
-}
-
-void MixedPressure::add_bulk_excess_tangent(FEMatrix& K) const {
-  auto local = K.getLocalMatrixDevice();
-  const auto udim = static_cast<std::size_t>(dim_);
-  std::vector<int> cols;
-  std::vector<double> vals;
-  for (const auto& p : parts_) {
-    if (!(p.kappa_excess > 0)) continue;
-    const auto& g = excess_rows(p);
-    for (std::size_t c = 0; c < p.volume.size(); ++c) {
-      const auto first = p.offsets[c], last = p.offsets[c + 1];
-      const double s = p.volume[c] * p.kappa_excess;
-      cell_columns(p, c, dim_, cols);
-      vals.resize(cols.size());
-      for (auto k = first; k < last; ++k)
-        for (std::size_t i = 0; i < udim; ++i) {
-          for (std::size_t e = 0; e < cols.size(); ++e)
-            vals[e] = s * g[k * udim + i] * g[first * udim + e];
-          local.sumIntoValues(p.node[k] * dim_ + static_cast<int>(i), cols.data(),
-                              static_cast<int>(cols.size()), vals.data(), true, false);
-        }
-    }
-  }
 }
 
 std::size_t MixedPressure::cell_count() const {
@@ -429,10 +404,6 @@ void MixedPressure::bulk_group_ids(long long* gid) const {
 
 long long MixedPressure::bulk_group_id(std::size_t part, std::size_t group) const {
   return parts_[static_cast<std::size_t>(index_[part])].group_base + static_cast<long long>(group);
-}
-
-double MixedPressure::bulk_excess(std::size_t part) const {
-  return index_[part] < 0 ? 0.0 : parts_[static_cast<std::size_t>(index_[part])].kappa_excess;
 }
 
 double MixedPressure::bulk_reference(std::size_t part) const {

@@ -31,6 +31,7 @@
 #include <memory>
 #include <vector>
 
+#include "operators/BulkTangent.hpp"
 #include "operators/CouplingGraph.hpp"
 #include "operators/SolidOperator.hpp"
 
@@ -46,8 +47,10 @@ class MixedPressure {
   void add_couplings(CouplingGraph& graph) const;
   /// f += the cells' volumetric forces at d (overlap vectors).
   void add_internal_force(const Vector& d_overlap, Vector& f_overlap) const;
-  /// K += the cells' volumetric stiffness at d.
-  void add_tangent(const Vector& d_overlap, FEMatrix& K) const;
+  /// K += the cells' volumetric stiffness at d; `bulk`: its rank-one part V kappa g (x) g at
+  /// kappa or at kappa_0 (the bulk split's relieved matrix, operators/BulkTangent.hpp).
+  void add_tangent(const Vector& d_overlap, FEMatrix& K,
+                   BulkTangent bulk = BulkTangent::full) const;
   /// Volumetric energy of this rank's cells, sum V_c U(J_c) (small strain: V_c kappa theta_c^2/2).
   double strain_energy(const Vector& d_overlap) const;
 
@@ -61,11 +64,10 @@ class MixedPressure {
                           Vector& f_overlap) const;
 
   /// The iterative path's split of the bulk stiffness (operators/BulkSplit.hpp): every part's
-  /// kappa = kappa_0 + kappa_1, kappa_0 = min(kappa, 5 mu / 3) (nu_0 = 1/4). True when some part
-  /// has kappa_1 > 0.
+  /// kappa = kappa_0 + kappa_1, kappa_0 = relieved_bulk_modulus(kappa, mu) (nu_0 = 1/4). True when
+  /// some part has kappa_1 > 0.
   bool has_bulk_excess() const;
-  /// kappa_1 and kappa_0 of model part p (0 when it is not mixed).
-  double bulk_excess(std::size_t part) const;
+  /// kappa_0 of model part p (0 when it is not mixed).
   double bulk_reference(std::size_t part) const;
   /// A global id of every cell of this rank (cell_count() of them, in order), and of pressure
   /// cell `group` of model part `part`: the mixed parts' groups numbered one after another.
@@ -73,10 +75,8 @@ class MixedPressure {
   long long bulk_group_id(std::size_t part, std::size_t group) const;
   /// The state of the split's rows g_c: F_c^-T b_c at d (finite strain; small strain: b_c). The
   /// cells' tangent is V kappa (g (x) g - ln J_c g_Ij g_Ji); its rank-one part above kappa_0 is
-  /// split off, the other term (of the size of the pressure) stays in A. Before the four below.
+  /// split off, the other term (of the size of the pressure) stays in A. Before the three below.
   void bulk_state(const Vector& d_overlap) const;
-  /// K += sum_c V_c kappa_1 g_c (x) g_c: the bulk stiffness above kappa_0.
-  void add_bulk_excess_tangent(FEMatrix& K) const;
   /// The saddle point of the bulk excess (operators/BulkSplit.hpp), over this rank's cells of all
   /// mixed parts in order: their count, q_c = V_c kappa_1 (g_c . x) (D_1 B x), y += sum_c q_c
   /// g_c (B^T q), and the Schur complement's diagonal 1 + kappa_1 / M_0, M_0 = kappa_0 + 4 mu / 3.

@@ -36,9 +36,9 @@ void ModelOperators::add_internal_force(const Vector& d_overlap, Vector& f_overl
   if (mixed_) mixed_->add_internal_force(d_overlap, f_overlap);
 }
 
-void ModelOperators::add_tangent(const Vector& d_overlap, FEMatrix& K) const {
+void ModelOperators::add_tangent(const Vector& d_overlap, FEMatrix& K, BulkTangent bulk) const {
   solid_.add_tangent(d_overlap, K);
-  if (mixed_) mixed_->add_tangent(d_overlap, K);
+  if (mixed_) mixed_->add_tangent(d_overlap, K, bulk);
 }
 
 void ModelOperators::add_couplings(CouplingGraph& graph) const {

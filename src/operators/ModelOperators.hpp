@@ -38,8 +38,10 @@ class ModelOperators {
   void internal_force(const Vector& d_owned, Vector& f_owned) const;
   /// The same on overlap vectors (f += f_int(d)): the solid's points and the mixed cells.
   void add_internal_force(const Vector& d_overlap, Vector& f_overlap) const;
-  /// K += K_int(d) (assembly mode), and the couplings it needs.
-  void add_tangent(const Vector& d_overlap, FEMatrix& K) const;
+  /// K += K_int(d) (assembly mode), and the couplings it needs; `bulk`: the mixed cells' bulk
+  /// stiffness at kappa or at the bulk split's kappa_0 (operators/BulkTangent.hpp).
+  void add_tangent(const Vector& d_overlap, FEMatrix& K,
+                   BulkTangent bulk = BulkTangent::full) const;
   void add_couplings(CouplingGraph& graph) const;
   /// f_owned = the bulk viscosity forces at velocities v (owned; zero without mixed parts).
   void bulk_viscosity(const Vector& v_owned, double linear, double quadratic,

@@ -85,7 +85,8 @@ namespace {
 // kappa / mu = 2 (1 + nu) / (3 (1 - 2 nu)) = 499,999.33 at nu = 0.499999) and the inner one
 // goes below it by 100 sqrt(kappa / mu). The plan's tolerance is what NOX hands every linear
 // solve (Stratimikos lets that solve criterion override Belos' own "Convergence Tolerance"; before,
-// a fixed 1e-10 did and the outer GMRES took two iterations at nu = 0.499999).
+// a fixed 1e-10 did and the outer GMRES took two iterations at nu = 0.499999). The outer
+// iteration is a fixed point (the preconditioner's result added unscaled).
 TEST(LinearSolverPlan, MixedPartsTakeTheSaddlePointOnTheIterativePath) {
   const auto plan = [](const std::string& solver, int dim, double nu,
                        const Teuchos::ParameterList& preconditioner = Teuchos::ParameterList()) {
@@ -97,7 +98,7 @@ TEST(LinearSolverPlan, MixedPartsTakeTheSaddlePointOnTheIterativePath) {
     EXPECT_EQ(split.preconditioner, P::bulk_split) << split.reason;
     const double kappa_over_mu = 2 * 1.499999 / (3 * 2e-6);
     const double tolerance = split.krylov.sublist("Solver Types")
-                                 .sublist("Block GMRES")
+                                 .sublist("Fixed Point")
                                  .get<double>("Convergence Tolerance");
     EXPECT_NEAR(tolerance, 100 * 2.220446049250313e-16 * kappa_over_mu, 1e-8 * tolerance);
     EXPECT_NEAR(split.saddle_tolerance, tolerance / (100 * std::sqrt(kappa_over_mu)),
@@ -109,15 +110,22 @@ TEST(LinearSolverPlan, MixedPartsTakeTheSaddlePointOnTheIterativePath) {
                   .sublist("Linear Solver")
                   .get<double>("Tolerance"),
               tolerance);
-    EXPECT_TRUE(
-        split.krylov.sublist("Solver Types").sublist("Block GMRES").get<bool>("Flexible Gmres"));
+    EXPECT_EQ(split.krylov.get<std::string>("Solver Type"), "Fixed Point");
   }
   // Below the floor the Newton's 1e-10 stands.
   const auto compressible = plan("iterative", 2, 0.3);
   EXPECT_EQ(compressible.krylov.sublist("Solver Types")
-                .sublist("Block GMRES")
+                .sublist("Fixed Point")
                 .get<double>("Convergence Tolerance"),
             1e-10);
+  // A named Krylov method wins; GMRES around the inner solve is flexible.
+  Teuchos::ParameterList gmres;
+  gmres.set("Solver Type", std::string("Block GMRES"));
+  EXPECT_TRUE(plan_linear_solver("iterative", 0, gmres, Teuchos::ParameterList(), 1000, 2, 1,
+                                 0.499999, "", "", true)
+                  .krylov.sublist("Solver Types")
+                  .sublist("Block GMRES")
+                  .get<bool>("Flexible Gmres"));
   // A stage's linear_solver map sets the tolerance every solve reaches.
   Teuchos::ParameterList loose;
   loose.set("Convergence Tolerance", 1e-6);
