@@ -392,12 +392,25 @@ void EssentialConditions::point_terms(const BoundaryPoint& p, const Vector& d_ov
   if (K) {
     // One call per matrix row with all of the point's columns (a call per entry is slow).
     std::vector<int> cols(n * Dim);
-    std::vector<double> vals(n * Dim);
+    std::vector<double> vals(n * Dim), sorted(n * Dim);
     for (std::size_t b = 0; b < n; ++b)
       for (int k = 0; k < Dim; ++k)
         cols[b * Dim + static_cast<std::size_t>(k)] = p.nodes[b] * Dim + k;
+    // Sorted columns for the local matrix's binary search (as the solid's kernels do): a point
+    // of a mixed part reaches its cell's particles too, and Tpetra's unsorted insertion of its
+    // hundreds of columns per row made these terms the larger part of a 3D Jacobian's assembly.
+    std::vector<std::size_t> order(cols.size());
+    for (std::size_t e = 0; e < order.size(); ++e) order[e] = e;
+    std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return cols[x] < cols[y]; });
+    std::vector<int> sorted_cols(cols.size());
+    for (std::size_t e = 0; e < order.size(); ++e) sorted_cols[e] = cols[order[e]];
+    auto local = K->getLocalMatrixDevice();
     for (std::size_t a = 0; a < n; ++a)
       for (int i = 0; i < Dim; ++i) {
+        // Rows of unconstrained components and of particles the point's cell reaches but its
+        // supports do not (phi_a = 0) are zero unless the symmetric (Nitsche) term fills them.
+        const bool live = p.constrained[static_cast<std::size_t>(i)] && p.phi[a] != 0.0;
+        if (!live && !symmetric) continue;
         for (std::size_t b = 0; b < n; ++b)
           for (int k = 0; k < Dim; ++k) {
             double v = 0;
@@ -409,8 +422,9 @@ void EssentialConditions::point_terms(const BoundaryPoint& p, const Vector& d_ov
               v -= st.s(a, k, i) * p.phi[b];
             vals[b * Dim + static_cast<std::size_t>(k)] = v;
           }
-        K->sumIntoLocalValues(p.nodes[a] * Dim + i, static_cast<int>(cols.size()), vals.data(),
-                              cols.data());
+        for (std::size_t e = 0; e < order.size(); ++e) sorted[e] = vals[order[e]];
+        local.sumIntoValues(p.nodes[a] * Dim + i, sorted_cols.data(),
+                            static_cast<int>(sorted_cols.size()), sorted.data(), true, false);
       }
   }
 }

@@ -81,9 +81,9 @@ namespace {
 
 // Mixed u-p parts above nu = 1/4 (operators/BulkSplit.hpp): the iterative path goes through the
 // saddle point of their bulk stiffness, in 2D and 3D, unless a preconditioner is named; its outer
-// tolerance stays above the round-off floor of the condensed system (100 eps kappa / mu, by hand:
-// kappa / mu = 2 (1 + nu) / (3 (1 - 2 nu)) = 499,999.33 at nu = 0.499999) and the inner one
-// goes below it by 100 sqrt(kappa / mu). The plan's tolerance is what NOX hands every linear
+// tolerance stays 10x above the round-off floor of the condensed system (100 eps kappa / mu, by
+// hand: kappa / mu = 2 (1 + nu) / (3 (1 - 2 nu)) = 499,999.33 at nu = 0.499999) and the inner one
+// goes below that floor by 100 sqrt(kappa / mu). The plan's tolerance is what NOX hands every linear
 // solve (Stratimikos lets that solve criterion override Belos' own "Convergence Tolerance"; before,
 // a fixed 1e-10 did and the outer GMRES took two iterations at nu = 0.499999). The outer
 // iteration is a fixed point (the preconditioner's result added unscaled).
@@ -100,9 +100,10 @@ TEST(LinearSolverPlan, MixedPartsTakeTheSaddlePointOnTheIterativePath) {
     const double tolerance = split.krylov.sublist("Solver Types")
                                  .sublist("Fixed Point")
                                  .get<double>("Convergence Tolerance");
-    EXPECT_NEAR(tolerance, 100 * 2.220446049250313e-16 * kappa_over_mu, 1e-8 * tolerance);
-    EXPECT_NEAR(split.saddle_tolerance, tolerance / (100 * std::sqrt(kappa_over_mu)),
+    EXPECT_NEAR(tolerance, 1000 * 2.220446049250313e-16 * kappa_over_mu, 1e-8 * tolerance);
+    EXPECT_NEAR(split.saddle_tolerance, tolerance / (1000 * std::sqrt(kappa_over_mu)),
                 1e-8 * split.saddle_tolerance);
+    EXPECT_EQ(split.max_iterations, 5);
     EXPECT_EQ(split.tolerance, tolerance);
     EXPECT_EQ(nonlinear_parameters(Teuchos::ParameterList(), true, split.tolerance)
                   ->sublist("Direction")
