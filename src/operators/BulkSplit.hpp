@@ -59,7 +59,7 @@ class BulkCoupling {
   const EssentialConditions& conditions_;
   std::vector<int> constrained_;
   std::vector<EssentialConditions::CellPressureTraction> tractions_;
-  std::vector<int> traction_cell_;      // each traction's entry in the overlap pressures
+  std::vector<int> traction_cell_;  // each traction's entry in the overlap pressures
   std::size_t cells_ = 0;
   bool any_tractions_ = false;  // on some rank
   double row_factor_ = 1;

@@ -369,8 +369,8 @@ EssentialConditions::PointState EssentialConditions::evaluate_point(const Bounda
 
 template <int Dim>
 void EssentialConditions::point_terms(const BoundaryPoint& p, const Vector& d_overlap,
-                                      Vector* r_overlap, FEMatrix* K,
-                                      std::array<double, 3>* total, BulkTangent bulk) const {
+                                      Vector* r_overlap, FEMatrix* K, std::array<double, 3>* total,
+                                      BulkTangent bulk) const {
   const std::size_t n = p.nodes.size();
   const PointState st = evaluate_point<Dim>(p, d_overlap, bulk);
   const bool consistency = p.method != 2, stabilized = p.method != 0, symmetric = p.method == 1;
@@ -401,7 +401,8 @@ void EssentialConditions::point_terms(const BoundaryPoint& p, const Vector& d_ov
     // hundreds of columns per row made these terms the larger part of a 3D Jacobian's assembly.
     std::vector<std::size_t> order(cols.size());
     for (std::size_t e = 0; e < order.size(); ++e) order[e] = e;
-    std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return cols[x] < cols[y]; });
+    std::sort(order.begin(), order.end(),
+              [&](std::size_t x, std::size_t y) { return cols[x] < cols[y]; });
     std::vector<int> sorted_cols(cols.size());
     for (std::size_t e = 0; e < order.size(); ++e) sorted_cols[e] = cols[order[e]];
     auto local = K->getLocalMatrixDevice();

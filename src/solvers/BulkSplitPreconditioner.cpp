@@ -7,11 +7,11 @@
 // A^-1 one smoothed-aggregation cycle on A, the Jacobian at kappa_0 (compressible: multigrid
 // converges there; on K itself it stalls as nu -> 1/2, its near kernel being every
 // divergence-free field). Measured on Lame's cylinder (patch pressures, subcells, edges):
-// 12-20 inner iterations per solve at nu = 0.3 and 20-34 at 0.4999 and 0.499999 (16 x 32 to
-// 64 x 128 cells; docs/mixed.md). The inner solve goes below the outer tolerance by the
-// amplification of its pressure rows' residual (LinearSolverPlan), so the outer GMRES on K
-// (flexible: the inner solve stops at a tolerance) takes one iteration, two at the round-off
-// floor of nu = 0.499999. The log gives the inner count of every solve.
+// 13-22 inner iterations per Newton step at nu = 0.3 and 21-36 at 0.4999 and 0.499999 (16 x 32
+// to 64 x 128 cells; docs/mixed.md). The inner solve goes below the outer tolerance by the
+// amplification of its pressure rows' residual (LinearSolverPlan), so the outer fixed point on
+// K (x += M^-1 r, the inner solution added unscaled) takes one application. The log gives the
+// inner count of every solve.
 #include <BelosBlockGmresSolMgr.hpp>
 #include <BelosLinearProblem.hpp>
 #include <BelosTpetraAdapter.hpp>
