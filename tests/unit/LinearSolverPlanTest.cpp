@@ -103,7 +103,7 @@ TEST(LinearSolverPlan, MixedPartsTakeTheSaddlePointOnTheIterativePath) {
     EXPECT_NEAR(tolerance, 1000 * 2.220446049250313e-16 * kappa_over_mu, 1e-8 * tolerance);
     EXPECT_NEAR(split.saddle_tolerance, tolerance / (1000 * std::sqrt(kappa_over_mu)),
                 1e-8 * split.saddle_tolerance);
-    EXPECT_EQ(split.max_iterations, 5);
+    EXPECT_EQ(split.max_iterations, 2);
     EXPECT_EQ(split.tolerance, tolerance);
     EXPECT_EQ(nonlinear_parameters(Teuchos::ParameterList(), true, split.tolerance)
                   ->sublist("Direction")
