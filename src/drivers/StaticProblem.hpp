@@ -138,7 +138,7 @@ class StaticProblem : public NonlinearProblem {
   bool graph_changed_ = false;
   Teuchos::RCP<const FEGraph> graph_;
   Vector d_overlap_, r_overlap_, f_ext_;
-  Teuchos::RCP<FEMatrix> bulk_scratch_;  ///< the bulk split's matrix (built on first use)
+  Teuchos::RCP<FEMatrix> bulk_scratch_;  ///< the bulk split's relieved matrix A (first use)
   Teuchos::RCP<const FEGraph> bulk_scratch_graph_;  ///< the graph it was built on
   Vector boundary_owned_;          ///< the boundary terms' and contacts' share of the residual
   Teuchos::RCP<Vector> released_;  ///< springback: r(d0) of the stage (null: no release)
