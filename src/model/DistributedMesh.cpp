@@ -9,6 +9,7 @@
 #include "core/Errors.hpp"
 #include "discretization/ParticleCloud.hpp"
 #include "io/ExodusSliceReader.hpp"
+#include "mesh/GeneratedSlice.hpp"
 #include "mesh/MeshValidation.hpp"
 #include "model/GradedMaterials.hpp"
 #include "parallel/Collective.hpp"
@@ -46,13 +47,20 @@ double halo_width(const Scene& scene, const std::vector<std::string>& block_name
 }
 
 BackgroundMesh load_distributed_mesh(const CommPtr& comm, Scene& scene, NodePartition& partition) {
+  // The key that named the mesh: messages about it point there.
+  const auto key = scene.generator ? "generate" : "file";
+  auto located = [&](const InputError& e) {
+    return InputError(schema::located_message(scene.file, scene.document["mesh"][key],
+                                              std::string("mesh.") + key, e.what()));
+  };
   MeshSlice slice;
   run_collectively(comm, [&] {
     try {
-      slice = read_exodus_slice(scene.mesh_file, comm->getRank(), comm->getSize());
+      slice = scene.generator ? generate_slice(*scene.generator, scene.more_blocks,
+                                               comm->getRank(), comm->getSize())
+                              : read_exodus_slice(scene.mesh_file, comm->getRank(), comm->getSize());
     } catch (const InputError& e) {
-      throw InputError(schema::located_message(scene.file, scene.document["mesh"]["file"],
-                                               "mesh.file", e.what()));
+      throw located(e);
     }
   });
   std::vector<std::string> names;
@@ -65,8 +73,7 @@ BackgroundMesh load_distributed_mesh(const CommPtr& comm, Scene& scene, NodePart
     try {
       validate_mesh(mesh);
     } catch (const InputError& e) {
-      throw InputError(schema::located_message(scene.file, scene.document["mesh"]["file"],
-                                               "mesh.file", e.what()));
+      throw located(e);
     }
   });
   partition.rank = comm->getRank();

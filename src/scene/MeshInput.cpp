@@ -90,10 +90,8 @@ void read_mesh(Scene& s, const YAML::Node& m, const YAML::Node& doc) {
            "the blocks in the Exodus file)");
     return;
   }
-  if (m["read"].as<std::string>() == "distributed")
-    fail(s, doc["read"], "mesh.read",
-         "a generated mesh is made on rank 0 and sent to every rank; expected read: distributed "
-         "with mesh.file only (write the mesh with `efg mesh SCENE OUT.exo` and read that)");
+  // Distributed: each rank makes only its slice of the generated mesh (mesh/GeneratedSlice.hpp).
+  s.distributed_read = m["read"].as<std::string>() == "distributed";
   s.generator = generator_spec(s, m["generate"], doc["generate"], "mesh.generate");
   for (std::size_t i = 0; i < m["more_blocks"].size(); ++i) {
     const auto path = "mesh.more_blocks[" + std::to_string(i) + "]";

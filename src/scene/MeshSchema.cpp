@@ -50,11 +50,12 @@ schema::SpecPtr mesh_spec() {
              "xmax, ymin, ymax (zmin, zmax in 3D) and node set all.")
       .optional("file", string("Exodus II mesh file, relative to the scene file's folder."))
       .optional("read",
-                choice("How the ranks read mesh.file: root (rank 0 reads it whole and sends it "
-                       "to every rank) or distributed (each rank reads only its slice of the "
-                       "file and keeps its own part of the mesh: the particles it owns, the "
-                       "cells around them and those within reach of their supports; no rank "
-                       "holds the whole mesh, results are written one file per rank). "
+                choice("How the ranks read mesh.file or make mesh.generate: root (rank 0 reads "
+                       "or generates it whole and sends it to every rank) or distributed (each "
+                       "rank reads or generates only its slice and keeps its own part of the "
+                       "mesh: the particles it owns, the cells around them and those within "
+                       "reach of their supports; no rank holds the whole mesh, results are "
+                       "written one file per rank). "
                        "Distributed reading is for solid parts without contact, rigid bodies, "
                        "mixed u-p or an initial state (docs/scaling.md).",
                        {"root", "distributed"}),
