@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The mesh read whole on rank 0 and sent to every rank (mesh.read: root) against each rank
-# reading only its slice and keeping its part (mesh.read: distributed; docs/scaling.md), side by
-# side in one run: the explicit 3D block of bench/block_scene.py at NX x 0.35 NX x 0.35 NX cells
+# reading only its slice and keeping its part (mesh.read: distributed; docs/scaling.md), and the
+# same for the generated mesh (generated whole on rank 0, or each rank generating its slice:
+# mesh.generate with read: distributed), side by side in one run: the explicit 3D block of bench/block_scene.py at NX x 0.35 NX x 0.35 NX cells
 # (NX = 100: 130,896 particles, dilation 1.2) written once with `efg mesh`, 100 steps, on 1, 2
 # and 3 ranks. Prints the nodes each rank holds, the resident growth per rank of the "scene and
 # mesh" and "partition" phases (a distributed read partitions while it reads), the setup (scene
@@ -18,11 +19,14 @@ trap 'rm -rf "$work"' EXIT
 
 /usr/bin/python3 "$here/bench/block_scene.py" "$work/generated.yaml" "$nx" explicit
 "$efg" mesh "$work/generated.yaml" "$work/block.exo" >/dev/null
-for read in root distributed; do
+for read in root distributed generated_root generated_distributed; do
   /usr/bin/python3 - "$work/generated.yaml" "$work/$read.yaml" "$read" <<'PY'
 import re, sys
-s = open(sys.argv[1]).read()
-s = re.sub(r"mesh:\n  generate: \{[^}]*\}\n", "mesh: {file: block.exo, read: %s}\n" % sys.argv[3], s)
+s, read = open(sys.argv[1]).read(), sys.argv[3]
+if read.startswith("generated_"):
+    s = re.sub(r"(mesh:\n  generate: \{[^}]*\}\n)", r"\1  read: %s\n" % read[10:], s)
+else:
+    s = re.sub(r"mesh:\n  generate: \{[^}]*\}\n", "mesh: {file: block.exo, read: %s}\n" % read, s)
 open(sys.argv[2], "w").write(s)
 PY
 done
@@ -59,5 +63,5 @@ PY
 echo "| ranks | mesh.read | particles | nodes per rank | mesh + partition MiB per rank | setup s | high-water MiB per rank |"
 echo "|---|---|---|---|---|---|---|"
 for ranks in ${RANKS:-1 2 3}; do
-  for read in root distributed; do row "$ranks" "$read"; done
+  for read in root distributed generated_root generated_distributed; do row "$ranks" "$read"; done
 done

@@ -7,6 +7,7 @@
 
 #include "io/ExodusReader.hpp"
 #include "io/ExodusWriter.hpp"
+#include "mesh/MeshGenerator.hpp"
 #include "model/Model.hpp"
 #include "scene/SceneReader.hpp"
 #include "support/TestMeshes.hpp"
@@ -43,16 +44,13 @@ std::string bar_scene(const CommPtr& comm) {
   return dir + "/bar.yaml";
 }
 
-// The model of a mesh read in slices holds about one rank's share of the mesh on each rank.
-// The halo (model/DistributedMesh.hpp) for dilation 1.5 box supports on 0.25 cells, by hand:
-// reach sqrt(3) x 0.375 = 0.650, halo 2 x 0.650 + sqrt(3) x 0.25 = 1.732, so at most 7 planes
-// beyond the owned ones, plus a partly owned plane and the far plane of the cells reaching into
-// the box: 9 per cut. Bound: 121 / p + 1 planes owned + 9 per side, 25 nodes each (p = 2: 66 %
-// of the mesh, p = 3: 49 %); the owned particles are those RCB gives the whole mesh.
-TEST(DistributedModel, HoldsAboutOneRanksShareOfTheMeshRead) {
-  const auto comm = Tpetra::getDefaultComm();
-  const auto path = bar_scene(comm);
-  const auto model = build_model(comm, parse_scene(kScene, path));
+// The model of a mesh read (or generated) in slices holds about one rank's share of the mesh on
+// each rank. The halo (model/DistributedMesh.hpp) for dilation 1.5 box supports on 0.25 cells, by
+// hand: reach sqrt(3) x 0.375 = 0.650, halo 2 x 0.650 + sqrt(3) x 0.25 = 1.732, so at most 7
+// planes beyond the owned ones, plus a partly owned plane and the far plane of the cells reaching
+// into the box: 9 per cut. Bound: 121 / p + 1 planes owned + 9 per side, 25 nodes each (p = 2:
+// 66 % of the mesh, p = 3: 49 %); the owned particles are those RCB gives the whole mesh.
+void expect_one_ranks_share(const CommPtr& comm, const Model& model, const BackgroundMesh& whole) {
   const auto p = static_cast<double>(comm->getSize());
   const double nodes = 121 * 25;
   EXPECT_TRUE(model.mesh.is_part());
@@ -67,13 +65,36 @@ TEST(DistributedModel, HoldsAboutOneRanksShareOfTheMeshRead) {
   Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, owned, Teuchos::outArg(total));
   EXPECT_EQ(total, nodes);
 
-  // The same owners as the whole mesh's partition (read whole here for the test only).
-  const auto whole = read_exodus_mesh(path.substr(0, path.size() - 5) + ".exo");
+  // The same owners as the whole mesh's partition (made whole here for the test only).
   const auto reference = partition_nodes(comm, whole);
   ASSERT_EQ(model.partition.owned.size(), reference.owned.size());
   for (std::size_t i = 0; i < reference.owned.size(); ++i)
     EXPECT_EQ(model.mesh.global_node(static_cast<std::size_t>(model.partition.owned[i])),
               reference.owned[i]);
+}
+
+TEST(DistributedModel, HoldsAboutOneRanksShareOfTheMeshRead) {
+  const auto comm = Tpetra::getDefaultComm();
+  const auto path = bar_scene(comm);
+  const auto model = build_model(comm, parse_scene(kScene, path));
+  expect_one_ranks_share(comm, model, read_exodus_mesh(path.substr(0, path.size() - 5) + ".exo"));
+}
+
+// The same bar generated (mesh.generate with read: distributed): every rank makes only its slice
+// of the generator's nodes and cells (mesh/GeneratedSlice.hpp) and keeps the same part.
+TEST(DistributedModel, HoldsAboutOneRanksShareOfTheMeshGenerated) {
+  const auto comm = Tpetra::getDefaultComm();
+  std::string text = kScene;
+  const std::string file = "file: bar.exo, read: distributed";
+  text.replace(text.find(file), file.size(),
+               "generate: {element: hex8, lower: [0, 0, 0], upper: [30, 1, 1], cells: [120, 4, "
+               "4]}, read: distributed");
+  const auto dir = test::scratch_dir("distributed_generated_np" + std::to_string(comm->getSize()));
+  const auto model = build_model(comm, parse_scene(text, dir + "/bar.yaml"));
+  GeneratorSpec bar;
+  bar.upper = {30, 1, 1};
+  bar.cells = {120, 4, 4};
+  expect_one_ranks_share(comm, model, generate_mesh(bar));
 }
 
 // support_size: per_part gives every particle of a part the part's largest half-widths over the
