@@ -42,8 +42,11 @@ ParticleRow particle_row(const ModelOperators& ops, std::size_t p, std::size_t j
 /// (one entry per owned dof, equal over a particle's components).
 template <class View>
 double particle_mass(const Model& model, const View& mass, std::size_t p, std::size_t j) {
-  const auto dof = static_cast<GlobalOrdinal>(model.parts[p].cloud.mesh_node[j]) *
-                   static_cast<GlobalOrdinal>(model.mesh.dimension);
+  // the whole mesh's node index: on a part of a distributed read the mesh's own is local
+  const auto node =
+      model.mesh.global_node(static_cast<std::size_t>(model.parts[p].cloud.mesh_node[j]));
+  const auto dof =
+      static_cast<GlobalOrdinal>(node) * static_cast<GlobalOrdinal>(model.mesh.dimension);
   return mass(static_cast<std::size_t>(model.maps.owned_dofs->getLocalElement(dof)), 0);
 }
 

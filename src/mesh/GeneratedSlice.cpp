@@ -75,7 +75,8 @@ std::size_t sides_before(const Body& body, const BoundaryPlane& plane, std::size
   std::size_t stride = 1;
   for (int e = 0; e < plane.axis; ++e) stride *= r[static_cast<std::size_t>(e)];
   const auto on_plane = q * stride;
-  const auto per_lattice_cell = sides_on(body, plane, body_cells(body, on_plane * m, on_plane * m + m)).size();
+  const auto per_lattice_cell =
+      sides_on(body, plane, body_cells(body, on_plane * m, on_plane * m + m)).size();
   std::size_t count = count_with_digit(r, cell / m, plane.axis, q) * per_lattice_cell;
   if (cell % m != 0) count += sides_on(body, plane, body_cells(body, cell / m * m, cell)).size();
   return count;
@@ -153,8 +154,8 @@ MeshSlice generate_slice(const GeneratorSpec& main, const std::vector<GeneratorS
       const std::array<std::size_t, 3> r = {static_cast<std::size_t>(body.lat.n[0]),
                                             static_cast<std::size_t>(body.lat.n[1]),
                                             static_cast<std::size_t>(body.lat.n[2])};
-      set.first_entry = static_cast<GlobalIndex>(count_with_digit(
-          r, nodes.begin, plane.axis, static_cast<std::size_t>(plane.coordinate)));
+      set.first_entry = static_cast<GlobalIndex>(
+          count_with_digit(r, nodes.begin, plane.axis, static_cast<std::size_t>(plane.coordinate)));
       for (auto n = nodes.begin; n < nodes.end; ++n)
         if (body.lat.coordinate(n, plane.axis) == plane.coordinate)
           set.nodes.push_back(static_cast<GlobalIndex>(n) + offset);

@@ -51,7 +51,8 @@ void add_cells_of_hex(const std::array<Index, 8>& v, CellType type, const Coordi
 
 // Lattice cell L's (i, j, k).
 std::array<int, 3> lattice_cell_ijk(const Lattice& lat, std::size_t L) {
-  const auto cx = static_cast<std::size_t>(lat.n[0] - 1), cy = static_cast<std::size_t>(lat.n[1] - 1);
+  const auto cx = static_cast<std::size_t>(lat.n[0] - 1),
+             cy = static_cast<std::size_t>(lat.n[1] - 1);
   return {static_cast<int>(L % cx), static_cast<int>(L / cx % cy), static_cast<int>(L / cx / cy)};
 }
 
@@ -163,8 +164,8 @@ void append_lattice_cells(const GeneratorSpec& s, const Lattice& lat, std::size_
 }
 
 template void append_lattice_cells<LocalIndex>(const GeneratorSpec&, const Lattice&, std::size_t,
-                                               std::size_t, const std::vector<double>&,
-                                               std::size_t, std::vector<LocalIndex>&);
+                                               std::size_t, const std::vector<double>&, std::size_t,
+                                               std::vector<LocalIndex>&);
 template void append_lattice_cells<GlobalIndex>(const GeneratorSpec&, const Lattice&, std::size_t,
                                                 std::size_t, const std::vector<double>&,
                                                 std::size_t, std::vector<GlobalIndex>&);
@@ -192,8 +193,7 @@ bool side_on_plane(const Lattice& lat, CellType type, const Index* cell, int sid
   return true;
 }
 
-template bool side_on_plane<LocalIndex>(const Lattice&, CellType, const LocalIndex*, int, int,
-                                        int);
+template bool side_on_plane<LocalIndex>(const Lattice&, CellType, const LocalIndex*, int, int, int);
 template bool side_on_plane<GlobalIndex>(const Lattice&, CellType, const GlobalIndex*, int, int,
                                          int);
 

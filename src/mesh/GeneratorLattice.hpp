@@ -30,7 +30,8 @@ struct Lattice {
   int coordinate(std::size_t node, int d) const {
     std::size_t stride = 1;
     for (int e = 0; e < d; ++e) stride *= static_cast<std::size_t>(n[static_cast<std::size_t>(e)]);
-    return static_cast<int>(node / stride % static_cast<std::size_t>(n[static_cast<std::size_t>(d)]));
+    return static_cast<int>(node / stride %
+                            static_cast<std::size_t>(n[static_cast<std::size_t>(d)]));
   }
   /// Lattice cells (squares or cubes), each cut into cells_per_lattice_cell cells.
   std::size_t lattice_cell_count() const {

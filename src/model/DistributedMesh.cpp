@@ -56,9 +56,10 @@ BackgroundMesh load_distributed_mesh(const CommPtr& comm, Scene& scene, NodePart
   MeshSlice slice;
   run_collectively(comm, [&] {
     try {
-      slice = scene.generator ? generate_slice(*scene.generator, scene.more_blocks,
-                                               comm->getRank(), comm->getSize())
-                              : read_exodus_slice(scene.mesh_file, comm->getRank(), comm->getSize());
+      slice = scene.generator
+                  ? generate_slice(*scene.generator, scene.more_blocks, comm->getRank(),
+                                   comm->getSize())
+                  : read_exodus_slice(scene.mesh_file, comm->getRank(), comm->getSize());
     } catch (const InputError& e) {
       throw located(e);
     }

@@ -15,13 +15,19 @@ namespace {
 
 }  // namespace
 
-// Contact and rigid bodies need the whole boundary, shells their chart of the whole surface,
-// mixed u-p its pressure groups across the cut, an initial state a whole results file.
+// Contact between parts needs the other part's whole surface, a rigid body made of mesh blocks
+// its whole blocks, shells their chart of the whole surface, mixed u-p its pressure groups across
+// the cut, an initial state a whole results file. Rigid walls and rigid bodies of analytic shape
+// touch owned particles only: a rank's part holds every cell around its owned nodes, so their
+// surface (boundary sides) and boundary shares are those of the whole mesh.
 void check_distributed_read(Scene& scene) {
   if (!scene.distributed_read) return;
   if (scene.has_shells()) refuse(scene, "shell parts");
-  if (!scene.contacts.empty()) refuse(scene, "contact");
-  if (!scene.rigid_walls.empty() || !scene.rigid_bodies.empty()) refuse(scene, "rigid bodies");
+  for (const auto& c : scene.contacts)
+    if (c.rigid_body.empty()) refuse(scene, "contact between parts (contact '" + c.name + "')");
+  for (const auto& b : scene.rigid_bodies)
+    if (b.shape == "mesh")
+      refuse(scene, "rigid bodies made of mesh blocks (rigid body '" + b.name + "')");
   if (scene.initial_state) refuse(scene, "an initial state");
   for (const auto& p : scene.parts) {
     if (p.formulation == PartFormulation::mixed_up) refuse(scene, "mixed u-p parts");

@@ -56,8 +56,9 @@ schema::SpecPtr mesh_spec() {
                        "mesh: the particles it owns, the cells around them and those within "
                        "reach of their supports; no rank holds the whole mesh, results are "
                        "written one file per rank). "
-                       "Distributed reading is for solid parts without contact, rigid bodies, "
-                       "mixed u-p or an initial state (docs/scaling.md).",
+                       "Distributed reading is for solid parts; rigid walls and rigid bodies of "
+                       "analytic shape are served, not contact between parts, rigid bodies of "
+                       "mesh blocks, mixed u-p or an initial state (docs/scaling.md).",
                        {"root", "distributed"}),
                 "root")
       .optional("generate", generate_spec("Built-in structured mesh generator.", "block_1"))

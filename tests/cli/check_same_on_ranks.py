@@ -6,8 +6,14 @@ cross components of a symmetry plane's reaction, the sideways force on a centere
 hold only the round-off of sums of terms of order 1 and are compared against that floor; the
 energy balance error, a fraction, against 1).
 usage: check_same_on_ranks.py TOL ONE/history.csv TWO/history.csv ONE.e TWO.e FIELD [FIELD ...]
+A results file written one file per rank (output.files: per_rank, as a distributed read writes)
+is named by its base, TWO.e: its pieces TWO.e.<ranks>.<rank> are joined here by their node id maps
+(the nodes on a cut appear in two pieces with the same values).
 """
 import csv
+import glob
+import os
+import re
 import sys
 
 import netCDF4
@@ -30,10 +36,27 @@ for name in a[0]:
         worst, where = diff, name
 
 
-def last(path, field):
+def last_of_file(path, field):
     d = netCDF4.Dataset(path)
     names = [b"".join(c for c in row if c).decode() for row in d["name_nod_var"][:]]
-    return np.array(d["vals_nod_var%d" % (names.index(field) + 1)][-1])
+    values = np.array(d["vals_nod_var%d" % (names.index(field) + 1)][-1])
+    ids = np.array(d["node_num_map"][:]) if "node_num_map" in d.variables else \
+        np.arange(1, len(values) + 1)
+    return ids, values
+
+
+def last(path, field):
+    pieces = [path] if os.path.exists(path) else sorted(
+        p for p in glob.glob(path + ".*.*") if re.fullmatch(r"\.\d+\.\d+", p[len(path):]))
+    if not pieces:
+        sys.exit("no results file %s (nor pieces %s.<ranks>.<rank>)" % (path, path))
+    joined = {}
+    for piece in pieces:
+        ids, values = last_of_file(piece, field)
+        joined.update(zip(ids.tolist(), values.tolist()))
+    if sorted(joined) != list(range(1, len(joined) + 1)):
+        sys.exit("%s: the pieces' node ids are not 1..%d" % (path, len(joined)))
+    return np.array([joined[i] for i in range(1, len(joined) + 1)])
 
 
 for field in sys.argv[6:]:

@@ -45,9 +45,9 @@ void expect_slices_make(const BackgroundMesh& mesh, const GeneratorSpec& main,
       EXPECT_EQ(block.cell_count, static_cast<GlobalIndex>(mesh.blocks[b].cell_count()));
       if (block.read_count() > 0) {
         EXPECT_EQ(block.first_read,
-                  first_cell + static_cast<GlobalIndex>(connectivity[b].size() /
-                                                        static_cast<std::size_t>(cell_node_count(
-                                                            block.type))));
+                  first_cell + static_cast<GlobalIndex>(
+                                   connectivity[b].size() /
+                                   static_cast<std::size_t>(cell_node_count(block.type))));
       }
       first_cell += block.cell_count;
       connectivity[b].insert(connectivity[b].end(), block.connectivity.begin(),
