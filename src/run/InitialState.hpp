@@ -14,6 +14,7 @@
 #include "drivers/RunState.hpp"
 #include "mesh/BackgroundMesh.hpp"
 #include "model/Model.hpp"
+#include "parallel/Comm.hpp"
 #include "operators/SolidOperator.hpp"
 #include "scene/Scene.hpp"
 
@@ -28,7 +29,11 @@ struct RestartRecord {
 /// Reads and checks the record against the scene and mesh (same mesh, the restart columns
 /// present, path-dependent parts integrated at particles, stages ending after the record's time).
 /// Throws InputError at initial_state (file, line, key path); nothing when the scene has none.
-std::optional<RestartRecord> read_initial_state(const Scene& scene, const BackgroundMesh& mesh);
+/// Only the record's restart columns are read. On a rank's part of a distributed read (collective
+/// then) each rank reads its slice of the file's nodes and fetches its part's nodes: the columns
+/// are per node of the part.
+std::optional<RestartRecord> read_initial_state(const CommPtr& comm, const Scene& scene,
+                                                const BackgroundMesh& mesh);
 
 /// Sets the state's d, v and time and the operators' committed material history from the record
 /// (no-op without initial_state).

@@ -17,7 +17,7 @@ namespace {
 
 // Contact between parts needs the other part's whole surface, a rigid body made of mesh blocks
 // its whole blocks, shells their chart of the whole surface, mixed u-p its pressure groups across
-// the cut, an initial state a whole results file. Rigid walls and rigid bodies of analytic shape
+// the cut. (An initial state is read in slices too: run/InitialState.) Rigid walls and rigid bodies of analytic shape
 // touch owned particles only: a rank's part holds every cell around its owned nodes, so their
 // surface (boundary sides) and boundary shares are those of the whole mesh.
 void check_distributed_read(Scene& scene) {
@@ -28,7 +28,6 @@ void check_distributed_read(Scene& scene) {
   for (const auto& b : scene.rigid_bodies)
     if (b.shape == "mesh")
       refuse(scene, "rigid bodies made of mesh blocks (rigid body '" + b.name + "')");
-  if (scene.initial_state) refuse(scene, "an initial state");
   for (const auto& p : scene.parts) {
     if (p.formulation == PartFormulation::mixed_up) refuse(scene, "mixed u-p parts");
   }

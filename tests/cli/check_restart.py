@@ -6,12 +6,17 @@ The scene is the strip of tests/verification/strip_springback (coarsest level): 
 in two stages, then the implicit springback. Three cases, each against the whole run:
   - restart into the implicit springback stage: fields equal to 1e-12 (relative);
   - restart into the second explicit stage: fields equal to 1e-9 (the energy account restarts);
-  - the springback restart on 2 ranks from a one-rank record: 1e-8.
+  - the springback restart on 2 ranks from a one-rank record: 1e-8;
+  - the same with the mesh made in slices (mesh.read: distributed: each rank reads its slice of
+    the record and fetches its part's nodes; results one file per rank, joined here by node id):
+    1e-8.
 usage: check_restart.py EFG OUTDIR [LAUNCHER]   (LAUNCHER: the MPI launch command for 2 ranks,
 words joined by '|', e.g. mpiexec|--allow-run-as-root|-n|2; without it the 2-rank case is skipped)
 (exit 1 when a check fails)"""
 import copy
+import glob
 import os
+import re
 import subprocess
 import sys
 
@@ -45,8 +50,10 @@ def check(ok, text):
         failures.append(text)
 
 
-def run(name, stages, restart=None, parallel=False):
+def run(name, stages, restart=None, parallel=False, distributed=False):
     scene = copy.deepcopy(base)
+    if distributed:
+        scene["mesh"]["read"] = "distributed"
     scene["stages"] = [s for s in scene["stages"] if s["name"] in stages]
     for bc in scene["boundary_conditions"]:
         bc["stages"] = [s for s in bc["stages"] if s in stages] or ["unused"]
@@ -66,11 +73,26 @@ def run(name, stages, restart=None, parallel=False):
     return os.path.join(out, name, name + ".e")
 
 
-def last_fields(path):
+def last_fields_of(path):
     d = netCDF4.Dataset(path)
     names = ["".join(c.decode() for c in row if c) for row in d["name_nod_var"][:].data]
     fields = {n: np.array(d["vals_nod_var%d" % (i + 1)][-1]) for i, n in enumerate(names)}
-    return float(d["time_whole"][-1]), fields
+    ids = np.array(d["node_num_map"][:]) if "node_num_map" in d.variables else \
+        np.arange(1, len(next(iter(fields.values()))) + 1)
+    return float(d["time_whole"][-1]), fields, ids
+
+
+def last_fields(path):
+    """The last record's nodal fields; a run written one file per rank (path.<ranks>.<rank>)
+    is joined by the pieces' node ids."""
+    pieces = [path] if os.path.exists(path) else sorted(
+        p for p in glob.glob(path + ".*.*") if re.fullmatch(r"\.\d+\.\d+", p[len(path):]))
+    joined, t = {}, None
+    for piece in pieces:
+        t, fields, ids = last_fields_of(piece)
+        for name, values in fields.items():
+            joined.setdefault(name, {}).update(zip(ids.tolist(), values.tolist()))
+    return t, {n: np.array([v[i] for i in sorted(v)]) for n, v in joined.items()}
 
 
 def compare(a, b, what, tolerance):
@@ -101,4 +123,7 @@ compare(whole, run("explicit_restart", ["form_more", "release"], restart=half),
 if launcher:
     compare(whole, run("springback_restart_np2", ["release"], restart=formed, parallel=True),
             "springback restart on 2 ranks from a one-rank record", 1e-8)
+    compare(whole, run("springback_restart_distributed", ["release"], restart=formed,
+                       parallel=True, distributed=True),
+            "springback restart on 2 ranks, mesh and record read in slices", 1e-8)
 sys.exit(1 if failures else 0)
