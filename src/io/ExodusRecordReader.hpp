@@ -22,8 +22,8 @@ struct ResultsHeader {
 ResultsHeader read_results_header(const std::string& path);
 
 struct NodalRecordSlice {
-  std::vector<double> coordinates;                     ///< `dimension` per node
-  std::map<std::string, std::vector<double>> values;   ///< name -> one value per node
+  std::vector<double> coordinates;                    ///< `dimension` per node
+  std::map<std::string, std::vector<double>> values;  ///< name -> one value per node
 };
 
 /// The coordinates and the nodal variables `names` (each in the header's names) at record

@@ -4,14 +4,14 @@
 #include <cmath>
 #include <sstream>
 
-#include "core/Errors.hpp"
 #include <Teuchos_CommHelpers.hpp>
+#include "core/Errors.hpp"
 
 #include "io/ExodusRecordReader.hpp"
 #include "mesh/MeshSlice.hpp"
+#include "model/MaterialLaws.hpp"
 #include "parallel/Collective.hpp"
 #include "parallel/SliceLookup.hpp"
-#include "model/MaterialLaws.hpp"
 #include "run/OutputFields.hpp"
 #include "scene/SchemaValidator.hpp"
 

@@ -14,8 +14,8 @@
 #include "drivers/RunState.hpp"
 #include "mesh/BackgroundMesh.hpp"
 #include "model/Model.hpp"
-#include "parallel/Comm.hpp"
 #include "operators/SolidOperator.hpp"
+#include "parallel/Comm.hpp"
 #include "scene/Scene.hpp"
 
 namespace efg {

@@ -74,7 +74,8 @@ void check_run_inputs(const CommPtr& comm, const Scene& scene, const BackgroundM
                       const std::string& output_dir, const NodePartition* partition) {
   prepare_output_paths(comm, scene, output_dir, /*create=*/false);
   check_reference_quantities(scene, mesh);
-  read_initial_state(comm, scene, mesh);  // the restart record exists and fits (read again by the run)
+  read_initial_state(comm, scene,
+                     mesh);  // the restart record exists and fits (read again by the run)
   const auto dofs = part_dofs(comm, scene, mesh, partition);
   for (std::size_t i = 0; i < scene.stages.size(); ++i)
     if (scene.stages[i].driver == "implicit")
