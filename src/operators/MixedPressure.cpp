@@ -135,9 +135,10 @@ MixedPressure::MixedPressure(const Model& model, const SolidOperator& solid)
       p.schur = 1.0 + p.kappa_excess / (p.kappa0 + 4.0 * mu / 3.0);
     }
     p.groups = d.cells.group;
-    for (std::size_t q = 0; q < m; ++q)
-      if (model.parts[q].part->formulation == PartFormulation::mixed_up)
-        p.group_base += static_cast<long long>(model.parts[q].pressure_cells.size());
+    const auto& groups = d.pressure_cells;
+    for (std::size_t g = 0; g < groups.size(); ++g)  // cells ascend within a group
+      p.group_id.push_back(static_cast<long long>(
+          model.mesh.global_cell(static_cast<std::size_t>(groups.cells[groups.offsets[g]]))));
     p.finite = d.part->section.formulation != Formulation::small_strain;
     if (const auto rho = model.scene.find_material(d.part->material)->density) {
       p.density = *rho;
@@ -399,11 +400,11 @@ namespace efg {
 void MixedPressure::bulk_group_ids(long long* gid) const {
   for (const auto& p : parts_)
     for (std::size_t c = 0; c < p.volume.size(); ++c)
-      *gid++ = p.group_base + static_cast<long long>(p.groups[c]);
+      *gid++ = p.group_id[p.groups[c]];
 }
 
 long long MixedPressure::bulk_group_id(std::size_t part, std::size_t group) const {
-  return parts_[static_cast<std::size_t>(index_[part])].group_base + static_cast<long long>(group);
+  return parts_[static_cast<std::size_t>(index_[part])].group_id[group];
 }
 
 double MixedPressure::bulk_reference(std::size_t part) const {

@@ -109,7 +109,9 @@ class MixedPressure {
     double kappa = 0;
     double kappa0 = 0, kappa_excess = 0, schur = 1;  // kappa_0, kappa_1, 1 + kappa_1 / M_0
     std::vector<std::size_t> groups;                 // each cell's pressure cell (group)
-    long long group_base = 0;              // global id of the part's group 0 (operators/BulkSplit)
+    // Each group's global id (operators/BulkSplit): the whole mesh's index of its lowest cell,
+    // unique over the parts and the same on every rank, also on a part of a distributed read.
+    std::vector<long long> group_id;
     mutable std::vector<double> excess_g;  // g_c at the split's state (finite strain), as bbar
     double density = 0, wave_speed = 0;    // rho, sqrt((kappa + 4 mu / 3) / rho); 0 without density
     std::vector<double> volume;            // V_c x thickness (2D)

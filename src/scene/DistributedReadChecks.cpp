@@ -28,9 +28,9 @@ void check_distributed_read(Scene& scene) {
   for (const auto& b : scene.rigid_bodies)
     if (b.shape == "mesh")
       refuse(scene, "rigid bodies made of mesh blocks (rigid body '" + b.name + "')");
-  for (const auto& p : scene.parts) {
-    if (p.formulation == PartFormulation::mixed_up) refuse(scene, "mixed u-p parts");
-  }
+  for (const auto& p : scene.parts)
+    if (p.formulation == PartFormulation::mixed_up && p.pressure_cells == PressureCellChoice::patch)
+      refuse(scene, "patch pressure cells (part '" + p.name + "', pressure_cells: patch)");
   const auto files = scene.document["output"]["files"];
   if (files && files.as<std::string>() == "gathered")
     throw InputError(schema::located_message(
