@@ -9,6 +9,7 @@
 #include "io/ExodusWriter.hpp"
 #include "mesh/MeshGenerator.hpp"
 #include "model/Model.hpp"
+#include "operators/ModelOperators.hpp"
 #include "scene/SceneReader.hpp"
 #include "support/TestMeshes.hpp"
 
@@ -137,6 +138,47 @@ TEST(DistributedModel, PerPartSupportsAreTheWholePartsLargest) {
   // The largest cell is 30 (1 - (59/60)^2) = 0.99 long: with dilation 1.5 no support is shorter
   // than 1.49 along x.
   EXPECT_GT(a.a(0)[0], 1.48);
+}
+
+// Mixed u-p pressure cells on a part: every rank's cells carry the ids the whole mesh gives them
+// (the whole mesh's index of the cell), so the pressure maps of the bulk split are one-to-one over
+// the ranks and the same as with the mesh read whole (same partition, same owned cells).
+TEST(DistributedModel, MixedPressureCellsKeepTheWholeMeshsIds) {
+  const auto comm = Tpetra::getDefaultComm();
+  const std::string scene = R"(
+mesh:
+  generate: {element: quad4, lower: [0, 0], upper: [6, 1], cells: [48, 8]}
+  read: distributed
+parts:
+  - {name: block, blocks: [block_1], material: rubber, plane: strain, formulation: mixed_up}
+materials:
+  - {name: rubber, model: linear_elastic, youngs_modulus: 10, poissons_ratio: 0.4999}
+boundary_conditions:
+  - {name: clamp, type: displacement, node_set: xmin, x: 0, y: 0}
+stages:
+  - {name: load, driver: implicit, end_time: 1}
+)";
+  const auto dir = test::scratch_dir("distributed_mixed_np" + std::to_string(comm->getSize()));
+  auto ids = [&](const std::string& text) {
+    const auto model = build_model(comm, parse_scene(text, dir + "/mixed.yaml"));
+    const ModelOperators ops(model);
+    std::vector<long long> id(ops.mixed()->cell_count());
+    ops.mixed()->bulk_group_ids(id.data());
+    return id;
+  };
+  std::string whole = scene;
+  whole.erase(whole.find("  read: distributed\n"), 20);
+  const auto sliced = ids(scene);
+  EXPECT_EQ(sliced, ids(whole));
+  // One-to-one: the ids over all ranks are 0 .. 383, each once.
+  const int mine = static_cast<int>(sliced.size());
+  int total = 0;
+  Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, mine, Teuchos::outArg(total));
+  ASSERT_EQ(total, 48 * 8);
+  std::vector<int> seen(static_cast<std::size_t>(total), 0), all(seen.size(), 0);
+  for (auto g : sliced) ++seen[static_cast<std::size_t>(g)];
+  Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, total, seen.data(), all.data());
+  for (int count : all) EXPECT_EQ(count, 1);
 }
 
 }  // namespace
