@@ -399,8 +399,7 @@ namespace efg {
 
 void MixedPressure::bulk_group_ids(long long* gid) const {
   for (const auto& p : parts_)
-    for (std::size_t c = 0; c < p.volume.size(); ++c)
-      *gid++ = p.group_id[p.groups[c]];
+    for (std::size_t c = 0; c < p.volume.size(); ++c) *gid++ = p.group_id[p.groups[c]];
 }
 
 long long MixedPressure::bulk_group_id(std::size_t part, std::size_t group) const {

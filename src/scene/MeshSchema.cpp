@@ -57,8 +57,9 @@ schema::SpecPtr mesh_spec() {
                        "reach of their supports; no rank holds the whole mesh, results are "
                        "written one file per rank). "
                        "Distributed reading is for solid parts; rigid walls and rigid bodies of "
-                       "analytic shape and an initial state are served, not contact between parts, "
-                       "rigid bodies of mesh blocks or mixed u-p (docs/scaling.md).",
+                       "analytic shape, mixed u-p parts with one pressure per cell and an initial "
+                       "state are served, not contact between parts, rigid bodies of mesh blocks "
+                       "or patch pressure cells (docs/scaling.md).",
                        {"root", "distributed"}),
                 "root")
       .optional("generate", generate_spec("Built-in structured mesh generator.", "block_1"))
