@@ -140,7 +140,8 @@ Level solve(unsigned int degree, unsigned int n) {
   level.dofs = dofs.n_dofs();
   // The energy-norm error, not timed.
   const QGauss<2> fine(degree + 3);
-  FEValues<2> error_values(fe, fine, update_gradients | update_quadrature_points | update_JxW_values);
+  FEValues<2> error_values(fe, fine,
+                           update_gradients | update_quadrature_points | update_JxW_values);
   std::vector<SymmetricTensor<2, 2>> eps_h(fine.size());
   double error = 0, energy = 0;
   for (const auto& cell : dofs.active_cell_iterators()) {
