@@ -23,7 +23,7 @@ ShellRigidContact::ShellRigidContact(const Model& model, const FlatShellOperator
     : model_(model), op_(op), bodies_(model.scene, 3) {
   const auto& overlap = *op.maps().overlap_nodes;
   const auto lid = [&](LocalIndex node) {
-    return overlap.getLocalElement(static_cast<GlobalOrdinal>(node));
+    return overlap.getLocalElement(global_node_id(model, node));
   };
   const auto mass = mass_owned.getLocalViewHost(Tpetra::Access::ReadOnly);
   for (const auto& spec : model.scene.contacts) {

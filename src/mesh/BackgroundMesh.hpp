@@ -47,6 +47,7 @@ struct SideSet {
 struct GlobalNumbering {
   std::vector<GlobalIndex> nodes, cells;
   GlobalIndex node_count = 0, cell_count = 0;
+  std::vector<double> lower, upper;  ///< the whole mesh's bounding box, `dimension` each
 };
 
 struct BackgroundMesh {

@@ -32,4 +32,10 @@ Model build_model(const CommPtr& comm, const std::string& scene_file);
 /// The same from an already parsed scene (tests build scenes from text).
 Model build_model(const CommPtr& comm, Scene scene);
 
+/// The Tpetra id of mesh node `node` in the model's node maps: the whole mesh's index (on a
+/// rank's part of a distributed read the mesh's own indices are local).
+inline GlobalOrdinal global_node_id(const Model& model, LocalIndex node) {
+  return static_cast<GlobalOrdinal>(model.mesh.global_node(static_cast<std::size_t>(node)));
+}
+
 }  // namespace efg

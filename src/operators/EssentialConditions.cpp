@@ -76,7 +76,9 @@ EssentialConditions::EssentialConditions(const Model& model, const SolidOperator
       if (component && component->uses_time()) timed_[c] = setup.prescribed;
     if (setup.method == 0 && selection == Selection::all) add_collocated_nodes(model, op, setup);
     const std::size_t history_begin = committed_.size();
-    const auto sides_found = add_boundary_points(model, op, setup);
+    long long sides_found = 0;  // over the ranks: each integrates its own
+    Teuchos::reduceAll(*model.maps.owned_dofs->getComm(), Teuchos::REDUCE_SUM,
+                       add_boundary_points(model, op, setup), Teuchos::outArg(sides_found));
     if (committed_.size() > history_begin)
       history_ranges_.push_back({c, history_begin, committed_.size()});
     if (setup.method != 0 && sides_found == 0)
@@ -176,7 +178,7 @@ long long EssentialConditions::add_boundary_points(const Model& model, const Sol
     std::map<std::size_t, CellAverages> cell_rows;
     const auto sides =
         node_set_sides(mesh, d.part->blocks, in_set, model.partition.owner, model.partition.rank);
-    sides_found += sides.count;
+    sides_found += static_cast<long long>(sides.here.size());
     for (const auto& [cell, side] : sides.here) {
       const double h = side_longest_edge(mesh, mesh.side_node_indices(cell, side));
       for (const auto& q : side_quadrature(mesh, cell, side)) {

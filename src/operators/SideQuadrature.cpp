@@ -36,7 +36,6 @@ NodeSetSides node_set_sides(const BackgroundMesh& mesh, const std::vector<std::s
     if (!std::all_of(nodes.begin(), nodes.end(),
                      [&](LocalIndex n) { return in_set[static_cast<std::size_t>(n)] != 0; }))
       continue;
-    ++out.count;
     const auto first = *std::min_element(nodes.begin(), nodes.end());
     if (owner[static_cast<std::size_t>(first)] == rank) out.here.emplace_back(cell, side);
   }

@@ -22,10 +22,11 @@ struct SidePoint {
 std::vector<SidePoint> side_quadrature(const BackgroundMesh& mesh, std::size_t cell, int side);
 
 /// The boundary sides of the blocks (discretization/SmoothingFacets boundary_sides) whose nodes
-/// all lie in the node set (`in_set` flags per mesh node): `count` of them on every rank, and
-/// the ones this rank integrates (the owner of a side's lowest node), as (cell, side).
+/// all lie in the node set (`in_set` flags per mesh node) that this rank integrates (the owner
+/// of a side's lowest node), as (cell, side). Their count summed over the ranks is the whole
+/// mesh's (on a rank's part of a distributed read the part's own boundary sides at its edge are
+/// no sides of the mesh, and their lowest node is never owned here).
 struct NodeSetSides {
-  long long count = 0;
   std::vector<std::pair<std::size_t, int>> here;
 };
 NodeSetSides node_set_sides(const BackgroundMesh& mesh, const std::vector<std::string>& blocks,

@@ -370,6 +370,21 @@ LocalMesh distribute_mesh(const CommPtr& comm, const MeshSlice& slice,
   local.mesh.global.node_count = slice.node_count;
   local.mesh.global.cell_count = slice.cell_count;
   local.mesh.global.nodes = std::move(records.ids);
+  {
+    // The whole mesh's bounding box (every node is in one slice): what a part alone cannot tell.
+    const auto dim = static_cast<std::size_t>(slice.dimension);
+    std::vector<double> lo(dim, std::numeric_limits<double>::max()), hi(dim, -lo[0]);
+    for (std::size_t i = 0; i < slice.coordinates.size(); ++i) {
+      lo[i % dim] = std::min(lo[i % dim], slice.coordinates[i]);
+      hi[i % dim] = std::max(hi[i % dim], slice.coordinates[i]);
+    }
+    local.mesh.global.lower.resize(dim);
+    local.mesh.global.upper.resize(dim);
+    Teuchos::reduceAll(*comm, Teuchos::REDUCE_MIN, static_cast<int>(dim), lo.data(),
+                       local.mesh.global.lower.data());
+    Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, static_cast<int>(dim), hi.data(),
+                       local.mesh.global.upper.data());
+  }
   local.owner = std::move(records.owner);
   local.mesh.dimension = slice.dimension;
   local.mesh.source = slice.source;

@@ -63,7 +63,7 @@ std::vector<double> probe_values(const Model& model, const FlatShellOperator::Ve
     for (auto k = v.neighbors.offsets[0]; k < v.neighbors.offsets[1]; ++k) {
       const auto node = cloud.mesh_node[static_cast<std::size_t>(v.neighbors.particles[k])];
       const auto lid = static_cast<std::size_t>(
-          op.maps().overlap_nodes->getLocalElement(static_cast<GlobalOrdinal>(node)));
+          op.maps().overlap_nodes->getLocalElement(global_node_id(model, node)));
       for (std::size_t c = 0; c < nd; ++c) out[c] += v.phi[k] * d(lid * nd + c, 0);
       lids.push_back(static_cast<int>(lid));
       for (std::size_t a = 0; a < 2; ++a) {
@@ -82,7 +82,7 @@ std::vector<double> probe_values(const Model& model, const FlatShellOperator::Ve
         if (nearest >= 0 && dx * dx + dy * dy >= nearest) continue;
         nearest = dx * dx + dy * dy;
         const auto row = static_cast<std::size_t>(
-            op.maps().owned_nodes->getLocalElement(static_cast<GlobalOrdinal>(cloud.mesh_node[r])));
+            op.maps().owned_nodes->getLocalElement(global_node_id(model, cloud.mesh_node[r])));
         for (std::size_t c = 0; c < 3; ++c)
           out[nd + c] = point_resultants[row * shell_strains + 3 + c];
       }

@@ -101,8 +101,7 @@ ShellLineAndPointLoads::ShellLineAndPointLoads(const Model& model, const FlatShe
       });
       for (auto k = v.neighbors.offsets[0]; k < v.neighbors.offsets[1]; ++k) {
         const auto node = cloud.mesh_node[static_cast<std::size_t>(v.neighbors.particles[k])];
-        p.node.push_back(
-            op.maps().overlap_nodes->getLocalElement(static_cast<GlobalOrdinal>(node)));
+        p.node.push_back(op.maps().overlap_nodes->getLocalElement(global_node_id(model, node)));
         p.phi.push_back(v.phi[k]);
       }
     }
@@ -125,8 +124,8 @@ void ShellLineAndPointLoads::add(double time, double ramp,
         double q[nd];
         for (std::size_t c = 0; c < nd; ++c) q[c] = scale * load->value[c].at(x, time);
         for (std::size_t a = 0; a < p.node.size(); ++a) {
-          const auto lid = static_cast<std::size_t>(
-              overlap.getLocalElement(static_cast<GlobalOrdinal>(p.node[a])));
+          const auto lid =
+              static_cast<std::size_t>(overlap.getLocalElement(global_node_id(model_, p.node[a])));
           for (std::size_t c = 0; c < nd; ++c) f(lid * nd + c, 0) += p.length * p.phi[a] * q[c];
         }
       }

@@ -16,13 +16,14 @@ namespace {
 }  // namespace
 
 // Contact between parts needs the other part's whole surface, a rigid body made of mesh blocks
-// its whole blocks, shells their chart of the whole surface, mixed u-p its pressure groups across
-// the cut. (An initial state is read in slices too: run/InitialState.) Rigid walls and rigid bodies of analytic shape
+// its whole blocks, mixed u-p patches their greedy choice over the whole part (a shell surface
+// read in 3D, its chart of the whole surface, is refused once the file shows it:
+// model/DistributedMesh). Shell parts on 2D meshes and an initial state are read in slices too
+// (run/InitialState). Rigid walls and rigid bodies of analytic shape
 // touch owned particles only: a rank's part holds every cell around its owned nodes, so their
 // surface (boundary sides) and boundary shares are those of the whole mesh.
 void check_distributed_read(Scene& scene) {
   if (!scene.distributed_read) return;
-  if (scene.has_shells()) refuse(scene, "shell parts");
   for (const auto& c : scene.contacts)
     if (c.rigid_body.empty()) refuse(scene, "contact between parts (contact '" + c.name + "')");
   for (const auto& b : scene.rigid_bodies)

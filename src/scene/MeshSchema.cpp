@@ -56,10 +56,11 @@ schema::SpecPtr mesh_spec() {
                        "mesh: the particles it owns, the cells around them and those within "
                        "reach of their supports; no rank holds the whole mesh, results are "
                        "written one file per rank). "
-                       "Distributed reading is for solid parts; rigid walls and rigid bodies of "
-                       "analytic shape, mixed u-p parts with one pressure per cell and an initial "
-                       "state are served, not contact between parts, rigid bodies of mesh blocks "
-                       "or patch pressure cells (docs/scaling.md).",
+                       "Distributed reading serves solid parts, mixed u-p parts with one pressure "
+                       "per cell, shell parts on 2D meshes, rigid walls, rigid bodies of analytic "
+                       "shape and an initial state; not yet contact between parts, rigid bodies "
+                       "of mesh blocks, patch pressure cells or a shell surface read in 3D "
+                       "(docs/scaling.md).",
                        {"root", "distributed"}),
                 "root")
       .optional("generate", generate_spec("Built-in structured mesh generator.", "block_1"))

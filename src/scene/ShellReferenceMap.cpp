@@ -24,7 +24,13 @@ ShellMapPoint shell_map_point(const std::vector<ScalarField>& map, const double*
 
 double shell_map_step(const BackgroundMesh& mesh) {
   double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
-  for (std::size_t i = 0; i < mesh.coordinates.size(); ++i) {
+  if (mesh.is_part()) {  // a rank's part of a distributed read: the whole mesh's box
+    for (std::size_t d = 0; d < 2; ++d) {
+      lo[d] = mesh.global.lower[d];
+      hi[d] = mesh.global.upper[d];
+    }
+  }
+  for (std::size_t i = 0; !mesh.is_part() && i < mesh.coordinates.size(); ++i) {
     lo[i % 2] = std::min(lo[i % 2], mesh.coordinates[i]);
     hi[i % 2] = std::max(hi[i % 2], mesh.coordinates[i]);
   }

@@ -74,7 +74,7 @@ FlatShellOperator::FlatShellOperator(const Model& model, int thickness_points,
         d.cloud, ip.x.data(), ip.size(), true,
         [&](std::size_t p) { return "shell point of particle " + std::to_string(ip.node[p] + 1); });
     const auto overlap_lid = [&](LocalIndex node) {
-      return maps_.overlap_nodes->getLocalElement(static_cast<GlobalOrdinal>(node));
+      return maps_.overlap_nodes->getLocalElement(global_node_id(model, node));
     };
     // each particle's thickness, by overlap index, interpolated at the points below
     const auto cloud_thickness = shell_particle_thickness(model, node_thickness_.size());
@@ -97,7 +97,7 @@ FlatShellOperator::FlatShellOperator(const Model& model, int thickness_points,
       p.weight = ip.weight[q];
       p.spacing = shell_spacing(d.cloud, q);  // SCNI and nodal points: owned particles in order
       p.x = {ip.x[2 * q], ip.x[2 * q + 1]};
-      p.owned_row = maps_.owned_nodes->getLocalElement(static_cast<GlobalOrdinal>(ip.node[q]));
+      p.owned_row = maps_.owned_nodes->getLocalElement(global_node_id(model, ip.node[q]));
       const auto entry = [&](LocalIndex particle) {
         const auto [it, added] = slot.emplace(particle, p.node.size());
         if (added) {
@@ -150,7 +150,7 @@ void FlatShellOperator::build_reference() {
     for (auto node : d.cloud.mesh_node) {
       const auto n = static_cast<std::size_t>(node);
       const auto lid = static_cast<std::size_t>(
-          maps_.overlap_nodes->getLocalElement(static_cast<GlobalOrdinal>(node)));
+          maps_.overlap_nodes->getLocalElement(global_node_id(model_, node)));
       const double* xy = mesh.coordinates.data() + 2 * n;
       if (!surface_frames.empty()) {
         const double* P = mesh.surface.data() + 3 * n;
@@ -403,11 +403,12 @@ std::vector<double> FlatShellOperator::physical_values(const Vector& d_owned) co
     const auto& rows = part.particle_values();
     for (std::size_t r = 0; r < part.cloud.owned_count; ++r) {
       const auto row = static_cast<std::size_t>(
-          owned.getLocalElement(static_cast<GlobalOrdinal>(part.cloud.mesh_node[r])));
+          owned.getLocalElement(global_node_id(model_, part.cloud.mesh_node[r])));
       std::vector<int> lids;  // finite rotations: the rotation from the reference director
       for (auto k = rows.offsets[r]; k < rows.offsets[r + 1]; ++k) {
         const auto node = part.cloud.mesh_node[static_cast<std::size_t>(rows.particles[k])];
-        const auto lid = static_cast<std::size_t>(overlap.getLocalElement(node));
+        const auto lid =
+            static_cast<std::size_t>(overlap.getLocalElement(global_node_id(model_, node)));
         for (std::size_t c = 0; c < nd; ++c)
           out[row * nd + c] += rows.values[k] * d(lid * nd + c, 0);
         lids.push_back(static_cast<int>(lid));

@@ -1,5 +1,7 @@
 #include "shells/ShellBoundary.hpp"
 
+#include <Teuchos_CommHelpers.hpp>
+
 #include "discretization/ShapeFunctions.hpp"
 #include "operators/SideQuadrature.hpp"
 #include "shells/ShellSpacing.hpp"
@@ -19,7 +21,7 @@ std::vector<ShellEdgePoint> shell_edge_points(const Model& model, const std::str
     std::vector<SidePoint> sides;
     const auto covered =
         node_set_sides(mesh, d.part->blocks, in_set, model.partition.owner, model.partition.rank);
-    if (sides_found) *sides_found += covered.count;
+    if (sides_found) *sides_found += static_cast<long long>(covered.here.size());
     for (const auto& [cell, side] : covered.here)
       for (const auto& q : side_quadrature(mesh, cell, side)) sides.push_back(q);
     if (sides.empty()) continue;
@@ -48,6 +50,12 @@ std::vector<ShellEdgePoint> shell_edge_points(const Model& model, const std::str
       }
       out.push_back(std::move(e));
     }
+  }
+  if (sides_found) {  // over the ranks: each integrates its own
+    long long all = 0;
+    Teuchos::reduceAll(*model.maps.owned_dofs->getComm(), Teuchos::REDUCE_SUM, *sides_found,
+                       Teuchos::outArg(all));
+    *sides_found = all;
   }
   return out;
 }

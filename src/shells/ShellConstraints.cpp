@@ -5,6 +5,7 @@
 #include <map>
 
 #include "core/Errors.hpp"
+#include "model/NodeSetSize.hpp"
 #include "shells/ShellReference.hpp"
 
 namespace efg {
@@ -17,7 +18,7 @@ ShellConstraints::ShellConstraints(const Model& model, const FlatShellOperator& 
     : op_(op), supports_(supports.size()) {
   const auto& overlap = *op.maps().overlap_nodes;
   const auto lid = [&](LocalIndex node) {
-    return overlap.getLocalElement(static_cast<GlobalOrdinal>(node));
+    return overlap.getLocalElement(global_node_id(model, node));
   };
   // (node, component) -> (value, support); a later support wins on shared nodes (corners).
   std::map<std::pair<LocalIndex, int>, std::pair<double, int>> value;
@@ -79,7 +80,8 @@ ShellConstraints::ShellConstraints(const Model& model, const FlatShellOperator& 
     }
     // A set covering no edge (a pin, a corner) holds its particles by collocation alone: a
     // point support carries a point reaction, with no edge traction to integrate.
-    if (sides == 0 && set->nodes.empty())
+    if (sides == 0 &&
+        (model.mesh.is_part() ? owned_entries_over_ranks(model, *set) : set->nodes.size()) == 0)
       throw InputError(model.scene.file + ": shell support: node set '" + s.node_set +
                        "' is empty");
     if (weak && sides == 0)
