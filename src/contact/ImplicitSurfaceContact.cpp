@@ -43,10 +43,12 @@ ImplicitSurfaceContact::Surface ImplicitSurfaceContact::make_surface(
   const auto& model = ops.model();
   Surface s;
   s.facets = surface_facets(model, parts);
-  const std::size_t nodes = s.facets.mesh_node.size();
+  // (whole meshes only: a distributed read refuses implicit contact between parts, so the
+  // surface's node ids are the mesh's nodes)
+  const std::size_t nodes = s.facets.node_id.size();
   std::vector<int> index(model.mesh.node_count(), -1);
   for (std::size_t n = 0; n < nodes; ++n)
-    index[static_cast<std::size_t>(s.facets.mesh_node[n])] = static_cast<int>(n);
+    index[static_cast<std::size_t>(s.facets.node_id[n])] = static_cast<int>(n);
   std::vector<ParticleRow> mine(nodes);
   std::vector<int> length(nodes, 0), lengths(nodes, 0);
   for (std::size_t p = 0; p < model.parts.size(); ++p) {
@@ -136,8 +138,8 @@ ImplicitSurfaceContact::ImplicitSurfaceContact(const ModelOperators& ops)
         for (std::size_t n = 0; n < k.size(); ++n)
           if (shares.area[n] > 0) k[n] = penalty_stiffness(shares, n, spec.implicit_penalty, E);
       }
-      for (std::size_t n = 0; n < own.facets.mesh_node.size(); ++n) {
-        const auto node = static_cast<std::size_t>(own.facets.mesh_node[n]);
+      for (std::size_t n = 0; n < own.facets.node_id.size(); ++n) {
+        const auto node = static_cast<std::size_t>(own.facets.node_id[n]);
         if (owner[node] != model.partition.rank) continue;
         Candidate c;
         c.node = n;

@@ -26,21 +26,19 @@ SurfaceContact::Surface SurfaceContact::make_surface(const ModelOperators& ops,
   const auto& model = ops.model();
   Surface surface;
   surface.facets = surface_facets(model, parts);
-  std::vector<int> surface_index(model.mesh.node_count(), -1);
-  for (std::size_t s = 0; s < surface.facets.mesh_node.size(); ++s)
-    surface_index[static_cast<std::size_t>(surface.facets.mesh_node[s])] = static_cast<int>(s);
   for (std::size_t p = 0; p < model.parts.size(); ++p) {
     const auto& part = model.parts[p];
     if (std::find(parts.begin(), parts.end(), part.part->name) == parts.end()) continue;
     for (std::size_t j = 0; j < part.cloud.owned_count; ++j) {
-      const int node = surface_index[static_cast<std::size_t>(part.cloud.mesh_node[j])];
+      const int node = surface_node_of(
+          surface.facets, model.mesh.global_node(static_cast<std::size_t>(part.cloud.mesh_node[j])));
       if (node < 0) continue;
       surface.rows.push_back(particle_row(ops, p, j));
       surface.row_node.push_back(node);
       surface.particle.push_back({p, j});
     }
   }
-  const std::size_t nodes = surface.facets.mesh_node.size();
+  const std::size_t nodes = surface.facets.node_id.size();
   surface.x.assign(3 * nodes, 0.0);
   surface.x_old = surface.normal = surface.x;
   return surface;

@@ -42,7 +42,9 @@ OrientedFacets oriented_boundary_facets(const BackgroundMesh& mesh,
       pieces.push_back(nodes);
     else  // quadrilateral side: two triangles along the 0-2 diagonal
       pieces = {{nodes[0], nodes[1], nodes[2]}, {nodes[0], nodes[2], nodes[3]}};
-    for (auto& piece : pieces) {
+    for (std::size_t which = 0; which < pieces.size(); ++which) {
+      auto& piece = pieces[which];
+      s.origin.push_back({cell, static_cast<std::size_t>(side), which});
       double x[3][3] = {};
       for (std::size_t a = 0; a < piece.size(); ++a) {
         const auto at = node_x(mesh, piece[a]);

@@ -6,6 +6,7 @@
 // (model/RigidMeshBlocks).
 #pragma once
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,8 @@ struct OrientedFacets {
   int nodes_per_facet = 2;             ///< 2 (segments) or 3 (triangles)
   std::vector<LocalIndex> nodes;       ///< mesh nodes, nodes_per_facet per facet, outward order
   std::vector<double> reference_size;  ///< longest edge of each facet
+  /// Where each facet comes from: (cell, side, piece of the side), in the order listed.
+  std::vector<std::array<std::size_t, 3>> origin;
 
   std::size_t count() const { return reference_size.size(); }
 };

@@ -24,8 +24,12 @@ namespace {
 // surface (boundary sides) and boundary shares are those of the whole mesh.
 void check_distributed_read(Scene& scene) {
   if (!scene.distributed_read) return;
+  // Implicit contact between parts couples every surface particle's row on every rank.
   for (const auto& c : scene.contacts)
-    if (c.rigid_body.empty()) refuse(scene, "contact between parts (contact '" + c.name + "')");
+    for (const auto& st : scene.stages)
+      if (c.rigid_body.empty() && st.driver == "implicit" && c.stages.includes(st.name))
+        refuse(scene, "implicit contact between parts (contact '" + c.name + "' in stage '" +
+                          st.name + "')");
   for (const auto& b : scene.rigid_bodies)
     if (b.shape == "mesh")
       refuse(scene, "rigid bodies made of mesh blocks (rigid body '" + b.name + "')");
