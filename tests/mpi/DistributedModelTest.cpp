@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "contact/SurfaceFacets.hpp"
 #include "io/ExodusReader.hpp"
 #include "io/ExodusWriter.hpp"
 #include "mesh/MeshGenerator.hpp"
@@ -138,6 +139,24 @@ TEST(DistributedModel, PerPartSupportsAreTheWholePartsLargest) {
   // The largest cell is 30 (1 - (59/60)^2) = 0.99 long: with dilation 1.5 no support is shorter
   // than 1.49 along x.
   EXPECT_GT(a.a(0)[0], 1.48);
+}
+
+// The contact surface of a part on a mesh read in slices is the whole mesh's on every rank: each
+// rank lists the facets whose lowest node it owns (its part's own edge is no surface) and all
+// gather them in the whole mesh's order. The bar's surface: 2 x 16 end quadrilaterals + 4 x 120
+// x 4 side ones, 2 triangles each.
+TEST(DistributedModel, ContactSurfaceIsTheWholeMeshs) {
+  const auto comm = Tpetra::getDefaultComm();
+  const auto path = bar_scene(comm);
+  const auto sliced = build_model(comm, parse_scene(kScene, path));
+  std::string text = kScene;
+  text.replace(text.find(", read: distributed"), 19, "");
+  const auto whole = build_model(comm, parse_scene(text, path));
+  const auto a = surface_facets(sliced, {"bar"}), b = surface_facets(whole, {"bar"});
+  EXPECT_EQ(b.count(), 2u * (2 * 16 + 4 * 120 * 4));
+  EXPECT_EQ(a.node_id, b.node_id);
+  EXPECT_EQ(a.facet, b.facet);
+  EXPECT_EQ(a.reference_size, b.reference_size);
 }
 
 // Mixed u-p pressure cells on a part: every rank's cells carry the ids the whole mesh gives them
