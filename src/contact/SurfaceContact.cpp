@@ -31,7 +31,8 @@ SurfaceContact::Surface SurfaceContact::make_surface(const ModelOperators& ops,
     if (std::find(parts.begin(), parts.end(), part.part->name) == parts.end()) continue;
     for (std::size_t j = 0; j < part.cloud.owned_count; ++j) {
       const int node = surface_node_of(
-          surface.facets, model.mesh.global_node(static_cast<std::size_t>(part.cloud.mesh_node[j])));
+          surface.facets,
+          model.mesh.global_node(static_cast<std::size_t>(part.cloud.mesh_node[j])));
       if (node < 0) continue;
       surface.rows.push_back(particle_row(ops, p, j));
       surface.row_node.push_back(node);

@@ -58,9 +58,9 @@ schema::SpecPtr mesh_spec() {
                        "written one file per rank). "
                        "Distributed reading serves solid parts, mixed u-p parts with one pressure "
                        "per cell, shell parts on 2D meshes, rigid walls, rigid bodies of analytic "
-                       "shape and an initial state; not yet contact between parts, rigid bodies "
-                       "of mesh blocks, patch pressure cells or a shell surface read in 3D "
-                       "(docs/scaling.md).",
+                       "shape, explicit contact between parts and an initial state; not yet "
+                       "implicit contact between parts, rigid bodies of mesh blocks, patch "
+                       "pressure cells or a shell surface read in 3D (docs/scaling.md).",
                        {"root", "distributed"}),
                 "root")
       .optional("generate", generate_spec("Built-in structured mesh generator.", "block_1"))
