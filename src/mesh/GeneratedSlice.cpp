@@ -161,17 +161,20 @@ MeshSlice generate_slice(const GeneratorSpec& main, const std::vector<GeneratorS
           set.nodes.push_back(static_cast<GlobalIndex>(n) + offset);
       slice.node_sets.push_back(std::move(set));
     }
-    NodeSetSlice body_all;
-    body_all.name = b == 0 ? "all" : prefix + "all";
-    body_all.id = ++set_id;
-    body_all.first_entry = static_cast<GlobalIndex>(b == 0 ? first_node : nodes.begin);
-    for (auto n = nodes.begin; n < nodes.end; ++n)
-      body_all.nodes.push_back(static_cast<GlobalIndex>(n) + offset);
+    // The body's "all" (the first body's is the mesh's "all": every node of every body, this
+    // slice's range of them, so it is filled once every body is done).
     if (b == 0) {
-      all = body_all;
-      all.nodes.clear();
-      slice.node_sets.push_back(NodeSetSlice());  // "all" is filled once every body is done
+      all.name = "all";
+      all.id = ++set_id;
+      all.first_entry = static_cast<GlobalIndex>(first_node);
+      slice.node_sets.emplace_back();  // its place: after the first body's planes
     } else {
+      NodeSetSlice body_all;
+      body_all.name = prefix + "all";
+      body_all.id = ++set_id;
+      body_all.first_entry = static_cast<GlobalIndex>(nodes.begin);
+      for (auto n = nodes.begin; n < nodes.end; ++n)
+        body_all.nodes.push_back(static_cast<GlobalIndex>(n) + offset);
       slice.node_sets.push_back(std::move(body_all));
     }
     for (auto n = nodes.begin; n < nodes.end; ++n)
@@ -193,7 +196,6 @@ MeshSlice generate_slice(const GeneratorSpec& main, const std::vector<GeneratorS
     for (auto& n : block.connectivity) n += offset;
     slice.blocks.push_back(std::move(block));
   }
-  // "all" sits after the first body's planes.
   slice.node_sets[boundary_planes(main).size()] = std::move(all);
   return slice;
 }
