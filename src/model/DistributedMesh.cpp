@@ -12,6 +12,7 @@
 #include "mesh/GeneratedSlice.hpp"
 #include "mesh/MeshValidation.hpp"
 #include "model/GradedMaterials.hpp"
+#include "model/SlicedRigidBlocks.hpp"
 #include "parallel/Collective.hpp"
 #include "parallel/LocalMesh.hpp"
 #include "scene/SceneMeshChecks.hpp"
@@ -64,6 +65,8 @@ BackgroundMesh load_distributed_mesh(const CommPtr& comm, Scene& scene, NodePart
       throw located(e);
     }
   });
+  // Rigid bodies of mesh blocks: out of the slices, as the root path takes them out of the mesh.
+  take_rigid_blocks_from_slices(comm, scene, slice);
   // A shell surface read in 3D is charted whole (mesh/SurfaceChart.hpp): not from slices yet.
   if (scene.has_shells() && slice.dimension == 3)
     throw InputError(schema::located_message(

@@ -15,13 +15,13 @@ namespace {
 
 }  // namespace
 
-// Contact between parts needs the other part's whole surface, a rigid body made of mesh blocks
-// its whole blocks, mixed u-p patches their greedy choice over the whole part (a shell surface
-// read in 3D, its chart of the whole surface, is refused once the file shows it:
-// model/DistributedMesh). Shell parts on 2D meshes and an initial state are read in slices too
-// (run/InitialState). Rigid walls and rigid bodies of analytic shape
-// touch owned particles only: a rank's part holds every cell around its owned nodes, so their
-// surface (boundary sides) and boundary shares are those of the whole mesh.
+// Implicit contact between parts needs every surface particle's row on every rank, mixed u-p
+// patches their greedy choice over the whole part (a shell surface read in 3D, its chart of the
+// whole surface, is refused once the file shows it: model/DistributedMesh). Shell parts on 2D
+// meshes, explicit contact between parts, rigid bodies (mesh blocks taken out of the slices:
+// model/SlicedRigidBlocks) and an initial state (run/InitialState) are served: rigid walls and
+// bodies touch owned particles only, and a rank's part holds every cell around its owned nodes,
+// so their surface (boundary sides) and boundary shares are those of the whole mesh.
 void check_distributed_read(Scene& scene) {
   if (!scene.distributed_read) return;
   // Implicit contact between parts couples every surface particle's row on every rank.
@@ -30,9 +30,6 @@ void check_distributed_read(Scene& scene) {
       if (c.rigid_body.empty() && st.driver == "implicit" && c.stages.includes(st.name))
         refuse(scene, "implicit contact between parts (contact '" + c.name + "' in stage '" +
                           st.name + "')");
-  for (const auto& b : scene.rigid_bodies)
-    if (b.shape == "mesh")
-      refuse(scene, "rigid bodies made of mesh blocks (rigid body '" + b.name + "')");
   for (const auto& p : scene.parts)
     if (p.formulation == PartFormulation::mixed_up && p.pressure_cells == PressureCellChoice::patch)
       refuse(scene, "patch pressure cells (part '" + p.name + "', pressure_cells: patch)");
