@@ -18,12 +18,8 @@ struct Facet {
 
 // Every rank's facets to every rank (each lists those whose lowest node it owns: the part's own
 // boundary at its edge is no surface of the mesh, and its nodes are owned elsewhere).
-std::vector<Facet> gathered(const Model& model, std::vector<Facet> mine) {
-  const auto comm = model.maps.owned_dofs->getComm();
-  std::vector<std::vector<Facet>> out(static_cast<std::size_t>(comm->getSize()), mine);
-  std::vector<Facet> all;
-  for (const auto& list : all_to_all(comm, std::move(out)))
-    all.insert(all.end(), list.begin(), list.end());
+std::vector<Facet> gathered(const Model& model, const std::vector<Facet>& mine) {
+  auto all = all_gather(model.maps.owned_dofs->getComm(), mine);
   std::sort(all.begin(), all.end(),
             [](const Facet& a, const Facet& b) { return a.origin < b.origin; });
   return all;
@@ -54,7 +50,7 @@ SurfaceFacets surface_facets(const Model& model, const std::vector<std::string>&
       continue;
     facets.push_back(facet);
   }
-  if (mesh.is_part()) facets = gathered(model, std::move(facets));
+  if (mesh.is_part()) facets = gathered(model, facets);
   SurfaceFacets s;
   s.nodes_per_facet = oriented.nodes_per_facet;
   for (const auto& facet : facets) {

@@ -40,6 +40,20 @@ std::vector<double> read_coordinates(const File& f, int dimension, std::int64_t 
   return xyz;
 }
 
+std::vector<std::string> read_variable_names(const File& f, ex_entity_type type) {
+  int count = 0;
+  f.check(ex_get_variable_param(f.id(), type, &count), "reading variable counts");
+  std::vector<std::vector<char>> storage(static_cast<std::size_t>(count),
+                                         std::vector<char>(kNameLength + 1, '\0'));
+  std::vector<char*> pointers;
+  for (auto& s : storage) pointers.push_back(s.data());
+  if (count > 0)
+    f.check(ex_get_variable_names(f.id(), type, count, pointers.data()), "reading variable names");
+  std::vector<std::string> names;
+  for (auto& s : storage) names.emplace_back(s.data());
+  return names;
+}
+
 std::vector<std::int64_t> read_ids(const File& f, ex_entity_type type, std::int64_t count) {
   std::vector<std::int64_t> ids(static_cast<std::size_t>(count));
   if (count > 0) f.check(ex_get_ids(f.id(), type, ids.data()), "reading entity ids");

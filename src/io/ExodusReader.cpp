@@ -12,20 +12,7 @@ namespace efg {
 namespace {
 
 constexpr int kNameLength = exodus::kNameLength;
-
-std::vector<std::string> read_variable_names(const exodus::File& f, ex_entity_type type) {
-  int count = 0;
-  f.check(ex_get_variable_param(f.id(), type, &count), "reading variable counts");
-  std::vector<std::vector<char>> storage(static_cast<std::size_t>(count),
-                                         std::vector<char>(kNameLength + 1, '\0'));
-  std::vector<char*> pointers;
-  for (auto& s : storage) pointers.push_back(s.data());
-  if (count > 0)
-    f.check(ex_get_variable_names(f.id(), type, count, pointers.data()), "reading variable names");
-  std::vector<std::string> names;
-  for (auto& s : storage) names.emplace_back(s.data());
-  return names;
-}
+using exodus::read_variable_names;
 
 void read_blocks(const exodus::File& f, const std::string& path, std::int64_t nblocks,
                  BackgroundMesh& mesh) {

@@ -19,16 +19,7 @@ ResultsHeader read_results_header(const std::string& path) {
   const auto steps = static_cast<std::size_t>(ex_inquire_int(f.id(), EX_INQ_TIME));
   h.times.resize(steps);
   if (steps > 0) f.check(ex_get_all_times(f.id(), h.times.data()), "reading the record times");
-  int count = 0;
-  f.check(ex_get_variable_param(f.id(), EX_NODAL, &count), "reading variable counts");
-  std::vector<std::vector<char>> storage(static_cast<std::size_t>(count),
-                                         std::vector<char>(exodus::kNameLength + 1, '\0'));
-  std::vector<char*> pointers;
-  for (auto& s : storage) pointers.push_back(s.data());
-  if (count > 0)
-    f.check(ex_get_variable_names(f.id(), EX_NODAL, count, pointers.data()),
-            "reading variable names");
-  for (auto& s : storage) h.nodal_names.emplace_back(s.data());
+  h.nodal_names = exodus::read_variable_names(f, EX_NODAL);
   return h;
 }
 

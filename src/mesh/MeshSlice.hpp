@@ -18,6 +18,19 @@ inline GlobalIndex slice_begin(GlobalIndex count, int rank, int size) {
   return count * rank / size;
 }
 
+/// The rank whose share holds item g: the last r with slice_begin(count, r, size) <= g.
+inline int slice_holder(GlobalIndex count, int size, GlobalIndex g) {
+  int lo = 0, hi = size - 1;
+  while (lo < hi) {
+    const int mid = (lo + hi + 1) / 2;
+    if (slice_begin(count, mid, size) <= g)
+      lo = mid;
+    else
+      hi = mid - 1;
+  }
+  return lo;
+}
+
 struct BlockSlice {
   std::string name;
   std::int64_t id = 0;  ///< Exodus block id

@@ -12,12 +12,16 @@
 
 namespace efg {
 
+InputError rigid_blocks_error(const Scene& scene, std::size_t body, const std::string& message) {
+  return InputError(
+      schema::located_message(scene.file, scene.document["rigid_bodies"][body]["blocks"],
+                              "rigid_bodies[" + std::to_string(body) + "].blocks", message));
+}
+
 namespace {
 
 [[noreturn]] void fail(const Scene& scene, std::size_t body, const std::string& message) {
-  throw InputError(
-      schema::located_message(scene.file, scene.document["rigid_bodies"][body]["blocks"],
-                              "rigid_bodies[" + std::to_string(body) + "].blocks", message));
+  throw rigid_blocks_error(scene, body, message);
 }
 
 bool is_surface_block(const BackgroundMesh& mesh, const std::string& name) {

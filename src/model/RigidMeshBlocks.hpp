@@ -10,10 +10,14 @@
 // mass to move, and does not turn). The remaining nodes, node sets and side sets are renumbered.
 #pragma once
 
+#include "core/Errors.hpp"
 #include "mesh/BackgroundMesh.hpp"
 #include "scene/Scene.hpp"
 
 namespace efg {
+
+/// The error about rigid body `body`'s blocks, located at rigid_bodies[body].blocks.
+InputError rigid_blocks_error(const Scene& scene, std::size_t body, const std::string& message);
 
 /// The blocks of every mesh body (validated as tools: mesh/MeshValidation).
 std::vector<std::string> rigid_block_names(const Scene& scene);

@@ -8,7 +8,6 @@
 #include "parallel/Collective.hpp"
 #include "parallel/Exchange.hpp"
 #include "parallel/SliceLookup.hpp"
-#include "scene/SchemaValidator.hpp"
 
 namespace efg {
 namespace {
@@ -17,36 +16,18 @@ bool named(const std::vector<std::string>& names, const std::string& name) {
   return std::find(names.begin(), names.end(), name) != names.end();
 }
 
-// The rank holding item g when `count` items are dealt by slice_begin.
-int holder(GlobalIndex count, int size, GlobalIndex g) {
-  int lo = 0, hi = size - 1;  // the last r with slice_begin(r) <= g
-  while (lo < hi) {
-    const int mid = (lo + hi + 1) / 2;
-    if (slice_begin(count, mid, size) <= g)
-      lo = mid;
-    else
-      hi = mid - 1;
-  }
-  return lo;
-}
-
 // The rigid blocks whole on every rank (their nodes numbered by position in `nodes`).
 BackgroundMesh gather_rigid_blocks(const CommPtr& comm, const MeshSlice& slice,
                                    const std::vector<std::string>& names,
                                    std::vector<GlobalIndex>& nodes) {
-  const auto p = static_cast<std::size_t>(comm->getSize());
   BackgroundMesh rigid;
   rigid.dimension = slice.dimension;
   rigid.source = slice.source;
   std::vector<std::vector<GlobalIndex>> connectivity;
   for (const auto& block : slice.blocks) {
     if (!named(names, block.name)) continue;
-    // (first cell read, then the cells' nodes) to every rank; in rank order the reads ascend
-    std::vector<GlobalIndex> mine{block.first_read};
-    mine.insert(mine.end(), block.connectivity.begin(), block.connectivity.end());
-    std::vector<GlobalIndex> whole;
-    for (const auto& list : all_to_all(comm, std::vector<std::vector<GlobalIndex>>(p, mine)))
-      whole.insert(whole.end(), list.begin() + 1, list.end());
+    // every rank's cells of the block: in rank order the reads ascend
+    auto whole = all_gather(comm, block.connectivity);
     nodes.insert(nodes.end(), whole.begin(), whole.end());
     connectivity.push_back(std::move(whole));
     ElementBlock b;
@@ -83,7 +64,7 @@ void remove_from_slices(const CommPtr& comm, const std::vector<std::string>& nam
   for (std::size_t i = 0; i < slice.read_node_count(); ++i) {
     const auto g = slice.first_node + static_cast<GlobalIndex>(i);
     if (is_rigid(g)) continue;
-    auto& out = node_out[static_cast<std::size_t>(holder(node_count, p, renumbered(g)))];
+    auto& out = node_out[static_cast<std::size_t>(slice_holder(node_count, p, renumbered(g)))];
     out.insert(out.end(), slice.coordinates.begin() + static_cast<std::ptrdiff_t>(i * dim),
                slice.coordinates.begin() + static_cast<std::ptrdiff_t>((i + 1) * dim));
   }
@@ -111,7 +92,7 @@ void remove_from_slices(const CommPtr& comm, const std::vector<std::string>& nam
     for (std::size_t c = 0; c < block.read_count(); ++c) {
       const auto id =
           block.first_cell + (block.first_read - old_first[b]) + static_cast<GlobalIndex>(c);
-      auto& out = cell_out[static_cast<std::size_t>(holder(cell_count, p, id))];
+      auto& out = cell_out[static_cast<std::size_t>(slice_holder(cell_count, p, id))];
       out.push_back(static_cast<double>(id));  // exact below 2^53
       out.push_back(static_cast<double>(b));
       for (std::size_t a = 0; a < per; ++a)
@@ -163,10 +144,8 @@ void take_rigid_blocks_from_slices(const CommPtr& comm, Scene& scene, MeshSlice&
                        [&](const BlockSlice& b) { return b.name == name; })) {
         std::string all;
         for (const auto& b : slice.blocks) all += (all.empty() ? "" : ", ") + b.name;
-        throw InputError(schema::located_message(
-            scene.file, scene.document["rigid_bodies"][i]["blocks"],
-            "rigid_bodies[" + std::to_string(i) + "].blocks",
-            "the mesh has no element block '" + name + "'; expected one of: " + all));
+        throw rigid_blocks_error(
+            scene, i, "the mesh has no element block '" + name + "'; expected one of: " + all);
       }
   // The old cell ranges of the rigid blocks (for the side sets), before the blocks change.
   std::vector<std::pair<GlobalIndex, GlobalIndex>> rigid_cells;
@@ -183,11 +162,10 @@ void take_rigid_blocks_from_slices(const CommPtr& comm, Scene& scene, MeshSlice&
         if (std::binary_search(rigid_nodes.begin(), rigid_nodes.end(), g))
           for (std::size_t i = 0; i < scene.rigid_bodies.size(); ++i)
             if (scene.rigid_bodies[i].shape == "mesh")
-              throw InputError(schema::located_message(
-                  scene.file, scene.document["rigid_bodies"][i]["blocks"],
-                  "rigid_bodies[" + std::to_string(i) + "].blocks",
+              throw rigid_blocks_error(
+                  scene, i,
                   "the rigid blocks share node " + std::to_string(g + 1) +
-                      " with the parts' blocks; expected a body with nodes of its own"));
+                      " with the parts' blocks; expected a body with nodes of its own");
     }
     validate_mesh(rigid, names);
     extract_rigid_blocks(scene, rigid);  // the bodies' surfaces, from the whole blocks

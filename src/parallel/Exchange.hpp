@@ -50,4 +50,15 @@ std::vector<std::vector<T>> all_to_all(const CommPtr& comm, std::vector<std::vec
   return result;
 }
 
+/// Every rank's list, concatenated in rank order, on every rank (lists small beside the mesh:
+/// a contact surface, a tool's cells).
+template <class T>
+std::vector<T> all_gather(const CommPtr& comm, const std::vector<T>& mine) {
+  std::vector<T> all;
+  for (const auto& list : all_to_all(
+           comm, std::vector<std::vector<T>>(static_cast<std::size_t>(comm->getSize()), mine)))
+    all.insert(all.end(), list.begin(), list.end());
+  return all;
+}
+
 }  // namespace efg

@@ -16,20 +16,6 @@ namespace {
 template <class T>
 using PerRank = std::vector<std::vector<T>>;
 
-// Which rank read item g of `count` items dealt in contiguous ranges (mesh/MeshSlice.hpp).
-class SliceRanges {
- public:
-  SliceRanges(GlobalIndex count, int size) {
-    for (int r = 0; r <= size; ++r) begin_.push_back(slice_begin(count, r, size));
-  }
-  int holder(GlobalIndex g) const {
-    return static_cast<int>(std::upper_bound(begin_.begin(), begin_.end(), g) - begin_.begin()) - 1;
-  }
-
- private:
-  std::vector<GlobalIndex> begin_;
-};
-
 void sort_unique(std::vector<GlobalIndex>& v) {
   std::sort(v.begin(), v.end());
   v.erase(std::unique(v.begin(), v.end()), v.end());
@@ -72,9 +58,9 @@ NodeRecords fetch_nodes(const CommPtr& comm, const MeshSlice& slice,
                         Holders* holders) {
   const auto p = static_cast<std::size_t>(comm->getSize());
   const auto dim = static_cast<std::size_t>(slice.dimension);
-  const SliceRanges ranges(slice.node_count, comm->getSize());
   PerRank<GlobalIndex> ask(p);
-  for (auto g : ids) ask[static_cast<std::size_t>(ranges.holder(g))].push_back(g);
+  for (auto g : ids)
+    ask[static_cast<std::size_t>(slice_holder(slice.node_count, comm->getSize(), g))].push_back(g);
   const auto asked = all_to_all(comm, std::move(ask));
   PerRank<double> x(p);
   PerRank<int> owner(p);
@@ -226,12 +212,12 @@ PerRank<GlobalIndex> route_set_entries(const CommPtr& comm, PerRank<GlobalIndex>
 void add_node_sets(const CommPtr& comm, const MeshSlice& slice, const Holders& node_holders,
                    LocalMesh& local) {
   const auto p = static_cast<std::size_t>(comm->getSize());
-  const SliceRanges ranges(slice.node_count, comm->getSize());
   PerRank<GlobalIndex> out(p);
   for (std::size_t s = 0; s < slice.node_sets.size(); ++s) {
     const auto& set = slice.node_sets[s];
     for (std::size_t i = 0; i < set.nodes.size(); ++i) {
-      auto& o = out[static_cast<std::size_t>(ranges.holder(set.nodes[i]))];
+      auto& o = out[static_cast<std::size_t>(
+          slice_holder(slice.node_count, comm->getSize(), set.nodes[i]))];
       o.insert(o.end(), {static_cast<GlobalIndex>(s), set.first_entry + static_cast<GlobalIndex>(i),
                          set.nodes[i]});
     }
@@ -253,12 +239,12 @@ void add_node_sets(const CommPtr& comm, const MeshSlice& slice, const Holders& n
 void add_side_sets(const CommPtr& comm, const MeshSlice& slice, const Holders& cell_holders,
                    LocalMesh& local) {
   const auto p = static_cast<std::size_t>(comm->getSize());
-  const SliceRanges ranges(slice.cell_count, comm->getSize());
   PerRank<GlobalIndex> out(p);
   for (std::size_t s = 0; s < slice.side_sets.size(); ++s) {
     const auto& set = slice.side_sets[s];
     for (std::size_t i = 0; i < set.cells.size(); ++i) {
-      auto& o = out[static_cast<std::size_t>(ranges.holder(set.cells[i]))];
+      auto& o = out[static_cast<std::size_t>(
+          slice_holder(slice.cell_count, comm->getSize(), set.cells[i]))];
       o.insert(o.end(), {static_cast<GlobalIndex>(s), set.first_entry + static_cast<GlobalIndex>(i),
                          set.cells[i], static_cast<GlobalIndex>(set.sides[i])});
     }

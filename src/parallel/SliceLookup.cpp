@@ -12,14 +12,8 @@ std::vector<double> fetch_from_slices(const CommPtr& comm, GlobalIndex count, st
                                       const std::vector<GlobalIndex>& wanted) {
   const int p = comm->getSize();
   const auto first = slice_begin(count, comm->getRank(), p);
-  // The holder of g: the rank r with slice_begin(r) <= g < slice_begin(r + 1).
-  std::vector<GlobalIndex> begins(static_cast<std::size_t>(p) + 1);
-  for (int r = 0; r <= p; ++r) begins[static_cast<std::size_t>(r)] = slice_begin(count, r, p);
   std::vector<std::vector<GlobalIndex>> ask(static_cast<std::size_t>(p));
-  for (auto g : wanted) {
-    const auto holder = std::upper_bound(begins.begin(), begins.end(), g) - begins.begin() - 1;
-    ask[static_cast<std::size_t>(holder)].push_back(g);
-  }
+  for (auto g : wanted) ask[static_cast<std::size_t>(slice_holder(count, p, g))].push_back(g);
   const auto asked = all_to_all(comm, std::move(ask));
   std::vector<std::vector<double>> answer(static_cast<std::size_t>(p));
   for (std::size_t s = 0; s < asked.size(); ++s)

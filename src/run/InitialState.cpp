@@ -5,8 +5,8 @@
 #include <sstream>
 
 #include <Teuchos_CommHelpers.hpp>
-#include "core/Errors.hpp"
 
+#include "core/Errors.hpp"
 #include "io/ExodusRecordReader.hpp"
 #include "mesh/MeshSlice.hpp"
 #include "model/MaterialLaws.hpp"

@@ -29,10 +29,11 @@ double shell_map_step(const BackgroundMesh& mesh) {
       lo[d] = mesh.global.lower[d];
       hi[d] = mesh.global.upper[d];
     }
-  }
-  for (std::size_t i = 0; !mesh.is_part() && i < mesh.coordinates.size(); ++i) {
-    lo[i % 2] = std::min(lo[i % 2], mesh.coordinates[i]);
-    hi[i % 2] = std::max(hi[i % 2], mesh.coordinates[i]);
+  } else {
+    for (std::size_t i = 0; i < mesh.coordinates.size(); ++i) {
+      lo[i % 2] = std::min(lo[i % 2], mesh.coordinates[i]);
+      hi[i % 2] = std::max(hi[i % 2], mesh.coordinates[i]);
+    }
   }
   return 1e-6 * std::hypot(hi[0] - lo[0], hi[1] - lo[1]);
 }
