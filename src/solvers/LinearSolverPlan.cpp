@@ -12,8 +12,16 @@ using Plan = LinearSolverPlan;
 
 // Smoothed aggregation for vector elasticity (Vanek, Mandel & Brezina 1996): the near-null space
 // (rigid-body modes) is attached by the preconditioner; one aggregate per block of `dim` dofs.
-// The smoother is Ifpack2's ILU(0): Gauss-Seidel and Chebyshev stall on the collocated
-// constraint rows of the transformation method, which are not diagonally dominant. The coarse
+// The smoother is Ifpack2's symmetric Gauss-Seidel in 3D and ILU(0) in 2D (measured, 31st
+// session, docs/implicit.md): on the 3D cantilever block Gauss-Seidel needs 2x ILU(0)'s
+// iterations at 10k particles but as many from 30-40k on (88 against 80 at 40,131 particles,
+// dilation 1.5; 63 against 61 at 29,524, dilation 1.2), without ILU's factorization (setup
+// 3.6 against 11.2 s) and its copy of the matrix (965 against 1,418 MiB), and on 2 ranks 68
+// against 123 iterations (one ILU per rank); on the 2D Timoshenko beam it doubled the
+// iterations (180 against 88 at 33,410 dofs). (The first session chose ILU(0) because
+// Gauss-Seidel stalled on the transformation method's collocated rows; on the 3D blocks clamped
+// by them it converged at every size measured.) Chebyshev took 3x the iterations on the 3D
+// block. The coarse
 // solve is a relaxation, never Amesos2 KLU2 (wrong answers on more than one rank in 13.2). The
 // coarse levels move onto fewer ranks once they are small (Zoltan2 repartitioning below 4,000
 // rows per rank): a coarse ILU on each rank's rows alone is a block-Jacobi coarse solve, which
@@ -26,8 +34,13 @@ Teuchos::ParameterList multigrid_defaults(int dimension) {
   p.set("number of equations", dimension);
   p.set("max levels", 10);
   p.set("coarse: max size", 1000);
-  p.set("smoother: type", "RILUK");
-  p.sublist("smoother: params").set("fact: iluk level-of-fill", 0);
+  if (dimension == 3) {
+    p.set("smoother: type", "RELAXATION");
+    p.sublist("smoother: params").set("relaxation: type", "Symmetric Gauss-Seidel");
+  } else {
+    p.set("smoother: type", "RILUK");
+    p.sublist("smoother: params").set("fact: iluk level-of-fill", 0);
+  }
   p.set("coarse: type", "RILUK");
   p.sublist("coarse: params").set("fact: iluk level-of-fill", 1);
   p.set("aggregation: type", "uncoupled");
