@@ -3,7 +3,8 @@
 # run (docs/implicit.md): the Timoshenko beam at 8,514 dofs (default MUMPS, the previous direct
 # default UMFPACK, the first default GMRES + Ifpack2 ILU(2)), at 33,410 and 132,354 dofs on 1 and
 # 2 ranks (MUMPS; UMFPACK on 1; with SCNI subcells multigrid and MUMPS on 1 and 2), the
-# cantilever block at about 10,000 and 75,000 particles, and the block with SCNI subcells at 30,927 dofs (auxiliary space against multigrid on the Jacobian).
+# cantilever block at about 10,000 and 75,000 particles (multigrid with the Gauss-Seidel smoother
+# against ILU(0), 1 and 2 ranks), and the block with SCNI subcells at 30,927 dofs (auxiliary space against multigrid on the Jacobian).
 # Prints, per model and solver, the Newton phase (linear solver setup + Krylov + assembly inside
 # Newton), the setup share and the linear iterations. Runs longer than EFG_BENCH_TIMEOUT seconds
 # (default 600) are stopped and shown as "> limit". Not part of the test suite.
@@ -87,7 +88,14 @@ for cells in "${models[@]}"; do
   scene "$here/input/block.yaml" "$work/block.yaml" "$cells" ""
   scene "$here/input/block.yaml" "$work/block_old.yaml" "$cells" "
     preconditioner: {Type: Ifpack2}"
+  # The multigrid's smoother: symmetric Gauss-Seidel (default in 3D) against ILU(0) (the
+  # default before the 31st session), 1 and 2 ranks.
+  scene "$here/input/block.yaml" "$work/block_ilu.yaml" "$cells" "
+    preconditioner: {Type: MueLu, \"smoother: type\": RILUK, \"smoother: params\": {\"fact: iluk level-of-fill\": 0}}"
   run "$tag, default" "$work/block.yaml"
+  run "$tag, default, 2 ranks" "$work/block.yaml" 2
+  run "$tag, ILU(0) smoother" "$work/block_ilu.yaml"
+  run "$tag, ILU(0) smoother, 2 ranks" "$work/block_ilu.yaml" 2
   run "$tag, previous" "$work/block_old.yaml"
 done
 # The auxiliary space (docs/implicit.md): the block with SCNI subcells above the direct limit,
