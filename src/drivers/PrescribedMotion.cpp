@@ -20,10 +20,8 @@ PrescribedMotion::PrescribedMotion(const Model& model, const std::string& stage)
       for (int i = 0; i < dim; ++i) {
         const auto& c = bc.components[static_cast<std::size_t>(i)];
         if (!c) continue;  // values from an exact solution are for static verification
-        const int row = model.maps.owned_dofs->getLocalElement(
-            static_cast<GlobalOrdinal>(model.mesh.global_node(static_cast<std::size_t>(node))) *
-                dim +
-            i);
+        const int row =
+            model.maps.owned_dofs->getLocalElement(global_node_id(model, node) * dim + i);
         if (taken.insert(row).second) {
           Dof dof{row, b, i, bc.type == "velocity", &*c, {}, bc.curve};
           for (int k = 0; k < dim; ++k)

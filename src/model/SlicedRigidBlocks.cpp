@@ -155,17 +155,21 @@ void take_rigid_blocks_from_slices(const CommPtr& comm, Scene& scene, MeshSlice&
   std::vector<GlobalIndex> rigid_nodes;
   auto rigid = gather_rigid_blocks(comm, slice, names, rigid_nodes);
   run_collectively(comm, [&] {
-    // A node of a rigid block also in a part's block would be both (the root path's check).
+    // A node of a rigid block also in a part's block would be both (the root path's check,
+    // reported at the first mesh body).
     for (const auto& block : slice.blocks) {
       if (named(names, block.name)) continue;
-      for (auto g : block.connectivity)
-        if (std::binary_search(rigid_nodes.begin(), rigid_nodes.end(), g))
-          for (std::size_t i = 0; i < scene.rigid_bodies.size(); ++i)
-            if (scene.rigid_bodies[i].shape == "mesh")
-              throw rigid_blocks_error(
-                  scene, i,
-                  "the rigid blocks share node " + std::to_string(g + 1) +
-                      " with the parts' blocks; expected a body with nodes of its own");
+      const auto shared =
+          std::find_if(block.connectivity.begin(), block.connectivity.end(), [&](GlobalIndex g) {
+            return std::binary_search(rigid_nodes.begin(), rigid_nodes.end(), g);
+          });
+      if (shared == block.connectivity.end()) continue;
+      const auto body = std::find_if(scene.rigid_bodies.begin(), scene.rigid_bodies.end(),
+                                     [](const auto& b) { return b.shape == "mesh"; });
+      throw rigid_blocks_error(
+          scene, static_cast<std::size_t>(body - scene.rigid_bodies.begin()),
+          "the rigid blocks share node " + std::to_string(*shared + 1) +
+              " with the parts' blocks; expected a body with nodes of its own");
     }
     validate_mesh(rigid, names);
     extract_rigid_blocks(scene, rigid);  // the bodies' surfaces, from the whole blocks

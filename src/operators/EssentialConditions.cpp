@@ -1,6 +1,7 @@
 #include "operators/EssentialConditions.hpp"
 
 #include "model/GradedMaterials.hpp"
+#include "model/Model.hpp"
 
 #include <Teuchos_CommHelpers.hpp>
 #include <Tpetra_Export.hpp>
@@ -133,10 +134,7 @@ void EssentialConditions::add_collocated_nodes(const Model& model, const SolidOp
         if (!setup.mask[static_cast<std::size_t>(i)]) continue;
         NodeConstraint nc;
         nc.condition = setup.index;
-        nc.owned_row = owned_rows->getLocalElement(
-            static_cast<GlobalOrdinal>(model.mesh.global_node(static_cast<std::size_t>(node))) *
-                dim_ +
-            i);
+        nc.owned_row = owned_rows->getLocalElement(global_node_id(model, node) * dim_ + i);
         nc.component = i;
         nc.scale = s;
         for (int k = 0; k < dim_; ++k) nc.X[static_cast<std::size_t>(k)] = d.cloud.x(row)[k];

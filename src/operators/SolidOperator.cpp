@@ -29,8 +29,7 @@ SolidOperator::SolidOperator(const Model& model) : dim_(model.mesh.dimension), h
     PartData p;
     p.name = d.part->name;
     for (auto node : d.cloud.mesh_node) {
-      const auto lid = overlap.getLocalElement(
-          static_cast<GlobalOrdinal>(model.mesh.global_node(static_cast<std::size_t>(node))));
+      const auto lid = overlap.getLocalElement(global_node_id(model, node));
       if (lid == Teuchos::OrdinalTraits<int>::invalid())
         throw std::logic_error("particle missing from the overlap map");
       p.overlap_node.push_back(lid);

@@ -13,10 +13,8 @@ void apply_initial_conditions(const Model& model, RunState& state) {
       for (int k = 0; k < dim; ++k)
         X[k] = model.mesh.coordinates[static_cast<std::size_t>(node * dim + k)];
       for (int i = 0; i < dim; ++i) {
-        const auto row = model.maps.owned_dofs->getLocalElement(
-            static_cast<GlobalOrdinal>(model.mesh.global_node(static_cast<std::size_t>(node))) *
-                dim +
-            i);
+        const auto row =
+            model.maps.owned_dofs->getLocalElement(global_node_id(model, node) * dim + i);
         // The generalized value takes the value at the particle (as LS-DYNA's EFG nodal values).
         view(static_cast<std::size_t>(row), 0) = ic.value[static_cast<std::size_t>(i)].at(X, 0.0);
       }
