@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <array>
 #include <string>
 #include <vector>
 
@@ -50,6 +51,12 @@ struct GlobalNumbering {
   std::vector<double> lower, upper;  ///< the whole mesh's bounding box, `dimension` each
 };
 
+/// The plane a shell surface read in 3D is projected onto for its chart (mesh/SurfaceChart.hpp):
+/// through `origin`, chart axes e1 and e2, unit normal.
+struct SurfaceProjection {
+  std::array<double, 3> origin{}, e1{}, e2{}, normal{};
+};
+
 struct BackgroundMesh {
   int dimension = 3;
   std::vector<double> coordinates;  ///< node after node, `dimension` components each
@@ -61,6 +68,9 @@ struct BackgroundMesh {
   /// its nodes' 3D positions, 3 per node, while `coordinates` hold their 2D chart coordinates
   /// (dimension 2). Empty for every other mesh.
   std::vector<double> surface;
+  /// With `surface`: the projection of the whole surface (the chart's plane; the same on every
+  /// rank, also when a rank holds only its part of the surface).
+  SurfaceProjection chart_plane;
   /// Set on a rank's part of a mesh read in slices; empty for a whole mesh, whose indices are the
   /// global ones.
   GlobalNumbering global;

@@ -57,6 +57,7 @@ MeshPiece mesh_piece(const BackgroundMesh& mesh, const std::function<bool(LocalI
   m.coordinates =
       restricted(mesh.coordinates, static_cast<std::size_t>(mesh.dimension), piece.nodes);
   m.surface = restricted(mesh.surface, 3, piece.nodes);
+  m.chart_plane = mesh.chart_plane;
 
   // Blocks keep their order, names and ids (epu matches them by id), empty ones included.
   std::vector<LocalIndex> piece_cell(mesh.cell_count(), kAbsent);

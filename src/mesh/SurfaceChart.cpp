@@ -26,11 +26,6 @@ V3 unit(V3 a) {
   return a;
 }
 
-/// The 3D positions of a surface mesh, before or after charting.
-const std::vector<double>& positions(const BackgroundMesh& mesh) {
-  return mesh.surface.empty() ? mesh.coordinates : mesh.surface;
-}
-
 /// Calls f(cell, corner a, b, c) for the triangles of every cell (a quad as (0 1 2), (0 2 3)).
 template <class F>
 void for_each_triangle(const BackgroundMesh& mesh, F&& f) {
@@ -54,21 +49,14 @@ bool is_surface_mesh(const BackgroundMesh& mesh) {
   return true;
 }
 
-SurfaceProjection surface_projection(const BackgroundMesh& mesh) {
-  const auto& x = positions(mesh);
+std::array<double, 3> triangle_normal(const double* a, const double* b, const double* c) {
+  return cross3(minus(b, a), minus(c, a));
+}
+
+SurfaceProjection projection_from(const V3& normal_sum, const V3& origin) {
   SurfaceProjection p;
-  V3 normal{};
-  for_each_triangle(
-      mesh, [&](std::size_t, const ElementBlock&, LocalIndex a, LocalIndex b, LocalIndex c) {
-        const double* xa = &x[3 * static_cast<std::size_t>(a)];
-        const auto n = cross3(minus(&x[3 * static_cast<std::size_t>(b)], xa),
-                              minus(&x[3 * static_cast<std::size_t>(c)], xa));
-        for (std::size_t k = 0; k < 3; ++k) normal[k] += n[k];  // twice the area-weighted normal
-      });
-  p.normal = unit(normal);
-  const std::size_t nodes = x.size() / 3;
-  for (std::size_t i = 0; i < nodes; ++i)
-    for (std::size_t k = 0; k < 3; ++k) p.origin[k] += x[3 * i + k] / static_cast<double>(nodes);
+  p.normal = unit(normal_sum);
+  p.origin = origin;
   // x along the global x axis projected, unless that is within 25 degrees of the normal
   V3 axis = std::abs(p.normal[0]) < std::cos(25.0 * M_PI / 180.0) ? V3{1, 0, 0} : V3{0, 1, 0};
   const double along = dot3(axis, p.normal);
@@ -76,6 +64,41 @@ SurfaceProjection surface_projection(const BackgroundMesh& mesh) {
   p.e1 = unit(axis);
   p.e2 = cross3(p.normal, p.e1);
   return p;
+}
+
+SurfaceProjection surface_projection(const BackgroundMesh& mesh) {
+  if (!mesh.surface.empty()) return mesh.chart_plane;
+  const auto& x = mesh.coordinates;
+  V3 normal{}, origin{};
+  for_each_triangle(
+      mesh, [&](std::size_t, const ElementBlock&, LocalIndex a, LocalIndex b, LocalIndex c) {
+        const auto n = triangle_normal(&x[3 * static_cast<std::size_t>(a)],
+                                       &x[3 * static_cast<std::size_t>(b)],
+                                       &x[3 * static_cast<std::size_t>(c)]);
+        for (std::size_t k = 0; k < 3; ++k) normal[k] += n[k];  // twice the area-weighted normal
+      });
+  const std::size_t nodes = x.size() / 3;
+  for (std::size_t i = 0; i < nodes; ++i)
+    for (std::size_t k = 0; k < 3; ++k) origin[k] += x[3 * i + k] / static_cast<double>(nodes);
+  return projection_from(normal, origin);
+}
+
+void check_chart_triangle(const SurfaceProjection& p, std::size_t cell, const std::string& block,
+                          const double* a, const double* b, const double* c) {
+  const auto n = triangle_normal(a, b, c);
+  const double cosine = dot3(n, p.normal) / std::sqrt(dot3(n, n));
+  if (cosine > std::cos(80.0 * M_PI / 180.0)) return;
+  const auto shown = [](double v) { return std::abs(v) < 1e-12 ? 0.0 : v; };  // no -1e-17
+  std::ostringstream o;
+  o.precision(4);
+  o << "shell surface: cell " << cell + 1 << " (block '" << block << "') turns its normal by "
+    << std::acos(std::max(-1.0, std::min(1.0, cosine))) * 180 / M_PI
+    << " degrees from the surface's mean normal (" << shown(p.normal[0]) << ", "
+    << shown(p.normal[1]) << ", " << shown(p.normal[2])
+    << "); the chart projects the surface onto the plane normal to it and needs every cell "
+       "within 80 degrees (cells oriented alike, no fold): split the surface into parts "
+       "that are, or give it as a 2D mesh with parts[].shell.reference";
+  throw InputError(o.str());
 }
 
 std::string surface_chart_summary(const BackgroundMesh& mesh, bool given_chart) {
@@ -114,30 +137,15 @@ std::array<double, 2> chart_coordinates(const SurfaceProjection& p, const double
 }
 
 void chart_surface_mesh(BackgroundMesh& mesh, const SurfaceChartMap& chart) {
+  const auto p = surface_projection(mesh);
   auto map = chart;
   if (!map) {  // the projection, once every cell is checked against it
-    const auto p = surface_projection(mesh);
-    const double steepest = std::cos(80.0 * M_PI / 180.0);
+    const double* x = mesh.coordinates.data();
     for_each_triangle(mesh, [&](std::size_t cell, const ElementBlock& block, LocalIndex a,
                                 LocalIndex b, LocalIndex c) {
-      const double* x = mesh.coordinates.data();
-      const double* xa = x + 3 * static_cast<std::size_t>(a);
-      const auto n = cross3(minus(x + 3 * static_cast<std::size_t>(b), xa),
-                            minus(x + 3 * static_cast<std::size_t>(c), xa));
-      const double cosine = dot3(n, p.normal) / std::sqrt(dot3(n, n));
-      if (cosine > steepest) return;
-      const auto shown = [](double v) { return std::abs(v) < 1e-12 ? 0.0 : v; };  // no -1e-17
-      std::ostringstream o;
-      o.precision(4);
-      o << "shell surface: cell " << cell + 1 << " (block '" << block.name
-        << "') turns its normal by "
-        << std::acos(std::max(-1.0, std::min(1.0, cosine))) * 180 / M_PI
-        << " degrees from the surface's mean normal (" << shown(p.normal[0]) << ", "
-        << shown(p.normal[1]) << ", " << shown(p.normal[2])
-        << "); the chart projects the surface onto the plane normal to it and needs every cell "
-           "within 80 degrees (cells oriented alike, no fold): split the surface into parts "
-           "that are, or give it as a 2D mesh with parts[].shell.reference";
-      throw InputError(o.str());
+      check_chart_triangle(p, cell, block.name, x + 3 * static_cast<std::size_t>(a),
+                           x + 3 * static_cast<std::size_t>(b),
+                           x + 3 * static_cast<std::size_t>(c));
     });
     map = [p](const double* X, double* c) {
       const auto xy = chart_coordinates(p, X);
@@ -147,6 +155,7 @@ void chart_surface_mesh(BackgroundMesh& mesh, const SurfaceChartMap& chart) {
   }
   const std::size_t nodes = mesh.node_count();
   mesh.surface = mesh.coordinates;
+  mesh.chart_plane = p;
   std::vector<double> coordinates(2 * nodes);
   for (std::size_t i = 0; i < nodes; ++i) map(&mesh.surface[3 * i], &coordinates[2 * i]);
   mesh.coordinates = std::move(coordinates);

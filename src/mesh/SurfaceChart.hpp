@@ -22,13 +22,24 @@ namespace efg {
 /// Whether `mesh` is a shell surface in 3D: dimension 3 and only 2D cells (quad4, tri3).
 bool is_surface_mesh(const BackgroundMesh& mesh);
 
-struct SurfaceProjection {
-  std::array<double, 3> origin{}, e1{}, e2{}, normal{};
-};
-
-/// The chart's projection of a surface mesh (before or after chart_surface_mesh: from
-/// mesh.surface when set, else from the 3D coordinates).
+/// The chart's projection of a surface mesh: after chart_surface_mesh (mesh.surface set) the one
+/// it charted with, before it the one computed from the 3D coordinates.
 SurfaceProjection surface_projection(const BackgroundMesh& mesh);
+
+/// Twice the area-weighted normal of the triangle with corners a, b, c (3D points).
+std::array<double, 3> triangle_normal(const double* a, const double* b, const double* c);
+
+/// The projection of a surface whose triangles' normals (triangle_normal) sum to `normal_sum`
+/// and whose nodes' centroid is `origin`: the plane normal to the mean normal through the
+/// centroid, x along the projection of the global x axis (of y when x is within 25 degrees of
+/// the normal).
+SurfaceProjection projection_from(const std::array<double, 3>& normal_sum,
+                                  const std::array<double, 3>& origin);
+
+/// Throws InputError naming cell `cell` (0-based over the mesh's blocks) of block `block` when
+/// its triangle a, b, c turns its normal by 80 degrees or more from the projection's.
+void check_chart_triangle(const SurfaceProjection& p, std::size_t cell, const std::string& block,
+                          const double* a, const double* b, const double* c);
 
 /// The chart coordinates of a 3D point (its projection onto the chart's plane).
 std::array<double, 2> chart_coordinates(const SurfaceProjection& p, const double* X);

@@ -13,10 +13,12 @@
 #include "mesh/MeshValidation.hpp"
 #include "model/GradedMaterials.hpp"
 #include "model/SlicedRigidBlocks.hpp"
+#include "model/SurfaceSliceChart.hpp"
 #include "parallel/Collective.hpp"
 #include "parallel/LocalMesh.hpp"
 #include "scene/SceneMeshChecks.hpp"
 #include "scene/SceneNodeSets.hpp"
+#include "scene/ShellSurfacePoints.hpp"
 #include "scene/SchemaValidator.hpp"
 
 namespace efg {
@@ -67,18 +69,26 @@ BackgroundMesh load_distributed_mesh(const CommPtr& comm, Scene& scene, NodePart
   });
   // Rigid bodies of mesh blocks: out of the slices, as the root path takes them out of the mesh.
   take_rigid_blocks_from_slices(comm, scene, slice);
-  // A shell surface read in 3D is charted whole (mesh/SurfaceChart.hpp): not from slices yet.
-  if (scene.has_shells() && slice.dimension == 3)
-    throw InputError(schema::located_message(
-        scene.file, scene.document["mesh"]["read"], "mesh.read",
-        "a distributed read does not chart a shell surface read in 3D yet; expected read: root "
-        "(rank 0 reads the mesh whole) for this scene, or a 2D shell mesh"));
+  // A shell surface read in 3D: charted in its slices, the halo sized in the chart.
+  std::vector<double> positions;
+  SurfaceProjection plane;
+  const auto nodes = slice.node_count;
+  const bool surface = is_surface_slice(scene, slice);  // the same on every rank
+  if (surface)
+    positions = chart_surface_slice(comm, scene, slice, plane);
+  else if (scene.surface_chart)
+    refuse_chart_without_surface(scene);
   std::vector<std::string> names;
   for (const auto& b : slice.blocks) names.push_back(b.name);
   auto local = distribute_mesh(
       comm, slice, [&](const BlockExtents& extents) { return halo_width(scene, names, extents); });
   slice = MeshSlice();  // the slice has served: free it before the discretization
   auto& mesh = local.mesh;
+  if (surface) {
+    mesh.surface = surface_positions(comm, nodes, positions, mesh);
+    mesh.chart_plane = plane;
+    chart_shell_points(scene, mesh);
+  }
   run_collectively(comm, [&] {
     try {
       validate_mesh(mesh);
@@ -92,7 +102,12 @@ BackgroundMesh load_distributed_mesh(const CommPtr& comm, Scene& scene, NodePart
   partition.owned.clear();
   for (std::size_t n = 0; n < partition.owner.size(); ++n)
     if (partition.owner[n] == partition.rank) partition.owned.push_back(static_cast<LocalIndex>(n));
-  add_scene_node_sets(scene, mesh);
+  // a box may hold none of this part's nodes, but some rank's
+  add_scene_node_sets(scene, mesh, [&](bool held) {
+    int mine = held ? 1 : 0, any = 0;
+    Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, mine, Teuchos::outArg(any));
+    return any > 0;
+  });
   run_collectively(comm, [&] {
     check_scene_against_mesh(scene, mesh, MeshOwners{comm, &partition.owner, partition.rank});
   });

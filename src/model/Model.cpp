@@ -12,6 +12,7 @@
 #include "mesh/SurfaceChart.hpp"
 #include "model/ContactGhosts.hpp"
 #include "model/DistributedMesh.hpp"
+#include "model/SurfaceSliceChart.hpp"
 #include "model/GradedMaterials.hpp"
 #include "model/RigidMeshBlocks.hpp"
 #include "parallel/Collective.hpp"
@@ -50,11 +51,7 @@ BackgroundMesh load_mesh(const CommPtr& comm, Scene& scene) {
                                                std::string("mesh.") + key, e.what()));
     }
   });
-  if (scene.surface_chart && mesh.surface.empty())
-    throw InputError(schema::located_message(
-        scene.file, scene.document["mesh"]["chart"], "mesh.chart",
-        "a chart is for a shell surface read in 3D (SHELL4 or TRISHELL3 cells, shell parts); "
-        "this mesh is none: expected no chart"));
+  if (scene.surface_chart && mesh.surface.empty()) refuse_chart_without_surface(scene);
   extract_rigid_blocks(scene, mesh);  // rigid bodies of mesh blocks: no particles
   chart_shell_points(scene, mesh);
   add_scene_node_sets(scene, mesh);

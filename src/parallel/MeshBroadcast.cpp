@@ -63,6 +63,7 @@ std::vector<char> serialize(const BackgroundMesh& mesh) {
   w.str(mesh.source);
   w.vec(mesh.coordinates);
   w.vec(mesh.surface);
+  w.pod(mesh.chart_plane);
   w.pod(static_cast<std::uint64_t>(mesh.blocks.size()));
   for (const auto& b : mesh.blocks) {
     w.str(b.name);
@@ -94,6 +95,7 @@ BackgroundMesh deserialize(const std::vector<char>& bytes) {
   mesh.source = r.str();
   mesh.coordinates = r.vec<double>();
   mesh.surface = r.vec<double>();
+  mesh.chart_plane = r.pod<SurfaceProjection>();
   mesh.blocks.resize(r.pod<std::uint64_t>());
   for (auto& b : mesh.blocks) {
     b.name = r.str();

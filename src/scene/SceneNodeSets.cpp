@@ -20,7 +20,8 @@ void read_node_set_input(Scene& scene) {
   }
 }
 
-void add_scene_node_sets(const Scene& scene, BackgroundMesh& mesh) {
+void add_scene_node_sets(const Scene& scene, BackgroundMesh& mesh,
+                         const std::function<bool(bool)>& held_anywhere) {
   // a shell surface read in 3D: boxes in 3D, around its nodes' 3D positions
   const bool surface = !mesh.surface.empty();
   const auto dim = surface ? std::size_t{3} : static_cast<std::size_t>(mesh.dimension);
@@ -74,7 +75,8 @@ void add_scene_node_sets(const Scene& scene, BackgroundMesh& mesh) {
       }
       if (inside) made.nodes.push_back(n);
     }
-    if (made.nodes.empty()) {
+    const bool held = !made.nodes.empty();
+    if (held_anywhere ? !held_anywhere(held) : !held) {
       std::ostringstream o;
       o << "the box holds no node" << (spec.within.empty() ? "" : " of '" + spec.within + "'")
         << "; expected a box around at least one node (bounds are included)";

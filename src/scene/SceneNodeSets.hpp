@@ -3,6 +3,8 @@
 // condition, a load, an initial value, the history) can name them.
 #pragma once
 
+#include <functional>
+
 #include "mesh/BackgroundMesh.hpp"
 #include "scene/Scene.hpp"
 
@@ -13,7 +15,11 @@ void read_node_set_input(Scene& scene);
 
 /// Appends the scene's node sets to mesh.node_sets (ids after the mesh's largest). Throws
 /// InputError at file:line:col and key path for a name the mesh already has, an unknown
-/// `within`, corners of the wrong dimension or inverted, and a box that holds no node.
-void add_scene_node_sets(const Scene& scene, BackgroundMesh& mesh);
+/// `within`, corners of the wrong dimension or inverted, and a box that holds no node. On a
+/// rank's part of a mesh (read in slices) a box may hold none of the part's nodes:
+/// `held_anywhere(held here)` answers whether any rank's part holds one (a reduction, called
+/// once per scene node set on every rank, in the same order).
+void add_scene_node_sets(const Scene& scene, BackgroundMesh& mesh,
+                         const std::function<bool(bool)>& held_anywhere = {});
 
 }  // namespace efg

@@ -18,10 +18,12 @@ surface (every node on the sphere / cylinder to 1e-12 R). With --np2 each level 
 as well and the probes agree to --rank-tol.
 
 --chart "X; Y" gives the scene's mesh.chart (expressions of x, y, z; default: efg's projection).
+--distributed: the 2-rank twin of --np2 reads the mesh in slices (mesh.read: distributed; the
+chart made from the slices, model/SurfaceSliceChart.hpp), each rank keeping its part.
 
 usage: run_surface.py EFG OUTDIR hemisphere|roof [--levels 12,16,24] [--check-from 16]
                       [--bound 0.02] [--final-bound B] [--np2 MPIRUN] [--rank-tol 1e-7]
-                      [--chart "X; Y"]
+                      [--chart "X; Y"] [--distributed]
 """
 import argparse
 import json
@@ -160,6 +162,7 @@ def main():
     a.add_argument("--np2")
     a.add_argument("--rank-tol", type=float, default=1e-7)
     a.add_argument("--chart")
+    a.add_argument("--distributed", action="store_true")
     args = a.parse_args()
     make, column, scale, reference, distance = CASES[args.case]
     os.makedirs(args.outdir, exist_ok=True)
@@ -184,7 +187,11 @@ def main():
         if off > 1e-12:
             errors.append("%d x %d: the results mesh is off the surface by %.1e R" % (n, n, off))
         if args.np2:
-            _, twin = run(args.efg, args.outdir, text, name + "_np2", args.np2)
+            twin_text = text.replace("mesh: {file:", "mesh: {read: distributed, file:")
+            if args.distributed and twin_text == text:
+                sys.exit("the scene has no 'mesh: {file:' to read in slices")
+            _, twin = run(args.efg, args.outdir, twin_text if args.distributed else text,
+                          name + "_np2", args.np2)
             worst = max(abs(twin["probes"][k] - v) / max(abs(v), 1e-300)
                         for k, v in report["probes"].items() if abs(v) > 1e-6 * abs(
                             report["probes"][column]))
