@@ -2,8 +2,8 @@
 // Plain data, shared by the reader, the generator, the writer and the discretization.
 #pragma once
 
-#include <cstdint>
 #include <array>
+#include <cstdint>
 #include <string>
 #include <vector>
 

@@ -18,8 +18,8 @@
 #include "parallel/LocalMesh.hpp"
 #include "scene/SceneMeshChecks.hpp"
 #include "scene/SceneNodeSets.hpp"
-#include "scene/ShellSurfacePoints.hpp"
 #include "scene/SchemaValidator.hpp"
+#include "scene/ShellSurfacePoints.hpp"
 
 namespace efg {
 
@@ -74,8 +74,11 @@ BackgroundMesh load_distributed_mesh(const CommPtr& comm, Scene& scene, NodePart
   SurfaceProjection plane;
   const auto nodes = slice.node_count;
   const bool surface = is_surface_slice(scene, slice);  // the same on every rank
-  if (surface)
-    positions = chart_surface_slice(comm, scene, slice, plane);
+  if (surface) try {
+      positions = chart_surface_slice(comm, scene, slice, plane);
+    } catch (const InputError& e) {
+      throw located(e);  // a cell the projection cannot chart, named by this rank
+    }
   else if (scene.surface_chart)
     refuse_chart_without_surface(scene);
   std::vector<std::string> names;

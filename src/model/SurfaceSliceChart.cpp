@@ -54,12 +54,12 @@ std::vector<double> chart_surface_slice(const CommPtr& comm, const Scene& scene,
   const auto corners = fetch_from_slices(comm, slice.node_count, 3, slice.coordinates, ids);
   // twice the area-weighted normal and the centroid, summed over the slices
   double sums[6] = {0, 0, 0, 0, 0, 0}, total[6] = {0, 0, 0, 0, 0, 0};
-  for_each_slice_triangle(slice, ids, corners,
-                          [&](std::size_t, const BlockSlice&, const double* a, const double* b,
-                              const double* c) {
-                            const auto n = triangle_normal(a, b, c);
-                            for (std::size_t k = 0; k < 3; ++k) sums[k] += n[k];
-                          });
+  for_each_slice_triangle(
+      slice, ids, corners,
+      [&](std::size_t, const BlockSlice&, const double* a, const double* b, const double* c) {
+        const auto n = triangle_normal(a, b, c);
+        for (std::size_t k = 0; k < 3; ++k) sums[k] += n[k];
+      });
   const auto nodes = slice.read_node_count();
   for (std::size_t i = 0; i < nodes; ++i)
     for (std::size_t k = 0; k < 3; ++k)
@@ -68,11 +68,10 @@ std::vector<double> chart_surface_slice(const CommPtr& comm, const Scene& scene,
   plane = projection_from({total[0], total[1], total[2]}, {total[3], total[4], total[5]});
   if (!scene.surface_chart)
     run_collectively(comm, [&] {
-      for_each_slice_triangle(slice, ids, corners,
-                              [&](std::size_t cell, const BlockSlice& block, const double* a,
-                                  const double* b, const double* c) {
-                                check_chart_triangle(plane, cell, block.name, a, b, c);
-                              });
+      for_each_slice_triangle(
+          slice, ids, corners,
+          [&](std::size_t cell, const BlockSlice& block, const double* a, const double* b,
+              const double* c) { check_chart_triangle(plane, cell, block.name, a, b, c); });
     });
   auto positions = std::move(slice.coordinates);
   slice.coordinates.assign(2 * nodes, 0.0);

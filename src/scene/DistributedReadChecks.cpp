@@ -16,9 +16,8 @@ namespace {
 }  // namespace
 
 // Implicit contact between parts needs every surface particle's row on every rank, mixed u-p
-// patches their greedy choice over the whole part (a shell surface read in 3D, its chart of the
-// whole surface, is refused once the file shows it: model/DistributedMesh). Shell parts on 2D
-// meshes, explicit contact between parts, rigid bodies (mesh blocks taken out of the slices:
+// patches their greedy choice over the whole part. Shell parts on 2D meshes and on surfaces read
+// in 3D (charted from the slices: model/SurfaceSliceChart), explicit contact between parts, rigid bodies (mesh blocks taken out of the slices:
 // model/SlicedRigidBlocks) and an initial state (run/InitialState) are served: rigid walls and
 // bodies touch owned particles only, and a rank's part holds every cell around its owned nodes,
 // so their surface (boundary sides) and boundary shares are those of the whole mesh.

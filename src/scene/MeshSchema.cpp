@@ -57,10 +57,10 @@ schema::SpecPtr mesh_spec() {
                        "reach of their supports; no rank holds the whole mesh, results are "
                        "written one file per rank). "
                        "Distributed reading serves solid parts, mixed u-p parts with one pressure "
-                       "per cell, shell parts on 2D meshes, rigid walls and rigid bodies, "
-                       "explicit contact between parts and an initial state; not yet implicit "
-                       "contact between parts, patch pressure cells or a shell surface read in "
-                       "3D (docs/scaling.md).",
+                       "per cell, shell parts on 2D meshes and on surfaces read in 3D, rigid "
+                       "walls and rigid bodies, explicit contact between parts and an initial "
+                       "state; not yet implicit contact between parts or patch pressure cells "
+                       "(docs/scaling.md).",
                        {"root", "distributed"}),
                 "root")
       .optional("generate", generate_spec("Built-in structured mesh generator.", "block_1"))

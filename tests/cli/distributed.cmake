@@ -143,6 +143,16 @@ efg_distributed_twin(NAME twin_shell_surface_roof SCENE tests/scenes/shells/roof
   REPLACE "mesh: {file: meshes/roof_4.exo}"
           "mesh:\n  file: ${PROJECT_SOURCE_DIR}/tests/scenes/shells/meshes/roof_4.exo"
           "fields: [displacement, thickness]" "fields: [displacement, thickness]\n  history: history.csv")
+# A surface the projection cannot chart, read in slices: the rank holding the cell names it as
+# the root path does (exit 2, nothing written).
+file(READ ${PROJECT_SOURCE_DIR}/tests/scenes/bad/shell_surface_folds.yaml text)
+string(REPLACE "mesh: {file: ../shells/meshes/half_cylinder_16.exo}"
+  "mesh: {file: ${PROJECT_SOURCE_DIR}/tests/scenes/shells/meshes/half_cylinder_16.exo, read: distributed}" text "${text}")
+file(WRITE ${CMAKE_CURRENT_BINARY_DIR}/distributed_surface_folds.yaml "${text}")
+efg_cli_test(NAME cli.shell_surface_distributed_folds
+  COMMAND "${EFG_MPIRUN2}|${efg}|run|${CMAKE_CURRENT_BINARY_DIR}/distributed_surface_folds.yaml|-o|${EFG_CLI_TMP}/distributed_surface_folds"
+  EXIT 2 RANKS 2
+  TEXT "mesh.file: shell surface: cell 1 (block 'block_1') turns its normal by 84.37 degrees from the surface's mean normal (0, 0, -1)")
 efg_distributed_twin(NAME twin_shell_surface_strip SCENE tests/scenes/shells/strip_tapered_mesh.yaml
   HISTORY history.csv FIELDS displacement_x displacement_z thickness TOL 2e-8
   REPLACE "mesh: {file: meshes/tapered_strip_16.exo}"
