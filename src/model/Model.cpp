@@ -14,6 +14,7 @@
 #include "model/DistributedMesh.hpp"
 #include "model/GradedMaterials.hpp"
 #include "model/RigidMeshBlocks.hpp"
+#include "model/ScenePoints.hpp"
 #include "model/SurfaceSliceChart.hpp"
 #include "parallel/Collective.hpp"
 #include "parallel/MeshBroadcast.hpp"
@@ -107,6 +108,7 @@ Model build_model(const CommPtr& comm, Scene scene) {
   model.partition.ghosts.assign(ghosts.begin(), ghosts.end());
   model.maps = make_dof_maps(comm, model.partition, model.mesh.dimension, model.mesh.global);
   memory.mark("ghosts and maps");
+  check_scene_points(comm, model);
   return model;
 }
 
