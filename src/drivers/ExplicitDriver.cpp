@@ -197,11 +197,9 @@ ExplicitDriver::StepPlan ExplicitDriver::plan_steps(const Vector& d, double star
                 "stresses next to it are approximate (2-25 %, docs/boundary_conditions.md, "
                 "\"Explicit stages\"); method nitsche enforces it exactly at a smaller stable "
                 "step");
-  if (fixed && fixed_dt > plan.dt_crit && !stage_.settings["allow_unstable_dt"].as<bool>())
-    throw NumericalError("stage '" + stage_.name + "': dt = " + std::to_string(fixed_dt) +
-                         " exceeds the stable time step " + std::to_string(plan.dt_crit) +
-                         " at step 0, t = " + std::to_string(start) +
-                         "; lower dt, or set allow_unstable_dt: true to run it anyway");
+  if (fixed)
+    refuse_unstable_dt(stage_.name, fixed_dt, plan.dt_crit, start,
+                       stage_.settings["allow_unstable_dt"].as<bool>());
   refuse_endless(stage_.end_time - start, plan.dt, plan.dt_crit);
   return plan;
 }

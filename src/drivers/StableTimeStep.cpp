@@ -171,6 +171,17 @@ double StableTimeStep::estimate(const Vector& d_owned) {
   return std::floor(dt / unit) * unit;
 }
 
+void refuse_unstable_dt(const std::string& stage, double dt, double dt_crit, double start,
+                        bool allowed) {
+  if (allowed || !(dt > dt_crit)) return;
+  std::ostringstream o;
+  o.precision(6);
+  o << "stage '" << stage << "': dt = " << dt << " exceeds the stable time step " << dt_crit << " ("
+    << dt / dt_crit << " times it) at step 0, t = " << start
+    << "; lower dt, or set allow_unstable_dt: true to run it anyway";
+  throw NumericalError(o.str());
+}
+
 void refuse_endless_stage(const std::string& file, const std::string& stage, double span, double dt,
                           double dt_crit) {
   // A stage that needs more steps than any machine can take (end_time: 1e300, dt: 1e-300) is

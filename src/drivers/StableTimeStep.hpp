@@ -61,6 +61,12 @@ class StableTimeStep {
   double omega_ = 0, ritz_ = 0, residual_ = 0;
 };
 
+/// Throws NumericalError when a stage's given dt exceeds the stable step dt_crit at its start
+/// (time `start`), unless allowed (allow_unstable_dt). Both steps in significant digits (a
+/// fixed-point 0.000000 hid a stable step of 3.7e-8).
+void refuse_unstable_dt(const std::string& stage, double dt, double dt_crit, double start,
+                        bool allowed);
+
 /// Throws InputError (naming the scene file) when a stage of length `span` needs more than 1e10
 /// steps of dt; warns above 1e7.
 void refuse_endless_stage(const std::string& file, const std::string& stage, double span, double dt,

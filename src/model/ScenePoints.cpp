@@ -23,8 +23,7 @@ void check_scene_points(const CommPtr& comm, const Model& model) {
       } catch (const NumericalError& e) {
         std::ostringstream o;
         o << "the point lies beyond the supports of part '" << p.part->name
-          << "', whose particle is nearest (" << e.what()
-          << "); expected a point inside a part";
+          << "', whose particle is nearest (" << e.what() << "); expected a point inside a part";
         throw InputError(schema::located_message(scene.file, key, path, o.str()));
       }
     });

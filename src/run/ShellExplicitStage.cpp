@@ -79,11 +79,9 @@ ShellExplicitSummary run_shell_explicit_stage(const Model& model, const FlatShel
   const bool fixed = static_cast<bool>(settings["dt"]);
   const double dt =
       fixed ? settings["dt"].as<double>() : settings["dt_scale"].as<double>() * summary.dt_crit;
-  if (fixed && dt > summary.dt_crit && !settings["allow_unstable_dt"].as<bool>())
-    throw NumericalError("stage '" + stage.name + "': dt = " + std::to_string(dt) +
-                         " exceeds the stable time step " + std::to_string(summary.dt_crit) +
-                         " at step 0, t = " + std::to_string(start) +
-                         "; lower dt, or set allow_unstable_dt: true to run it anyway");
+  if (fixed)
+    refuse_unstable_dt(stage.name, dt, summary.dt_crit, start,
+                       settings["allow_unstable_dt"].as<bool>());
   refuse_endless_stage(scene.file, stage.name, stage.end_time - start, dt, summary.dt_crit);
   summary.dt = dt;
   {
