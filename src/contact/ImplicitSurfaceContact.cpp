@@ -36,19 +36,21 @@ void ImplicitSurfaceContact::Surface::corners(std::size_t f, double (&corner)[3]
 
 // The rows of every surface particle on every rank: each owner contributes its rows (global
 // node ids, values, reference position) to a sum over ranks in a layout all ranks agree on
-// (row lengths first), then the ids become overlap ids - all of them ghosts here
-// (model/ContactGhosts), or the model was built without them: a bug, said so.
+// (row lengths first), then the ids become overlap ids - all of them ghosts here, remote ones
+// included (model/ContactGhosts), or the model was built without them: a bug, said so.
 ImplicitSurfaceContact::Surface ImplicitSurfaceContact::make_surface(
     const ModelOperators& ops, const std::vector<std::string>& parts) const {
   const auto& model = ops.model();
   Surface s;
   s.facets = surface_facets(model, parts);
-  // (whole meshes only: a distributed read refuses implicit contact between parts, so the
-  // surface's node ids are the mesh's nodes)
+  // the surface node of each mesh node here (on a rank's part of a mesh read in slices the
+  // surface's nodes beyond the part have none: their owners give their rows)
   const std::size_t nodes = s.facets.node_id.size();
   std::vector<int> index(model.mesh.node_count(), -1);
-  for (std::size_t n = 0; n < nodes; ++n)
-    index[static_cast<std::size_t>(s.facets.node_id[n])] = static_cast<int>(n);
+  for (std::size_t n = 0; n < nodes; ++n) {
+    const auto local = model.mesh.node_of(s.facets.node_id[n]);
+    if (local >= 0) index[static_cast<std::size_t>(local)] = static_cast<int>(n);
+  }
   std::vector<ParticleRow> mine(nodes);
   std::vector<int> length(nodes, 0), lengths(nodes, 0);
   for (std::size_t p = 0; p < model.parts.size(); ++p) {
@@ -139,7 +141,9 @@ ImplicitSurfaceContact::ImplicitSurfaceContact(const ModelOperators& ops)
           if (shares.area[n] > 0) k[n] = penalty_stiffness(shares, n, spec.implicit_penalty, E);
       }
       for (std::size_t n = 0; n < own.facets.node_id.size(); ++n) {
-        const auto node = static_cast<std::size_t>(own.facets.node_id[n]);
+        const auto local = model.mesh.node_of(own.facets.node_id[n]);
+        if (local < 0) continue;  // beyond this rank's part of the mesh: owned elsewhere
+        const auto node = static_cast<std::size_t>(local);
         if (owner[node] != model.partition.rank) continue;
         Candidate c;
         c.node = n;

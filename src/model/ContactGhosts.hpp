@@ -5,7 +5,9 @@
 // those contacts' parts (the exact union of the rows, gathered over ranks): it can then evaluate
 // any surface particle's position from its own overlap values and assemble any pair. Built only
 // when such a contact acts in an implicit stage; a band of a few particles around the contact
-// surfaces, replicated (docs/contact.md states the cost).
+// surfaces, replicated (docs/contact.md states the cost). On a rank's part of a mesh read in
+// slices the band's nodes beyond the part are remote ghosts: overlap entries without a mesh node
+// (their rows come from their owners, contact/ImplicitSurfaceContact).
 #pragma once
 
 #include <vector>
@@ -17,8 +19,13 @@ namespace efg {
 /// The contact is between deformable parts and acts in some implicit stage.
 bool acts_between_parts_implicitly(const Scene& scene, const ContactSpec& contact);
 
+struct ContactRowGhosts {
+  std::vector<LocalIndex> held;     ///< mesh nodes of this rank (its part), ascending
+  std::vector<GlobalIndex> remote;  ///< whole-mesh indices of nodes its part does not hold
+};
+
 /// The row nodes of the surface particles of the parts of such contacts that this rank does not
 /// own, ascending (none without such contacts). Collective.
-std::vector<LocalIndex> contact_row_ghosts(const CommPtr& comm, const Model& model);
+ContactRowGhosts contact_row_ghosts(const CommPtr& comm, const Model& model);
 
 }  // namespace efg

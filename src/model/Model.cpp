@@ -104,8 +104,10 @@ Model build_model(const CommPtr& comm, Scene scene) {
   for (const auto& d : model.parts)
     for (std::size_t i = d.cloud.owned_count; i < d.cloud.size(); ++i)
       ghosts.insert(d.cloud.mesh_node[i]);
-  for (auto n : contact_row_ghosts(comm, model)) ghosts.insert(n);
+  auto contact = contact_row_ghosts(comm, model);
+  ghosts.insert(contact.held.begin(), contact.held.end());
   model.partition.ghosts.assign(ghosts.begin(), ghosts.end());
+  model.partition.remote_ghosts = std::move(contact.remote);
   model.maps = make_dof_maps(comm, model.partition, model.mesh.dimension, model.mesh.global);
   memory.mark("ghosts and maps");
   check_scene_points(comm, model);

@@ -17,7 +17,8 @@ struct DofMaps {
   int dofs_per_node = 1;
 };
 
-/// Overlap maps list the owned entries first, then the ghosts, each ascending. `numbering`: the
+/// Overlap maps list the owned entries first, then the ghosts, each ascending, then the remote
+/// ghosts (partition.remote_ghosts). `numbering`: the
 /// whole mesh's index of each of the partition's mesh nodes (mesh.global; empty for a whole mesh).
 DofMaps make_dof_maps(const CommPtr& comm, const NodePartition& partition, int dofs_per_node,
                       const GlobalNumbering& numbering = {});

@@ -16,6 +16,10 @@ struct NodePartition {
   std::vector<int> owner;          ///< owning rank of every mesh node (same on all ranks)
   std::vector<LocalIndex> owned;   ///< mesh nodes owned here, ascending
   std::vector<LocalIndex> ghosts;  ///< mesh nodes owned elsewhere but needed here, ascending
+  /// On a rank's part of a mesh read in slices: whole-mesh indices of nodes needed here that
+  /// the part does not hold (the rows of other ranks' contact surface particles,
+  /// model/ContactGhosts), ascending; their overlap entries follow the ghosts'.
+  std::vector<GlobalIndex> remote_ghosts;
 };
 
 /// Partitions the nodes with Zoltan2 RCB (one part per rank); every rank gets the whole map.

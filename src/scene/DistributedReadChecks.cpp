@@ -15,20 +15,15 @@ namespace {
 
 }  // namespace
 
-// Implicit contact between parts needs every surface particle's row on every rank, mixed u-p
-// patches their greedy choice over the whole part. Shell parts on 2D meshes and on surfaces read
-// in 3D (charted from the slices: model/SurfaceSliceChart), explicit contact between parts, rigid bodies (mesh blocks taken out of the slices:
+// Mixed u-p patches need their greedy choice over the whole part. Shell parts on 2D meshes and on
+// surfaces read in 3D (charted from the slices: model/SurfaceSliceChart), explicit and implicit
+// contact between parts (the surfaces gathered; the rows of other ranks' surface particles as
+// remote ghosts: model/ContactGhosts), rigid bodies (mesh blocks taken out of the slices:
 // model/SlicedRigidBlocks) and an initial state (run/InitialState) are served: rigid walls and
 // bodies touch owned particles only, and a rank's part holds every cell around its owned nodes,
 // so their surface (boundary sides) and boundary shares are those of the whole mesh.
 void check_distributed_read(Scene& scene) {
   if (!scene.distributed_read) return;
-  // Implicit contact between parts couples every surface particle's row on every rank.
-  for (const auto& c : scene.contacts)
-    for (const auto& st : scene.stages)
-      if (c.rigid_body.empty() && st.driver == "implicit" && c.stages.includes(st.name))
-        refuse(scene, "implicit contact between parts (contact '" + c.name + "' in stage '" +
-                          st.name + "')");
   for (const auto& p : scene.parts)
     if (p.formulation == PartFormulation::mixed_up && p.pressure_cells == PressureCellChoice::patch)
       refuse(scene, "patch pressure cells (part '" + p.name + "', pressure_cells: patch)");
