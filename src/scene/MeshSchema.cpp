@@ -58,9 +58,8 @@ schema::SpecPtr mesh_spec() {
                        "written one file per rank). "
                        "Distributed reading serves solid parts, mixed u-p parts with one pressure "
                        "per cell, shell parts on 2D meshes and on surfaces read in 3D, rigid "
-                       "walls and rigid bodies, explicit contact between parts and an initial "
-                       "state; not yet implicit contact between parts or patch pressure cells "
-                       "(docs/scaling.md).",
+                       "walls and rigid bodies, explicit and implicit contact between parts and "
+                       "an initial state; not yet patch pressure cells (docs/scaling.md).",
                        {"root", "distributed"}),
                 "root")
       .optional("generate", generate_spec("Built-in structured mesh generator.", "block_1"))
