@@ -8,11 +8,14 @@
 namespace efg {
 
 PartDiscretization discretize_part(const BackgroundMesh& mesh, const PartSpec& part,
-                                   const NodePartition& partition) {
+                                   const NodePartition& partition,
+                                   const PressureCells* whole_groups) {
   PartDiscretization d;
   d.part = &part;
   const bool mixed = part.formulation == PartFormulation::mixed_up;
-  if (mixed) d.pressure_cells = pressure_cells(mesh, part);
+  if (mixed)
+    d.pressure_cells =
+        whole_groups ? groups_on_part(mesh, *whole_groups) : pressure_cells(mesh, part);
   {
     Teuchos::TimeMonitor timer(
         *Teuchos::TimeMonitor::getNewCounter("efg: neighbour search (ghosts, particles)"));

@@ -37,7 +37,11 @@ struct PartDiscretization {
 };
 
 /// Ghost layer from the part's support reach and cell size, particle cloud, integration points.
+/// `whole_groups`: a mixed u-p part's pressure groups chosen over the whole mesh (whole-mesh cell
+/// indices) when `mesh` is a rank's part of it (discretization/PressureCells, groups_on_part);
+/// null: chosen here.
 PartDiscretization discretize_part(const BackgroundMesh& mesh, const PartSpec& part,
-                                   const NodePartition& partition);
+                                   const NodePartition& partition,
+                                   const PressureCells* whole_groups = nullptr);
 
 }  // namespace efg

@@ -153,6 +153,29 @@ PressureCells pressure_cells(const BackgroundMesh& mesh, const PartSpec& part) {
   return collect(mesh, cells, std::move(groups));
 }
 
+PressureCells groups_on_part(const BackgroundMesh& mesh, const PressureCells& whole) {
+  PressureCells out;
+  out.group.assign(mesh.cell_count(), PressureCells::none);
+  const auto& here = mesh.global.cells;  // ascending: a cell's position is its local index
+  std::vector<std::size_t> local;
+  for (std::size_t g = 0; g < whole.size(); ++g) {
+    local.clear();
+    for (auto k = whole.offsets[g]; k < whole.offsets[g + 1]; ++k) {
+      const auto id = static_cast<GlobalIndex>(whole.cells[k]);
+      const auto it = std::lower_bound(here.begin(), here.end(), id);
+      if (it == here.end() || *it != id) break;
+      local.push_back(static_cast<std::size_t>(it - here.begin()));
+    }
+    if (local.size() != whole.offsets[g + 1] - whole.offsets[g]) continue;  // not all here
+    for (auto c : local) {
+      out.cells.push_back(c);
+      out.group[c] = static_cast<std::uint32_t>(out.size());
+    }
+    out.offsets.push_back(out.cells.size());
+  }
+  return out;
+}
+
 std::vector<std::size_t> owned_groups(const BackgroundMesh& mesh, const PressureCells& groups,
                                       const std::vector<int>& owner, int rank) {
   std::vector<std::size_t> owned;

@@ -43,6 +43,11 @@ struct PressureCells {
 /// The pressure cells of `part` by its `pressure_cells` choice (cell or patch).
 PressureCells pressure_cells(const BackgroundMesh& mesh, const PartSpec& part);
 
+/// Groups chosen over the whole mesh (`whole`, in whole-mesh cell indices; model/
+/// SlicedPressurePatches) on a rank's part of it (mesh.global set): the groups of which the part
+/// holds every cell, in its own cell indices, in the same order.
+PressureCells groups_on_part(const BackgroundMesh& mesh, const PressureCells& whole);
+
 /// One group per cell of `part` (the `cell` choice; also for a single cell's row).
 PressureCells single_cells(const BackgroundMesh& mesh, const PartSpec& part);
 

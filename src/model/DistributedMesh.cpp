@@ -24,7 +24,7 @@
 namespace efg {
 
 double halo_width(const Scene& scene, const std::vector<std::string>& block_names,
-                  const std::vector<std::vector<double>>& extents) {
+                  const std::vector<std::vector<double>>& extents, double group_diameter) {
   double halo = 0;
   for (const auto& part : scene.parts)
     for (std::size_t b = 0; b < block_names.size(); ++b) {
@@ -44,12 +44,13 @@ double halo_width(const Scene& scene, const std::vector<std::string>& block_name
       }
       const double reach = part.section.support == SupportShape::sphere ? largest_dilation * largest
                                                                         : std::sqrt(reach2);
-      halo = std::max(halo, 2 * reach + std::sqrt(diameter2));
+      halo = std::max(halo, 2 * reach + std::max(std::sqrt(diameter2), group_diameter));
     }
   return halo * (1 + 1e-9);  // the ghost layer's own arithmetic may round the other way
 }
 
-BackgroundMesh load_distributed_mesh(const CommPtr& comm, Scene& scene, NodePartition& partition) {
+BackgroundMesh load_distributed_mesh(const CommPtr& comm, Scene& scene, NodePartition& partition,
+                                     SlicedPatches& patches) {
   // The key that named the mesh: messages about it point there.
   const auto key = scene.generator ? "generate" : "file";
   auto located = [&](const InputError& e) {
@@ -81,10 +82,13 @@ BackgroundMesh load_distributed_mesh(const CommPtr& comm, Scene& scene, NodePart
     }
   else if (scene.surface_chart)
     refuse_chart_without_surface(scene);
+  // Pressure patches are chosen over the whole part, before the halo is sized by them.
+  patches = patches_from_slices(comm, scene, slice);
   std::vector<std::string> names;
   for (const auto& b : slice.blocks) names.push_back(b.name);
-  auto local = distribute_mesh(
-      comm, slice, [&](const BlockExtents& extents) { return halo_width(scene, names, extents); });
+  auto local = distribute_mesh(comm, slice, [&](const BlockExtents& extents) {
+    return halo_width(scene, names, extents, patches.largest_diameter);
+  });
   slice = MeshSlice();  // the slice has served: free it before the discretization
   auto& mesh = local.mesh;
   if (surface) {

@@ -9,6 +9,7 @@
 #pragma once
 
 #include "mesh/BackgroundMesh.hpp"
+#include "model/SlicedPressurePatches.hpp"
 #include "parallel/Comm.hpp"
 #include "parallel/NodePartition.hpp"
 #include "scene/Scene.hpp"
@@ -18,12 +19,17 @@ namespace efg {
 /// The rank's part of scene.mesh_file and its owners (partition: rank, size, owner, owned).
 /// Throws InputError on every rank when the file, or the scene against it, is wrong, or when the
 /// scene uses what a distributed read does not provide yet.
-BackgroundMesh load_distributed_mesh(const CommPtr& comm, Scene& scene, NodePartition& partition);
+/// `patches` receives the pressure patches of mixed u-p parts with pressure_cells: patch, chosen
+/// over the whole part (model/SlicedPressurePatches).
+BackgroundMesh load_distributed_mesh(const CommPtr& comm, Scene& scene, NodePartition& partition,
+                                     SlicedPatches& patches);
 
 /// The halo width of a distributed read: the largest ghost radius any part can have, from the
 /// largest cell extent per block and direction (parallel/LocalMesh.hpp, BlockExtents; block
 /// names in the same order).
+/// `group_diameter`: the largest pressure patch's (a patch's row couples the particles of its
+/// whole boundary).
 double halo_width(const Scene& scene, const std::vector<std::string>& block_names,
-                  const std::vector<std::vector<double>>& extents);
+                  const std::vector<std::vector<double>>& extents, double group_diameter = 0);
 
 }  // namespace efg

@@ -74,11 +74,12 @@ Model build_model(const CommPtr& comm, Scene scene) {
   memory.reset();
   Model model;
   model.scene = std::move(scene);
+  SlicedPatches patches;  // a distributed read's pressure patches, chosen over whole parts
   if (model.scene.distributed_read) {
     // Each rank reads its slice and keeps its part: read, partition (RCB of the slices) and mesh
     // checks in one phase.
     Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewCounter("efg: scene and mesh"));
-    model.mesh = load_distributed_mesh(comm, model.scene, model.partition);
+    model.mesh = load_distributed_mesh(comm, model.scene, model.partition, patches);
     memory.mark("scene and mesh");
     memory.mark("partition");
   } else {
@@ -96,8 +97,13 @@ Model build_model(const CommPtr& comm, Scene scene) {
     memory.mark("partition");
   }
   run_collectively(comm, [&] {
-    for (const auto& part : model.scene.parts)
-      model.parts.push_back(discretize_part(model.mesh, part, model.partition));
+    for (std::size_t p = 0; p < model.scene.parts.size(); ++p) {
+      const auto* whole = p < patches.part.size() && patches.part[p].size() > 0
+                              ? &patches.part[p]
+                              : nullptr;
+      model.parts.push_back(
+          discretize_part(model.mesh, model.scene.parts[p], model.partition, whole));
+    }
   });
   memory.mark("shape functions and integration points");
   std::set<LocalIndex> ghosts;
