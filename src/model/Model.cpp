@@ -98,9 +98,8 @@ Model build_model(const CommPtr& comm, Scene scene) {
   }
   run_collectively(comm, [&] {
     for (std::size_t p = 0; p < model.scene.parts.size(); ++p) {
-      const auto* whole = p < patches.part.size() && patches.part[p].size() > 0
-                              ? &patches.part[p]
-                              : nullptr;
+      const auto* whole =
+          p < patches.part.size() && patches.part[p].size() > 0 ? &patches.part[p] : nullptr;
       model.parts.push_back(
           discretize_part(model.mesh, model.scene.parts[p], model.partition, whole));
     }

@@ -7,8 +7,7 @@
 
 namespace efg {
 
-SlicedPatches patches_from_slices(const CommPtr& comm, const Scene& scene,
-                                  const MeshSlice& slice) {
+SlicedPatches patches_from_slices(const CommPtr& comm, const Scene& scene, const MeshSlice& slice) {
   SlicedPatches out;
   out.part.resize(scene.parts.size());
   const auto dim = static_cast<std::size_t>(slice.dimension);

@@ -27,7 +27,6 @@ struct SlicedPatches {
 
 /// The patches of the scene's mixed u-p parts with pressure_cells: patch, from the slices.
 /// Collective.
-SlicedPatches patches_from_slices(const CommPtr& comm, const Scene& scene,
-                                  const MeshSlice& slice);
+SlicedPatches patches_from_slices(const CommPtr& comm, const Scene& scene, const MeshSlice& slice);
 
 }  // namespace efg

@@ -56,10 +56,9 @@ schema::SpecPtr mesh_spec() {
                        "mesh: the particles it owns, the cells around them and those within "
                        "reach of their supports; no rank holds the whole mesh, results are "
                        "written one file per rank). "
-                       "Distributed reading serves solid parts, mixed u-p parts with one pressure "
-                       "per cell, shell parts on 2D meshes and on surfaces read in 3D, rigid "
-                       "walls and rigid bodies, explicit and implicit contact between parts and "
-                       "an initial state; not yet patch pressure cells (docs/scaling.md).",
+                       "Distributed reading serves every scene the root read does (solid, mixed "
+                       "u-p and shell parts, rigid walls and bodies, contact between parts, an "
+                       "initial state; docs/scaling.md).",
                        {"root", "distributed"}),
                 "root")
       .optional("generate", generate_spec("Built-in structured mesh generator.", "block_1"))
