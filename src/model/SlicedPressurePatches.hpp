@@ -5,8 +5,9 @@
 // their order; coordinates only for the patches' diameters), chooses the same patches as the
 // root path does, and keeps them as whole-mesh cell indices until its part of the mesh exists;
 // each rank then keeps the patches all of whose cells its part holds (every patch it owns: the
-// halo is grown by the largest patch diameter). The gathered connectivity is transient: some 8
-// indices per cell on every rank while the patches are chosen.
+// halo is grown by the largest patch diameter). What is gathered is transient but replicated:
+// the part's connectivity (some 8 indices per cell) and its nodes' coordinates, on every rank
+// while the patches are chosen.
 #pragma once
 
 #include <vector>
