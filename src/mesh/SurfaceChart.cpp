@@ -45,7 +45,7 @@ void for_each_triangle(const BackgroundMesh& mesh, F&& f) {
 bool is_surface_mesh(const BackgroundMesh& mesh) {
   if (mesh.dimension != 3 || mesh.blocks.empty()) return false;
   for (const auto& block : mesh.blocks)
-    if (block.type != CellType::quad4 && block.type != CellType::tri3) return false;
+    if (!is_surface_cell(block.type)) return false;
   return true;
 }
 

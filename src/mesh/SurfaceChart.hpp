@@ -19,6 +19,11 @@
 
 namespace efg {
 
+/// Whether cells of this type can make a shell surface read in 3D (quad4, tri3).
+inline bool is_surface_cell(CellType type) {
+  return type == CellType::quad4 || type == CellType::tri3;
+}
+
 /// Whether `mesh` is a shell surface in 3D: dimension 3 and only 2D cells (quad4, tri3).
 bool is_surface_mesh(const BackgroundMesh& mesh);
 

@@ -16,6 +16,7 @@
 #include "model/SurfaceSliceChart.hpp"
 #include "parallel/Collective.hpp"
 #include "parallel/LocalMesh.hpp"
+#include "parallel/SliceLookup.hpp"
 #include "scene/SceneMeshChecks.hpp"
 #include "scene/SceneNodeSets.hpp"
 #include "scene/SchemaValidator.hpp"
@@ -92,7 +93,7 @@ BackgroundMesh load_distributed_mesh(const CommPtr& comm, Scene& scene, NodePart
   slice = MeshSlice();  // the slice has served: free it before the discretization
   auto& mesh = local.mesh;
   if (surface) {
-    mesh.surface = surface_positions(comm, nodes, positions, mesh);
+    mesh.surface = fetch_from_slices(comm, nodes, 3, positions, mesh.global.nodes);
     mesh.chart_plane = plane;
     chart_shell_points(scene, mesh);
   }

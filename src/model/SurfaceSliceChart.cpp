@@ -14,9 +14,8 @@ namespace efg {
 
 bool is_surface_slice(const Scene& scene, const MeshSlice& slice) {
   if (!scene.has_shells() || slice.dimension != 3 || slice.blocks.empty()) return false;
-  return std::all_of(slice.blocks.begin(), slice.blocks.end(), [](const BlockSlice& b) {
-    return b.type == CellType::quad4 || b.type == CellType::tri3;
-  });
+  return std::all_of(slice.blocks.begin(), slice.blocks.end(),
+                     [](const BlockSlice& b) { return is_surface_cell(b.type); });
 }
 
 namespace {
@@ -86,12 +85,6 @@ std::vector<double> chart_surface_slice(const CommPtr& comm, const Scene& scene,
   }
   slice.dimension = 2;
   return positions;
-}
-
-std::vector<double> surface_positions(const CommPtr& comm, GlobalIndex node_count,
-                                      const std::vector<double>& positions,
-                                      const BackgroundMesh& mesh) {
-  return fetch_from_slices(comm, node_count, 3, positions, mesh.global.nodes);
 }
 
 void refuse_chart_without_surface(const Scene& scene) {

@@ -4,7 +4,8 @@
 // cell's corners fetched from their slice holders), every slice's cells are checked against it
 // on their rank, and every slice node gets its chart coordinates before the mesh is dealt out
 // (parallel/LocalMesh.hpp partitions and sizes the halo in the chart, where the shells work).
-// The 3D positions follow each rank's part afterwards, fetched by global node index.
+// The 3D positions follow each rank's part afterwards, fetched by global node index
+// (parallel/SliceLookup.hpp, fetch_from_slices).
 #pragma once
 
 #include <vector>
@@ -26,12 +27,6 @@ bool is_surface_slice(const Scene& scene, const MeshSlice& slice);
 /// the projection cannot chart. Collective.
 std::vector<double> chart_surface_slice(const CommPtr& comm, const Scene& scene, MeshSlice& slice,
                                         SurfaceProjection& plane);
-
-/// The 3D positions of the nodes of `mesh` (a rank's part, mesh.global set) from the slices'
-/// `positions` (chart_surface_slice) of a mesh of `node_count` nodes. Collective.
-std::vector<double> surface_positions(const CommPtr& comm, GlobalIndex node_count,
-                                      const std::vector<double>& positions,
-                                      const BackgroundMesh& mesh);
 
 /// The scene gave mesh.chart for a mesh that is no shell surface read in 3D: InputError at
 /// mesh.chart.
