@@ -33,15 +33,19 @@ class Emitter {
  public:
   Emitter(int dim, std::vector<SmoothingPoint>& out) : dim_(dim), out_(out) {}
 
-  // A 2D segment p -> q whose normal (dy, -dx) points out of `plus`.
-  void segment(const Vec& p, const Vec& q, LocalIndex plus, LocalIndex minus) {
+  // A 2D segment p -> q whose normal (dy, -dx) points out of `plus`: 2 Gauss points, or its
+  // midpoint alone (exact for linear functions) when `one_point`.
+  void segment(const Vec& p, const Vec& q, LocalIndex plus, LocalIndex minus,
+               bool one_point = false) {
     const double g = 0.5 / std::sqrt(3.0);
     const Vec n = {q[1] - p[1], -(q[0] - p[0]), 0.0};
-    for (double t : {0.5 - g, 0.5 + g}) {
+    const int count = one_point ? 1 : 2;
+    const double at[2] = {one_point ? 0.5 : 0.5 - g, 0.5 + g};
+    for (int i = 0; i < count; ++i) {
       SmoothingPoint s;
       for (std::size_t d = 0; d < 2; ++d) {
-        s.x[d] = p[d] + t * (q[d] - p[d]);
-        s.weighted_normal[d] = 0.5 * n[d];
+        s.x[d] = p[d] + at[i] * (q[d] - p[d]);
+        s.weighted_normal[d] = n[d] / count;
       }
       s.plus = plus;
       s.minus = minus;
@@ -50,8 +54,17 @@ class Emitter {
   }
 
   // A 3D quadrilateral facet p0..p3 (possibly warped) whose right-hand normal points out of
-  // `plus`: four triangles about the vertex average, one centroid point each.
-  void quad(const std::array<Vec, 4>& p, LocalIndex plus, LocalIndex minus) {
+  // `plus`: four triangles about the vertex average, one centroid point each; or, when
+  // `merge_flat` and the facet is flat, one point (flat_facet_point).
+  void quad(const std::array<Vec, 4>& p, LocalIndex plus, LocalIndex minus,
+            bool merge_flat = false) {
+    SmoothingPoint one;
+    if (merge_flat && flat_facet_point(p, one)) {
+      one.plus = plus;
+      one.minus = minus;
+      out_.push_back(one);
+      return;
+    }
     const Vec c = average({p[0], p[1], p[2], p[3]});
     for (std::size_t i = 0; i < 4; ++i) {
       const Vec& a = p[i];
@@ -98,7 +111,8 @@ std::vector<SmoothingPoint> smoothing_points(const BackgroundMesh& mesh,
                                              const std::vector<std::string>& blocks,
                                              const std::vector<char>& node_wanted,
                                              std::vector<std::size_t>* cell_of_point,
-                                             bool every_side) {
+                                             bool every_side, SmoothingQuadrature inside) {
+  const bool one_point = inside == SmoothingQuadrature::centroid;
   std::vector<SmoothingPoint> out;
   std::size_t global_first = 0;
   Emitter emit(mesh.dimension, out);
@@ -148,9 +162,9 @@ std::vector<SmoothingPoint> smoothing_points(const BackgroundMesh& mesh,
           // Segment from the edge midpoint to the centroid; orient its normal from a to e.
           const Vec n = {centroid[1] - m[1], -(centroid[0] - m[0]), 0.0};
           if (dot(n, toward) >= 0)
-            emit.segment(m, centroid, node[a], node[e]);
+            emit.segment(m, centroid, node[a], node[e], one_point);
           else
-            emit.segment(centroid, m, node[a], node[e]);
+            emit.segment(centroid, m, node[a], node[e], one_point);
         } else {
           std::vector<Vec> side_centre;
           for (int s : sides) {
@@ -161,7 +175,7 @@ std::vector<SmoothingPoint> smoothing_points(const BackgroundMesh& mesh,
           std::array<Vec, 4> q = {m, side_centre[0], centroid, side_centre[1]};
           const Vec n = cross(sub(q[2], q[0]), sub(q[3], q[1]));
           if (dot(n, toward) < 0) std::swap(q[1], q[3]);
-          emit.quad(q, node[a], node[e]);
+          emit.quad(q, node[a], node[e], one_point);
         }
       }
 
@@ -184,6 +198,38 @@ std::vector<SmoothingPoint> smoothing_points(const BackgroundMesh& mesh,
     }
   }
   return out;
+}
+
+bool flat_facet_point(const std::array<Vec, 4>& p, SmoothingPoint& out) {
+  // The 4 triangles about the vertex average c, as in the split rule: vector areas n_i / 2,
+  // centroids g_i. A flat facet's n_i are parallel to their sum N, so the facet's integral of
+  // a linear f n, sum_i f(g_i) n_i / 2, equals f(x*) N / 2 at x* = sum_i (n_i . N / N . N) g_i.
+  const Vec c = average({p[0], p[1], p[2], p[3]});
+  std::array<Vec, 4> n, g;
+  Vec total{0, 0, 0};
+  for (std::size_t i = 0; i < 4; ++i) {
+    const Vec& a = p[i];
+    const Vec& b = p[(i + 1) % 4];
+    n[i] = cross(sub(a, c), sub(b, c));
+    for (std::size_t d = 0; d < 3; ++d) {
+      g[i][d] = (c[d] + a[d] + b[d]) / 3.0;
+      total[d] += n[i][d];
+    }
+  }
+  const double nn = dot(total, total);
+  if (!(nn > 0.0)) return false;
+  constexpr double flat = 1e-10;  // sine of the largest angle between a triangle and the facet
+  for (const auto& ni : n) {
+    const Vec off = cross(ni, total);
+    if (dot(off, off) > flat * flat * dot(ni, ni) * nn) return false;
+  }
+  out.x = {0, 0, 0};
+  for (std::size_t i = 0; i < 4; ++i) {
+    const double share = dot(n[i], total) / nn;
+    for (std::size_t d = 0; d < 3; ++d) out.x[d] += share * g[i][d];
+  }
+  for (std::size_t d = 0; d < 3; ++d) out.weighted_normal[d] = 0.5 * total[d];
+  return true;
 }
 
 std::vector<std::pair<std::size_t, int>> boundary_sides(const BackgroundMesh& mesh,

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "mesh/BackgroundMesh.hpp"
+#include "scene/Scene.hpp"
 
 namespace efg {
 
@@ -31,12 +32,19 @@ struct SmoothingPoint {
 /// separate the pieces of a nodal domain). 2D
 /// segments get 2 Gauss points; 3D facets are split into 4 triangles about their centre, one
 /// centroid point each (exact for the linear fields of the patch test, and the same points on
-/// every rank).
-std::vector<SmoothingPoint> smoothing_points(const BackgroundMesh& mesh,
-                                             const std::vector<std::string>& blocks,
-                                             const std::vector<char>& node_wanted = {},
-                                             std::vector<std::size_t>* cell_of_point = nullptr,
-                                             bool every_side = false);
+/// every rank). With `inside` centroid, the facets inside a cell (between two nodes' domains)
+/// get one point each where they are flat (see flat_facet_point); sides keep the split rule.
+std::vector<SmoothingPoint> smoothing_points(
+    const BackgroundMesh& mesh, const std::vector<std::string>& blocks,
+    const std::vector<char>& node_wanted = {}, std::vector<std::size_t>* cell_of_point = nullptr,
+    bool every_side = false, SmoothingQuadrature inside = SmoothingQuadrature::split);
+
+/// The one-point rule of a flat quadrilateral facet p0..p3: the point at its area centroid with
+/// the whole facet's vector area, which integrates every linear function over the facet exactly
+/// (as the 4 triangles do). False, leaving `out` alone, when the facet's triangles about its
+/// vertex average are not parallel to within 1e-10 (a warped facet: one point cannot carry the
+/// moments x n of its triangles, so linear consistency would be lost) or it has no area.
+bool flat_facet_point(const std::array<std::array<double, 3>, 4>& p, SmoothingPoint& out);
 
 /// The boundary part of the same rule for one side of a cell: the side split among its nodes,
 /// 2 Gauss points per half segment (2D) or 4 triangles per node's quarter (3D). `side_x` holds

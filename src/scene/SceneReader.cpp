@@ -203,6 +203,9 @@ class SceneBuilder {
                                             {"scni_subcells", Integration::scni_subcells},
                                             {"nodal", Integration::nodal},
                                             {"gauss", Integration::gauss}});
+    out.smoothing_quadrature = enum_of<SmoothingQuadrature>(
+        sec["smoothing_quadrature"].as<std::string>(),
+        {{"split", SmoothingQuadrature::split}, {"centroid", SmoothingQuadrature::centroid}});
     out.gauss_order = sec["gauss_order"].as<int>();
     out.formulation = enum_of<Formulation>(sec["formulation"].as<std::string>(),
                                            {{"small_strain", Formulation::small_strain},

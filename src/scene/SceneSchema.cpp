@@ -57,6 +57,19 @@ SpecPtr section_spec() {
                  "Gauss on background cells. See docs/discretization.md.",
                  {"scni", "scni_subcells", "nodal", "gauss"}),
           "scni")
+      .optional(
+          "smoothing_quadrature",
+          choice("Quadrature on the SCNI smoothing facets inside the background cells "
+                 "(integration scni and scni_subcells): split, 2 Gauss points per 2D segment "
+                 "and 4 triangles per 3D facet; or centroid, one point per facet at its area "
+                 "centroid where the facet is flat (all of them in 2D and in tetrahedra, "
+                 "those of undistorted hexahedra; warped facets stay split). Both are exact for "
+                 "linear fields (the patch test holds); centroid evaluates 4x fewer shape "
+                 "functions in 3D (2x in 2D), setup about 3x faster on hex grids, results moved "
+                 "by about 1e-5 there. The part's boundary sides always use the split rule. See "
+                 "docs/discretization.md.",
+                 {"split", "centroid"}),
+          "split")
       .optional("gauss_order",
                 integer("Gauss points per direction (integration: gauss).").at_least(1).at_most(6),
                 "2")
