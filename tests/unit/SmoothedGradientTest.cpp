@@ -21,12 +21,14 @@ struct Setup {
   IntegrationPoints ip;
 };
 
-Setup make(CellType type, Integration scheme, double perturbation, int n = 4) {
+Setup make(CellType type, Integration scheme, double perturbation, int n = 4,
+           SmoothingQuadrature quadrature = SmoothingQuadrature::split) {
   Setup s;
   s.mesh = generate_mesh(test::box_spec(type, n, perturbation, 17));
   s.part.name = "part";
   s.part.blocks = {"block_1"};
   s.part.section.integration = scheme;
+  s.part.section.smoothing_quadrature = quadrature;
   s.part.section.dilation = {cell_dimension(type) == 3 ? 1.8 : 1.6};
   const std::vector<int> owner(s.mesh.node_count(), 0);
   s.cloud = make_particle_cloud(s.mesh, s.part, owner, 0, {});
@@ -74,8 +76,9 @@ double divergence_error(const Setup& s) {
 }
 
 TEST_P(ByCell, DivergenceConsistency) {
-  EXPECT_LT(divergence_error(make(GetParam(), Integration::scni, 0.3)), 1e-12)
-      << cell_scene_name(GetParam());
+  for (auto rule : {SmoothingQuadrature::split, SmoothingQuadrature::centroid})
+    EXPECT_LT(divergence_error(make(GetParam(), Integration::scni, 0.3, 4, rule)), 1e-12)
+        << cell_scene_name(GetParam()) << " rule " << static_cast<int>(rule);
 }
 
 // The rows are built for batches of 2048 particles (IntegrationPoints, build_scni): a part of
@@ -87,8 +90,11 @@ TEST(SmoothedGradient, DivergenceConsistencyAcrossBatches) {
 }
 
 TEST_P(ByCell, LinearFieldGivesExactConstantGradient) {
-  for (auto scheme : {Integration::scni, Integration::nodal, Integration::gauss}) {
-    const auto s = make(GetParam(), scheme, 0.3);
+  // (Integration count 4: SCNI with one point per flat facet inside the cells.)
+  for (int scheme : {0, 2, 3, 4}) {
+    const auto s = scheme == 4 ? make(GetParam(), Integration::scni, 0.3, 4,
+                                      SmoothingQuadrature::centroid)
+                               : make(GetParam(), static_cast<Integration>(scheme), 0.3);
     const auto dim = static_cast<std::size_t>(s.mesh.dimension);
     const double g[3][3] = {{0.3, -1.2, 0.7}, {2.0, 0.1, -0.4}, {-0.9, 0.5, 1.1}};
     const double a[3] = {0.2, -0.3, 0.05};
@@ -160,6 +166,49 @@ TEST(SmoothedGradient, FacetPointsIntegrateAQuadraticExactly) {
         << "node at " << x << ", " << y;
   }
   EXPECT_EQ(interior, 7 * 3);
+}
+
+// The one-point rule of a flat facet, by hand: the trapezoid (0,0), (2,0), (1,1), (0,1) in z = 0
+// is the unit square (centroid (1/2, 1/2)) and the triangle (1,0), (2,0), (1,1) (area 1/2,
+// centroid (4/3, 1/3)): area 3/2 at (7/9, 4/9). Its vertex average (3/4, 1/2) would integrate
+// x n wrongly. A warped facet (one corner lifted) gets no single point.
+TEST(SmoothedGradient, FlatFacetPointIsTheAreaCentroid) {
+  SmoothingPoint p;
+  ASSERT_TRUE(flat_facet_point({{{0, 0, 0}, {2, 0, 0}, {1, 1, 0}, {0, 1, 0}}}, p));
+  EXPECT_NEAR(p.x[0], 7.0 / 9.0, 1e-15);
+  EXPECT_NEAR(p.x[1], 4.0 / 9.0, 1e-15);
+  EXPECT_NEAR(p.x[2], 0.0, 1e-15);
+  EXPECT_NEAR(p.weighted_normal[0], 0.0, 1e-15);
+  EXPECT_NEAR(p.weighted_normal[1], 0.0, 1e-15);
+  EXPECT_NEAR(p.weighted_normal[2], 1.5, 1e-15);
+  // Tilted into a general plane (a rotation keeps it flat): still one point, at the rotated
+  // centroid.
+  const double c = std::cos(0.7), s = std::sin(0.7);
+  auto tilt = [&](double x, double y) { return std::array<double, 3>{x, c * y, s * y}; };
+  ASSERT_TRUE(flat_facet_point({{tilt(0, 0), tilt(2, 0), tilt(1, 1), tilt(0, 1)}}, p));
+  EXPECT_NEAR(p.x[1], c * 4.0 / 9.0, 1e-15);
+  EXPECT_NEAR(p.x[2], s * 4.0 / 9.0, 1e-15);
+  EXPECT_FALSE(flat_facet_point({{{0, 0, 0}, {2, 0, 0}, {1, 1, 1e-3}, {0, 1, 0}}}, p));
+}
+
+// Which facets get one point: all of them in 2D (segments) and in tetrahedra (the facet of an
+// edge spans the edge's midpoint and the centroids of its two sides and of the cell, which lie
+// in one plane), every facet of an undistorted hex grid, and few of a perturbed one (warped).
+TEST(SmoothedGradient, CentroidRuleMergesTheFlatFacetsOnly) {
+  auto inside = [](CellType type, double perturbation, SmoothingQuadrature rule) {
+    const auto mesh = generate_mesh(test::box_spec(type, 3, perturbation, 17));
+    std::size_t count = 0;
+    for (const auto& p :
+         smoothing_points(mesh, {mesh.blocks[0].name}, {}, nullptr, false, rule))
+      count += p.minus >= 0;
+    return count;
+  };
+  const auto split = SmoothingQuadrature::split, centroid = SmoothingQuadrature::centroid;
+  for (auto type : {CellType::quad4, CellType::tri3})
+    EXPECT_EQ(2 * inside(type, 0.3, centroid), inside(type, 0.3, split)) << cell_scene_name(type);
+  EXPECT_EQ(4 * inside(CellType::tet4, 0.3, centroid), inside(CellType::tet4, 0.3, split));
+  EXPECT_EQ(4 * inside(CellType::hex8, 0.0, centroid), inside(CellType::hex8, 0.0, split));
+  EXPECT_GT(inside(CellType::hex8, 0.3, centroid), inside(CellType::hex8, 0.3, split) * 9 / 10);
 }
 
 // The boundary rule of one side: the same exactness for a cubic along a side from (0, 0) to

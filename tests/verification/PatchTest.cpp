@@ -15,14 +15,14 @@ namespace {
 std::string patch_scene(int dim, const char* element, const char* method,
                         const std::string& extra_bc = "", const char* nu = "0.3",
                         const char* formulation = "displacement",
-                        const char* integration = "scni") {
+                        const char* integration = "scni", const char* quadrature = "split") {
   std::ostringstream s;
   s << "mesh:\n  generate: {element: " << element
     << ", lower: " << (dim == 2 ? "[0, 0]" : "[0, 0, 0]")
     << ", upper: " << (dim == 2 ? "[2, 1]" : "[2, 1, 1]")
     << ", cells: " << (dim == 2 ? "[8, 4]" : "[4, 2, 2]") << ", perturbation: 0.3, seed: 5}\n"
     << "parts:\n  - {name: body, blocks: [block_1], material: m, section: {dilation: 1.8, "
-    << "integration: " << integration << "}, "
+    << "integration: " << integration << ", smoothing_quadrature: " << quadrature << "}, "
     << "formulation: " << formulation << "}\n"
     << "materials:\n  - {name: m, model: linear_elastic, youngs_modulus: 200, poissons_ratio: "
     << nu << "}\n"
@@ -44,11 +44,12 @@ struct Case {
   const char* method;
   const char* pressure_cells = "cell";  ///< mixed_up parts: cell or patch
   const char* integration = "scni";
+  const char* quadrature = "split";  ///< SCNI facets inside the cells: split or centroid
 };
 
 std::string case_name(const ::testing::TestParamInfo<Case>& p) {
   return std::string(p.param.element) + "_" + p.param.method + "_" + p.param.pressure_cells + "_" +
-         p.param.integration;
+         p.param.integration + (std::string(p.param.quadrature) == "split" ? "" : "_centroid");
 }
 
 class Patch : public ::testing::TestWithParam<Case> {};
@@ -56,7 +57,8 @@ class Patch : public ::testing::TestWithParam<Case> {};
 TEST_P(Patch, LinearFieldToRoundOff) {
   const auto c = GetParam();
   auto s = test::solve_static(
-      patch_scene(c.dim, c.element, c.method, "", "0.3", "displacement", c.integration));
+      patch_scene(c.dim, c.element, c.method, "", "0.3", "displacement", c.integration,
+                  c.quadrature));
   // A displacement part builds no pressure data at all (cells, operator).
   EXPECT_EQ(s.problem->operators().mixed(), nullptr);
   EXPECT_EQ(s.model->parts[0].cells.size(), 0u);
@@ -80,7 +82,15 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{3, "hex8", "transformation", "cell", "scni_subcells"},
                       Case{3, "tet4", "transformation", "cell", "scni_subcells"},
                       Case{2, "quad4", "nitsche", "cell", "scni_subcells"},
-                      Case{3, "wedge6", "nitsche", "cell", "scni_subcells"}),
+                      Case{3, "wedge6", "nitsche", "cell", "scni_subcells"},
+                      // One point per flat facet inside the cells (tetrahedra's are all flat
+                      // and not parallelograms; the perturbed hexahedra's warped ones stay split)
+                      Case{2, "quad4", "transformation", "cell", "scni", "centroid"},
+                      Case{2, "tri3", "nitsche", "cell", "scni", "centroid"},
+                      Case{3, "tet4", "transformation", "cell", "scni", "centroid"},
+                      Case{3, "tet4", "nitsche", "cell", "scni_subcells", "centroid"},
+                      Case{3, "hex8", "transformation", "cell", "scni", "centroid"},
+                      Case{3, "wedge6", "nitsche", "cell", "scni", "centroid"}),
     case_name);
 
 // Mixed u-p at nu = 0.4999 (operators/MixedPressure): the cell dilatations come from each cell's
