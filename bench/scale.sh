@@ -7,7 +7,8 @@
 # per Newton iteration, over 20 min). Prints, per run, the bytes per
 # particle the run keeps (the log's memory account, all phases) and its high-water mark, the
 # setup time (scene, partition, search, shape functions and integration points) and the time
-# per explicit step, and setup in explicit steps (issue 20's target: 3). Runs longer than
+# per explicit step, and setup in explicit steps (issue 20's target: 3), each size also with
+# `smoothing_quadrature: centroid` (one point per flat SCNI facet). Runs longer than
 # EFG_BENCH_TIMEOUT seconds (default 1200) are stopped. Not part of the test suite.
 #   bench/scale.sh [--max-particles N]     default 1100000 (the 1e6 run needs about 6 GB, 4 min)
 set -euo pipefail
@@ -57,6 +58,10 @@ for nx in 43 95 200; do  # about 1.1e4, 1.1e5, 1.0e6 particles
   if [ "$particles" -gt "$max" ]; then continue; fi
   scene "$work/explicit.yaml" "$nx" explicit
   row "explicit, 100 steps" "$work/explicit.yaml"
+  # The same with one point per flat SCNI facet inside the cells (every facet of this grid).
+  sed 's/dilation: 1.2}/dilation: 1.2, smoothing_quadrature: centroid}/' "$work/explicit.yaml" \
+    >"$work/centroid.yaml"
+  row "explicit, centroid facets" "$work/centroid.yaml"
   if [ "$nx" -le 95 ]; then  # the implicit stage at 1e4 and 1e5 particles
     scene "$work/implicit.yaml" "$nx" implicit
     row "implicit (matrix + preconditioner)" "$work/implicit.yaml"

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <utility>
 #include <numeric>
 
 #include "discretization/IntegrationPoints.hpp"
@@ -90,11 +91,13 @@ TEST(SmoothedGradient, DivergenceConsistencyAcrossBatches) {
 }
 
 TEST_P(ByCell, LinearFieldGivesExactConstantGradient) {
-  // (Integration count 4: SCNI with one point per flat facet inside the cells.)
-  for (int scheme : {0, 2, 3, 4}) {
-    const auto s = scheme == 4 ? make(GetParam(), Integration::scni, 0.3, 4,
-                                      SmoothingQuadrature::centroid)
-                               : make(GetParam(), static_cast<Integration>(scheme), 0.3);
+  const std::pair<Integration, SmoothingQuadrature> schemes[] = {
+      {Integration::scni, SmoothingQuadrature::split},
+      {Integration::scni, SmoothingQuadrature::centroid},
+      {Integration::nodal, SmoothingQuadrature::split},
+      {Integration::gauss, SmoothingQuadrature::split}};
+  for (const auto& [scheme, rule] : schemes) {
+    const auto s = make(GetParam(), scheme, 0.3, 4, rule);
     const auto dim = static_cast<std::size_t>(s.mesh.dimension);
     const double g[3][3] = {{0.3, -1.2, 0.7}, {2.0, 0.1, -0.4}, {-0.9, 0.5, 1.1}};
     const double a[3] = {0.2, -0.3, 0.05};
@@ -115,7 +118,7 @@ TEST_P(ByCell, LinearFieldGivesExactConstantGradient) {
           worst = std::max(worst, std::abs(grad[i][j] - g[i][j]) / 2.0);
     }
     EXPECT_LT(worst, 1e-12) << cell_scene_name(GetParam()) << " scheme "
-                            << static_cast<int>(scheme);
+                            << static_cast<int>(scheme) << " rule " << static_cast<int>(rule);
   }
 }
 
