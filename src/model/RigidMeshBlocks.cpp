@@ -143,10 +143,6 @@ void extract_rigid_blocks(Scene& scene, BackgroundMesh& mesh) {
   for (std::size_t i = 0; i < scene.rigid_bodies.size(); ++i) {
     auto& body = scene.rigid_bodies[i];
     if (body.shape != "mesh") continue;
-    if (scene.has_shells())
-      fail(scene, i,
-           "rigid bodies of mesh blocks touch solid parts only for now; expected an analytic "
-           "shape with shell parts");
     for (const auto& name : body.blocks) {
       if (!mesh.find_block(name)) {
         std::string names;
