@@ -66,8 +66,9 @@ SpecPtr section_spec() {
                  "those of undistorted hexahedra; warped facets stay split). Both are exact for "
                  "linear fields (the patch test holds); centroid evaluates 4x fewer shape "
                  "functions in 3D (2x in 2D), setup about 3x faster on hex grids, results moved "
-                 "by about 1e-5 there. The part's boundary sides always use the split rule. See "
-                 "docs/discretization.md.",
+                 "by about 1e-5 there; with a quadratic basis in 2D it gives up the split rule's "
+                 "exactness for quadratics along the segments (energy errors about 1.35x). The "
+                 "part's boundary sides always use the split rule. See docs/discretization.md.",
                  {"split", "centroid"}),
           "split")
       .optional("gauss_order",
