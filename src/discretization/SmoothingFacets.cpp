@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <map>
 
 namespace efg {
@@ -21,12 +22,49 @@ double dot(const Vec& a, const Vec& b) {
   return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 }
 
-Vec average(const std::vector<Vec>& pts) {
+template <class Points>
+Vec average_of(const Points& pts) {
   Vec c{0, 0, 0};
   for (const auto& p : pts)
     for (int d = 0; d < 3; ++d) c[static_cast<std::size_t>(d)] += p[static_cast<std::size_t>(d)];
   for (auto& v : c) v /= static_cast<double>(pts.size());
   return c;
+}
+Vec average(const std::vector<Vec>& pts) {
+  return average_of(pts);
+}
+// A braced list of points, without the heap (some 60 averages per cell).
+Vec average(std::initializer_list<Vec> pts) {
+  return average_of(pts);
+}
+
+// The facets inside a cell of one type, one per cell edge (a, e), a < e ascending, with the
+// sides that border it (3D: two; 2D: the edge is a side), in the order smoothing_points has
+// always emitted them. Built once per block instead of once per cell.
+struct CellFacets {
+  struct Edge {
+    int a = 0, e = 0;
+    std::vector<int> sides;
+  };
+  std::vector<std::vector<int>> side_nodes;
+  std::vector<Edge> edges;
+};
+
+CellFacets cell_facets(CellType type) {
+  CellFacets f;
+  const bool two_d = cell_dimension(type) == 2;
+  std::map<std::pair<int, int>, std::vector<int>> edge_sides;
+  for (int s = 0; s < cell_side_count(type); ++s) {
+    f.side_nodes.push_back(cell_side_nodes(type, s));
+    const auto& sn = f.side_nodes.back();
+    for (std::size_t i = 0; i < sn.size(); ++i) {
+      const int a = sn[i], e = sn[(i + 1) % sn.size()];
+      if (two_d && i + 1 == sn.size()) break;  // a 2D side is one edge
+      edge_sides[{std::min(a, e), std::max(a, e)}].push_back(s);
+    }
+  }
+  for (const auto& [edge, sides] : edge_sides) f.edges.push_back({edge.first, edge.second, sides});
+  return f;
 }
 
 class Emitter {
@@ -126,6 +164,8 @@ std::vector<SmoothingPoint> smoothing_points(const BackgroundMesh& mesh,
     if (std::find(blocks.begin(), blocks.end(), b.name) == blocks.end()) continue;
     const int npc = cell_node_count(b.type);
     const int nsides = cell_side_count(b.type);
+    const auto facets = cell_facets(b.type);
+    std::vector<Vec> x(static_cast<std::size_t>(npc), Vec{0, 0, 0});
     for (std::size_t c = 0; c < b.cell_count(); ++c) {
       const LocalIndex* node = &b.connectivity[c * static_cast<std::size_t>(npc)];
       if (!node_wanted.empty()) {
@@ -133,7 +173,6 @@ std::vector<SmoothingPoint> smoothing_points(const BackgroundMesh& mesh,
         for (int a = 0; a < npc; ++a) any = any || node_wanted[static_cast<std::size_t>(node[a])];
         if (!any) continue;
       }
-      std::vector<Vec> x(static_cast<std::size_t>(npc), Vec{0, 0, 0});
       for (int a = 0; a < npc; ++a)
         for (std::size_t d = 0; d < dim; ++d)
           x[static_cast<std::size_t>(a)][d] =
@@ -145,17 +184,7 @@ std::vector<SmoothingPoint> smoothing_points(const BackgroundMesh& mesh,
 
       // Interior facets, one per cell edge (a, b): they separate the domains of a and b.
       // In 2D the edges are the sides; in 3D each edge borders two sides.
-      std::map<std::pair<int, int>, std::vector<int>> edge_sides;
-      for (int s = 0; s < nsides; ++s) {
-        const auto sn = cell_side_nodes(b.type, s);
-        for (std::size_t i = 0; i < sn.size(); ++i) {
-          const int a = sn[i], e = sn[(i + 1) % sn.size()];
-          if (emit.dim() == 2 && i + 1 == sn.size()) break;  // a 2D side is one edge
-          edge_sides[{std::min(a, e), std::max(a, e)}].push_back(s);
-        }
-      }
-      for (const auto& [edge, sides] : edge_sides) {
-        const auto [a, e] = edge;
+      for (const auto& [a, e, sides] : facets.edges) {
         const Vec m = mid(a, e);
         const Vec toward = sub(x[static_cast<std::size_t>(e)], x[static_cast<std::size_t>(a)]);
         if (emit.dim() == 2) {
@@ -166,11 +195,14 @@ std::vector<SmoothingPoint> smoothing_points(const BackgroundMesh& mesh,
           else
             emit.segment(centroid, m, node[a], node[e], one_point);
         } else {
-          std::vector<Vec> side_centre;
-          for (int s : sides) {
-            std::vector<Vec> pts;
-            for (int k : cell_side_nodes(b.type, s)) pts.push_back(x[static_cast<std::size_t>(k)]);
-            side_centre.push_back(average(pts));
+          Vec side_centre[2];
+          for (std::size_t k = 0; k < 2; ++k) {
+            const auto& sn = facets.side_nodes[static_cast<std::size_t>(sides[k])];
+            Vec sum{0, 0, 0};  // the side's vertex average, summed in average_of's order
+            for (int n : sn)
+              for (std::size_t d = 0; d < 3; ++d) sum[d] += x[static_cast<std::size_t>(n)][d];
+            for (auto& v : sum) v /= static_cast<double>(sn.size());
+            side_centre[k] = sum;
           }
           std::array<Vec, 4> q = {m, side_centre[0], centroid, side_centre[1]};
           const Vec n = cross(sub(q[2], q[0]), sub(q[3], q[1]));
@@ -182,7 +214,7 @@ std::vector<SmoothingPoint> smoothing_points(const BackgroundMesh& mesh,
       // Sides on the part's boundary, split among their nodes; the side tables order nodes so
       // that the right-hand normal points out of the cell.
       for (int s = 0; s < nsides; ++s) {
-        const auto sn = cell_side_nodes(b.type, s);
+        const auto& sn = facets.side_nodes[static_cast<std::size_t>(s)];
         if (!every_side &&
             !std::binary_search(outer.begin(), outer.end(), std::make_pair(first_cell + c, s)))
           continue;
