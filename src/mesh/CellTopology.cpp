@@ -131,14 +131,26 @@ std::optional<CellType> cell_type_from_exodus_name(const std::string& name) {
 CellGeometry cell_geometry(CellType type, const double* x) {
   // det J of the isoparametric map is a polynomial of degree <= 2 in each reference direction
   // (trilinear hex, bilinear quad, wedge) or constant (simplices): 2-point rules are exact.
+  // The rules and corners are built once per type (this runs for every cell of a mesh, twice).
+  struct Reference {
+    ReferenceRule rule;
+    std::vector<double> corners;
+  };
+  static const std::array<Reference, 5> by_type = [] {
+    std::array<Reference, 5> r;
+    for (auto t : {CellType::quad4, CellType::tri3, CellType::hex8, CellType::tet4,
+                   CellType::wedge6})
+      r[static_cast<std::size_t>(t)] = {reference_rule(t, 2), reference_corners(t)};
+    return r;
+  }();
+  const auto& rule = by_type[static_cast<std::size_t>(type)].rule;
   CellGeometry g;
-  const auto rule = reference_rule(type, 2);
   const auto dim = static_cast<std::size_t>(cell_dimension(type));
   double point[3];
   for (std::size_t q = 0; q < rule.weight.size(); ++q)
     g.volume += rule.weight[q] * map_to_cell(type, x, &rule.xi[q * dim], point);
   g.min_corner_det = std::numeric_limits<double>::max();
-  const auto corners = reference_corners(type);
+  const auto& corners = by_type[static_cast<std::size_t>(type)].corners;
   for (std::size_t c = 0; c < corners.size() / dim; ++c)
     g.min_corner_det = std::min(g.min_corner_det, map_to_cell(type, x, &corners[c * dim], point));
   return g;
