@@ -126,20 +126,22 @@ class Emitter {
   std::vector<SmoothingPoint>& out_;
 };
 
-// The boundary facets of one side, split among its nodes (see side_smoothing_points).
-void emit_side(Emitter& emit, const std::vector<Vec>& x, const std::vector<LocalIndex>& node) {
+// The boundary facets of one side, split among its nodes (see side_smoothing_points); with
+// `one_point`, one point per flat facet (SCNI subcells' sides inside the part).
+void emit_side(Emitter& emit, const std::vector<Vec>& x, const std::vector<LocalIndex>& node,
+               bool one_point = false) {
   auto mid = [&](std::size_t a, std::size_t b) { return average({x[a], x[b]}); };
   if (emit.dim() == 2) {
     const Vec m = mid(0, 1);
-    emit.segment(x[0], m, node[0], -1);
-    emit.segment(m, x[1], node[1], -1);
+    emit.segment(x[0], m, node[0], -1, one_point);
+    emit.segment(m, x[1], node[1], -1, one_point);
     return;
   }
   const Vec sc = average(x);
   const std::size_t m = x.size();
   for (std::size_t i = 0; i < m; ++i) {
     const std::size_t prev = (i + m - 1) % m, next = (i + 1) % m;
-    emit.quad({x[i], mid(i, next), sc, mid(prev, i)}, node[i], -1);
+    emit.quad({x[i], mid(i, next), sc, mid(prev, i)}, node[i], -1, one_point);
   }
 }
 
@@ -155,9 +157,11 @@ std::vector<SmoothingPoint> smoothing_points(const BackgroundMesh& mesh,
   std::size_t global_first = 0;
   Emitter emit(mesh.dimension, out);
   const auto dim = static_cast<std::size_t>(mesh.dimension);
-  // The part's boundary sides, (global cell, side) ascending.
-  const auto outer = every_side ? std::vector<std::pair<std::size_t, int>>{}
-                                : outer_sides(mesh, cells_of_blocks(mesh, blocks));
+  // The part's boundary sides, (global cell, side) ascending: the only sides emitted, or with
+  // every_side the ones that keep the split rule (tractions and Nitsche terms share it).
+  const bool need_outer = !every_side || one_point;
+  const auto outer = need_outer ? outer_sides(mesh, cells_of_blocks(mesh, blocks))
+                                : std::vector<std::pair<std::size_t, int>>{};
   for (const auto& b : mesh.blocks) {
     const std::size_t first_cell = global_first;
     global_first += b.cell_count();
@@ -215,16 +219,17 @@ std::vector<SmoothingPoint> smoothing_points(const BackgroundMesh& mesh,
       // that the right-hand normal points out of the cell.
       for (int s = 0; s < nsides; ++s) {
         const auto& sn = facets.side_nodes[static_cast<std::size_t>(s)];
-        if (!every_side &&
-            !std::binary_search(outer.begin(), outer.end(), std::make_pair(first_cell + c, s)))
-          continue;
+        const bool on_boundary =
+            need_outer &&
+            std::binary_search(outer.begin(), outer.end(), std::make_pair(first_cell + c, s));
+        if (!every_side && !on_boundary) continue;
         std::vector<Vec> side_x;
         std::vector<LocalIndex> side_nodes;
         for (int k : sn) {
           side_x.push_back(x[static_cast<std::size_t>(k)]);
           side_nodes.push_back(node[k]);
         }
-        emit_side(emit, side_x, side_nodes);
+        emit_side(emit, side_x, side_nodes, one_point && !on_boundary);
       }
       if (cell_of_point) cell_of_point->resize(out.size(), first_cell + c);
     }

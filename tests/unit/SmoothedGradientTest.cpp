@@ -212,6 +212,15 @@ TEST(SmoothedGradient, CentroidRuleMergesTheFlatFacetsOnly) {
   EXPECT_EQ(4 * inside(CellType::tet4, 0.3, centroid), inside(CellType::tet4, 0.3, split));
   EXPECT_EQ(4 * inside(CellType::hex8, 0.0, centroid), inside(CellType::hex8, 0.0, split));
   EXPECT_GT(inside(CellType::hex8, 0.3, centroid), inside(CellType::hex8, 0.3, split) * 9 / 10);
+
+  // SCNI subcells (every side emitted, split among its nodes), 6 x 3 x 3 regular hexes, by hand:
+  // 54 cells x (12 edge facets + 6 sides x 4 node quarters); 90 sides on the part's boundary.
+  // Split: 54 x 48 + 324 x 16 = 7,776 points; centroid: 54 x 12 + 234 x 4 (sides inside) + 90 x 16
+  // (the boundary keeps the split rule) = 3,024.
+  const auto mesh = generate_mesh(test::box_spec(CellType::hex8, 3));
+  EXPECT_EQ(smoothing_points(mesh, {mesh.blocks[0].name}, {}, nullptr, true, split).size(), 7776u);
+  EXPECT_EQ(smoothing_points(mesh, {mesh.blocks[0].name}, {}, nullptr, true, centroid).size(),
+            3024u);
 }
 
 // The boundary rule of one side: the same exactness for a cubic along a side from (0, 0) to

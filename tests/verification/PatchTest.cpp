@@ -90,6 +90,8 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{3, "tet4", "transformation", "cell", "scni", "centroid"},
                       Case{3, "tet4", "nitsche", "cell", "scni_subcells", "centroid"},
                       Case{3, "hex8", "transformation", "cell", "scni", "centroid"},
+                      Case{2, "quad4", "transformation", "cell", "scni_subcells", "centroid"},
+                      Case{3, "wedge6", "transformation", "cell", "scni_subcells", "centroid"},
                       Case{3, "wedge6", "nitsche", "cell", "scni", "centroid"}),
     case_name);
 
