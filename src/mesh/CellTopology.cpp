@@ -138,8 +138,8 @@ CellGeometry cell_geometry(CellType type, const double* x) {
   };
   static const std::array<Reference, 5> by_type = [] {
     std::array<Reference, 5> r;
-    for (auto t : {CellType::quad4, CellType::tri3, CellType::hex8, CellType::tet4,
-                   CellType::wedge6})
+    for (auto t :
+         {CellType::quad4, CellType::tri3, CellType::hex8, CellType::tet4, CellType::wedge6})
       r[static_cast<std::size_t>(t)] = {reference_rule(t, 2), reference_corners(t)};
     return r;
   }();

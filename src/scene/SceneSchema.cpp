@@ -60,7 +60,8 @@ SpecPtr section_spec() {
       .optional(
           "smoothing_quadrature",
           choice("Quadrature on the SCNI smoothing facets inside the background cells "
-                 "(integration scni and scni_subcells): split, 2 Gauss points per 2D segment "
+                 "(integration scni; with scni_subcells also the cell sides inside the part): "
+                 "split, 2 Gauss points per 2D segment "
                  "and 4 triangles per 3D facet; or centroid, one point per facet at its area "
                  "centroid where the facet is flat (all of them in 2D and in tetrahedra, "
                  "those of undistorted hexahedra; warped facets stay split). Both are exact for "

@@ -3,8 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <utility>
 #include <numeric>
+#include <utility>
 
 #include "discretization/IntegrationPoints.hpp"
 #include "discretization/ShapeFunctions.hpp"
@@ -117,8 +117,8 @@ TEST_P(ByCell, LinearFieldGivesExactConstantGradient) {
         for (std::size_t j = 0; j < dim; ++j)
           worst = std::max(worst, std::abs(grad[i][j] - g[i][j]) / 2.0);
     }
-    EXPECT_LT(worst, 1e-12) << cell_scene_name(GetParam()) << " scheme "
-                            << static_cast<int>(scheme) << " rule " << static_cast<int>(rule);
+    EXPECT_LT(worst, 1e-12) << cell_scene_name(GetParam()) << " scheme " << static_cast<int>(scheme)
+                            << " rule " << static_cast<int>(rule);
   }
 }
 
@@ -201,8 +201,7 @@ TEST(SmoothedGradient, CentroidRuleMergesTheFlatFacetsOnly) {
   auto inside = [](CellType type, double perturbation, SmoothingQuadrature rule) {
     const auto mesh = generate_mesh(test::box_spec(type, 3, perturbation, 17));
     std::size_t count = 0;
-    for (const auto& p :
-         smoothing_points(mesh, {mesh.blocks[0].name}, {}, nullptr, false, rule))
+    for (const auto& p : smoothing_points(mesh, {mesh.blocks[0].name}, {}, nullptr, false, rule))
       count += p.minus >= 0;
     return count;
   };

@@ -14,8 +14,8 @@ namespace {
 
 std::string patch_scene(int dim, const char* element, const char* method,
                         const std::string& extra_bc = "", const char* nu = "0.3",
-                        const char* formulation = "displacement",
-                        const char* integration = "scni", const char* quadrature = "split") {
+                        const char* formulation = "displacement", const char* integration = "scni",
+                        const char* quadrature = "split") {
   std::ostringstream s;
   s << "mesh:\n  generate: {element: " << element
     << ", lower: " << (dim == 2 ? "[0, 0]" : "[0, 0, 0]")
@@ -56,9 +56,8 @@ class Patch : public ::testing::TestWithParam<Case> {};
 
 TEST_P(Patch, LinearFieldToRoundOff) {
   const auto c = GetParam();
-  auto s = test::solve_static(
-      patch_scene(c.dim, c.element, c.method, "", "0.3", "displacement", c.integration,
-                  c.quadrature));
+  auto s = test::solve_static(patch_scene(c.dim, c.element, c.method, "", "0.3", "displacement",
+                                          c.integration, c.quadrature));
   // A displacement part builds no pressure data at all (cells, operator).
   EXPECT_EQ(s.problem->operators().mixed(), nullptr);
   EXPECT_EQ(s.model->parts[0].cells.size(), 0u);

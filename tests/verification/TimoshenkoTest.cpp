@@ -72,8 +72,8 @@ TEST_P(Timoshenko, LinearBasisScniConvergesAtTheExpectedRates) {
 // One midpoint per smoothing segment inside the cells (smoothing_quadrature: centroid) is exact
 // for linear fields, so SCNI keeps its consistency and its rates with half the points.
 TEST_P(Timoshenko, LinearBasisScniWithCentroidFacetsConvergesAtTheSameRates) {
-  expect_linear_rates(series(GetParam(), "transformation", "linear", 2.0,
-                             "scni, smoothing_quadrature: centroid"));
+  expect_linear_rates(
+      series(GetParam(), "transformation", "linear", 2.0, "scni, smoothing_quadrature: centroid"));
 }
 
 // The quadratic basis with SCNI subcells: the energy error of a quadratically complete
