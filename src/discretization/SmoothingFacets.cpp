@@ -37,6 +37,14 @@ Vec average(const std::vector<Vec>& pts) {
 Vec average(std::initializer_list<Vec> pts) {
   return average_of(pts);
 }
+// The points x[k] for k in `which`, summed in that order (as average_of), without a copy.
+Vec average_at(const std::vector<Vec>& x, const std::vector<int>& which) {
+  Vec c{0, 0, 0};
+  for (int k : which)
+    for (std::size_t d = 0; d < 3; ++d) c[d] += x[static_cast<std::size_t>(k)][d];
+  for (auto& v : c) v /= static_cast<double>(which.size());
+  return c;
+}
 
 // The facets inside a cell of one type, one per cell edge (a, e), a < e ascending, with the
 // sides that border it (3D: two; 2D: the edge is a side), in the order smoothing_points has
@@ -199,16 +207,10 @@ std::vector<SmoothingPoint> smoothing_points(const BackgroundMesh& mesh,
           else
             emit.segment(centroid, m, node[a], node[e], one_point);
         } else {
-          Vec side_centre[2];
-          for (std::size_t k = 0; k < 2; ++k) {
-            const auto& sn = facets.side_nodes[static_cast<std::size_t>(sides[k])];
-            Vec sum{0, 0, 0};  // the side's vertex average, summed in average_of's order
-            for (int n : sn)
-              for (std::size_t d = 0; d < 3; ++d) sum[d] += x[static_cast<std::size_t>(n)][d];
-            for (auto& v : sum) v /= static_cast<double>(sn.size());
-            side_centre[k] = sum;
-          }
-          std::array<Vec, 4> q = {m, side_centre[0], centroid, side_centre[1]};
+          const auto& side = facets.side_nodes;
+          std::array<Vec, 4> q = {m, average_at(x, side[static_cast<std::size_t>(sides[0])]),
+                                  centroid,
+                                  average_at(x, side[static_cast<std::size_t>(sides[1])])};
           const Vec n = cross(sub(q[2], q[0]), sub(q[3], q[1]));
           if (dot(n, toward) < 0) std::swap(q[1], q[3]);
           emit.quad(q, node[a], node[e], one_point);
