@@ -112,8 +112,9 @@ void build_scni_subcells(const BackgroundMesh& mesh, const PartSpec& part,
   std::vector<std::size_t> cell_of_point;
   const auto points = smoothing_points(mesh, part.blocks, owned, &cell_of_point, true,
                                        part.section.smoothing_quadrature);
+  const auto index = index_cloud(cloud);  // searched batch after batch
   const auto at_particles = evaluate_shape_functions(
-      cloud, cloud.position.data(), cloud.owned_count, false, [&](std::size_t p) {
+      index, cloud, cloud.position.data(), cloud.owned_count, false, [&](std::size_t p) {
         return "SCNI node at particle " +
                std::to_string(mesh.global_node(static_cast<std::size_t>(cloud.mesh_node[p])) + 1);
       });
@@ -204,7 +205,7 @@ void build_scni_subcells(const BackgroundMesh& mesh, const PartSpec& part,
     }
     const auto phi = select_rows(
         evaluate_shape_functions(
-            cloud, unique_coords.data(), first_of.size(), false,
+            index, cloud, unique_coords.data(), first_of.size(), false,
             [&](std::size_t u) {
               return "SCNI subcell smoothing point of background cell " +
                      std::to_string(cell_of_point[batch_points.entries[batch_points.offsets[b] +
@@ -214,7 +215,8 @@ void build_scni_subcells(const BackgroundMesh& mesh, const PartSpec& part,
         evaluated, cloud.dimension);
     std::vector<LocalIndex> identity(pieces.size());
     for (std::size_t k = 0; k < pieces.size(); ++k) identity[k] = static_cast<LocalIndex>(k);
-    const auto rows_here = smoothed_gradients(cloud, batch, phi, identity, volume);
+    const auto rows_here =
+        smoothed_gradients(cloud, batch, phi, identity, volume, index.cloud.global_id);
     append_rows(rows_here, ip.gradients);
     for (std::size_t k = 0; k < pieces.size(); ++k) {
       const auto i = first + static_cast<std::size_t>(pieces[k].first);
@@ -242,7 +244,10 @@ void build_scni(const BackgroundMesh& mesh, const PartSpec& part, const Particle
                 const std::vector<int>& owner, int rank, IntegrationPoints& ip) {
   const auto dim = static_cast<std::size_t>(cloud.dimension);
   add_nodal_points(cloud, ip);
-  const auto values = evaluate_shape_functions(cloud, ip.x.data(), ip.node.size(), false,
+  // The cloud's search bins and device copy, built once for the nodes and every batch of
+  // smoothing points (per batch they cost O(particles) each: quadratic in the part's size).
+  const auto index = index_cloud(cloud);
+  const auto values = evaluate_shape_functions(index, cloud, ip.x.data(), ip.node.size(), false,
                                                node_label(ip, "SCNI node"));
   ip.values = table_from(values, false, cloud.dimension);
 
@@ -271,14 +276,15 @@ void build_scni(const BackgroundMesh& mesh, const PartSpec& part, const Particle
       batch.push_back(p);
       coords.insert(coords.end(), p.x.begin(), p.x.begin() + static_cast<std::ptrdiff_t>(dim));
     }
-    const auto phi =
-        evaluate_shape_functions(cloud, coords.data(), batch.size(), false, [&](std::size_t p) {
+    const auto phi = evaluate_shape_functions(
+        index, cloud, coords.data(), batch.size(), false, [&](std::size_t p) {
           return "SCNI smoothing point next to particle " + std::to_string(batch[p].plus + 1);
         });
     std::vector<double> row_volume(rows);
     for (std::size_t l = 0; l < rows; ++l)
       row_volume[l] = volume[static_cast<std::size_t>(cloud.mesh_node[first + l])];
-    const auto rows_here = smoothed_gradients(cloud, batch, phi, row_index, row_volume);
+    const auto rows_here =
+        smoothed_gradients(cloud, batch, phi, row_index, row_volume, index.cloud.global_id);
     append_rows(rows_here, ip.gradients);
     for (std::size_t l = 0; l < rows; ++l)
       row_index[static_cast<std::size_t>(cloud.mesh_node[first + l])] = -1;

@@ -59,27 +59,40 @@ DeviceCloud device_cloud(const ParticleCloud& cloud) {
   return d;
 }
 
-DeviceNeighborLists find_neighbors(const ParticleCloud& cloud, const DeviceCloud& device,
-                                   const DeviceView<const double**>& points) {
-  const auto count = points.extent(0);
-  DeviceNeighborLists lists;
-  lists.offsets = DeviceView<std::size_t*>("efg::neighbor offsets", count + 1);
-  if (cloud.size() == 0) {
-    lists.particles = DeviceView<int*>("efg::neighbors", 0);
-    return lists;
-  }
-  SupportSearch search;
-  search.reach = largest_support_reach(cloud);
+CloudIndex index_cloud(const ParticleCloud& cloud) {
+  CloudIndex index;
+  index.cloud = device_cloud(cloud);
+  index.particles = cloud.size();
+  index.sphere = cloud.section.support == SupportShape::sphere;
+  if (cloud.size() == 0) return index;
+  index.reach = largest_support_reach(cloud);
   // Bins of the largest per-axis reach: a point's search box spans 3 bins per axis. (Bins of
   // the support's half-diagonal, as before, held 5.2x the particles in 3D: 243 candidates per
   // point for some 14 neighbours at dilation 1.2; halving the bins further gained nothing, nor
   // did one pass of support tests instead of counting and filling.)
-  const PointBins bins(cloud.position.data(), cloud.size(), cloud.dimension, search.reach);
-  search.grid = bins.grid();
-  search.sphere = cloud.section.support == SupportShape::sphere;
-  search.bin_start = to_device(bins.bin_start(), "efg::bin start");
-  search.bin_points = to_device(bins.bin_points(), "efg::bin points");
-  search.cloud = device;
+  const PointBins bins(cloud.position.data(), cloud.size(), cloud.dimension, index.reach);
+  index.grid = bins.grid();
+  index.bin_start = to_device(bins.bin_start(), "efg::bin start");
+  index.bin_points = to_device(bins.bin_points(), "efg::bin points");
+  return index;
+}
+
+DeviceNeighborLists find_neighbors(const CloudIndex& index,
+                                   const DeviceView<const double**>& points) {
+  const auto count = points.extent(0);
+  DeviceNeighborLists lists;
+  lists.offsets = DeviceView<std::size_t*>("efg::neighbor offsets", count + 1);
+  if (index.particles == 0) {
+    lists.particles = DeviceView<int*>("efg::neighbors", 0);
+    return lists;
+  }
+  SupportSearch search;
+  search.reach = index.reach;
+  search.grid = index.grid;
+  search.sphere = index.sphere;
+  search.bin_start = index.bin_start;
+  search.bin_points = index.bin_points;
+  search.cloud = index.cloud;
   search.points = points;
   using Range = Kokkos::RangePolicy<ExecSpace>;
   search.count = DeviceView<std::size_t*>(
@@ -106,7 +119,7 @@ DeviceNeighborLists find_neighbors(const ParticleCloud& cloud, const DeviceCloud
 
 NeighborLists find_neighbors(const ParticleCloud& cloud, const double* points, std::size_t count) {
   const auto device = find_neighbors(
-      cloud, device_cloud(cloud),
+      index_cloud(cloud),
       to_device(points, count, static_cast<std::size_t>(cloud.dimension), "efg::search points"));
   NeighborLists lists;
   lists.offsets = to_host(device.offsets);

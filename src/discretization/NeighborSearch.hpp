@@ -10,6 +10,7 @@
 
 #include "core/DeviceArrays.hpp"
 #include "discretization/ParticleCloud.hpp"
+#include "geometry/BinGrid.hpp"
 
 namespace efg {
 
@@ -36,6 +37,20 @@ struct DeviceCloud {
   DeviceView<const LocalIndex*> global_id;
 };
 DeviceCloud device_cloud(const ParticleCloud& cloud);
+
+/// A cloud on the device with its search bins, built once and searched for many batches of
+/// points (SCNI evaluates its smoothing points batch by batch: building the bins and copying the
+/// cloud for each batch made the setup grow as particles^2 / batch).
+struct CloudIndex {
+  DeviceCloud cloud;
+  BinGrid grid;
+  double reach = 0;  ///< largest per-axis support reach: the bins' edge
+  bool sphere = false;
+  DeviceView<const std::size_t*> bin_start;
+  DeviceView<const std::size_t*> bin_points;
+  std::size_t particles = 0;
+};
+CloudIndex index_cloud(const ParticleCloud& cloud);
 
 /// Relative width of a support's edge that counts as outside: points whose normalized distance
 /// r lies within it of 1 carry a weight of at most 1.5e-18 (the quadratic spline; the cubic and
@@ -65,8 +80,8 @@ KOKKOS_INLINE_FUNCTION bool covers(bool sphere, int dim, const double* xi, const
   return true;
 }
 
-/// Neighbours of the points (points x cloud.dimension) on the device.
-DeviceNeighborLists find_neighbors(const ParticleCloud& cloud, const DeviceCloud& device,
+/// Neighbours of the points (points x cloud dimension) on the device.
+DeviceNeighborLists find_neighbors(const CloudIndex& index,
                                    const DeviceView<const double**>& points);
 
 /// Neighbours of `count` points (coordinates `points`, cloud.dimension per point), on the host.

@@ -59,7 +59,10 @@ void run(const SmoothedGradientKernel<Dim>& kernel, std::size_t rows) {
 CsrTable smoothed_gradients(const ParticleCloud& cloud, const std::vector<SmoothingPoint>& points,
                             const ShapeFunctionValues& phi,
                             const std::vector<LocalIndex>& row_index,
-                            const std::vector<double>& row_volume) {
+                            const std::vector<double>& row_volume,
+                            DeviceView<const LocalIndex*> global_id) {
+  if (global_id.extent(0) != cloud.size())
+    global_id = to_device(cloud.mesh_node, "efg::scni global ids");
   const auto dim = static_cast<std::size_t>(cloud.dimension);
   const auto owned = row_volume.size();
   // Slots 2p and 2p + 1 name the particles on either side of point p; sides that are not rows
@@ -123,7 +126,7 @@ CsrTable smoothed_gradients(const ParticleCloud& cloud, const std::vector<Smooth
     kernel.phi_particle = to_device(phi_particle, "efg::scni phi particles");
     kernel.phi = to_device(phi.phi, "efg::scni phi");
     kernel.normal = to_device(normal.data(), points.size(), dim, "efg::scni normals");
-    kernel.global_id = to_device(cloud.mesh_node, "efg::scni global ids");
+    kernel.global_id = global_id;
     kernel.row_offsets = to_device(table.offsets, "efg::scni row offsets");
     kernel.row_gid = to_device(row_gid, "efg::scni row ids");
     kernel.volume = to_device(row_volume, "efg::scni volumes");

@@ -21,10 +21,12 @@ namespace efg {
 /// otherwise) and `row_volume` the volume of each row's domain. SCNI's domains are the nodal
 /// domains of the owned particles (domain id = mesh node); Called on batches of domains
 /// (IntegrationPoints), so that the shape functions at the smoothing points, about ten times the
-/// size of the rows they make, are never held for a whole part at once.
+/// size of the rows they make, are never held for a whole part at once. `global_id`: the
+/// cloud's global ids on the device when the caller holds them (CloudIndex), else copied here.
 CsrTable smoothed_gradients(const ParticleCloud& cloud, const std::vector<SmoothingPoint>& points,
                             const ShapeFunctionValues& phi,
                             const std::vector<LocalIndex>& row_index,
-                            const std::vector<double>& row_volume);
+                            const std::vector<double>& row_volume,
+                            DeviceView<const LocalIndex*> global_id = {});
 
 }  // namespace efg

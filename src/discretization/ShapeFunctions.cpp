@@ -10,14 +10,14 @@ namespace efg {
 namespace {
 
 template <int Dim, int Order>
-void run_kernel(const ParticleCloud& cloud, const double* points, std::size_t count, bool gradients,
-                ShapeFunctionValues& out, std::vector<int>& status) {
+void run_kernel(const CloudIndex& index, const ParticleCloud& cloud, const double* points,
+                std::size_t count, bool gradients, ShapeFunctionValues& out,
+                std::vector<int>& status) {
   MlsKernel<Dim, Order> k;
-  const auto device = device_cloud(cloud);
   k.points = to_device(points, count, Dim, "efg::mls points");
-  k.particles = device.position;
-  k.support = device.support;
-  const auto lists = find_neighbors(cloud, device, k.points);
+  k.particles = index.cloud.position;
+  k.support = index.cloud.support;
+  const auto lists = find_neighbors(index, k.points);
   k.offsets = lists.offsets;
   k.neighbors = lists.particles;
   const auto nnz = lists.particles.extent(0);
@@ -46,12 +46,13 @@ void run_kernel(const ParticleCloud& cloud, const double* points, std::size_t co
 }
 
 template <int Dim>
-void dispatch_order(const ParticleCloud& cloud, const double* points, std::size_t count,
-                    bool gradients, ShapeFunctionValues& out, std::vector<int>& status) {
+void dispatch_order(const CloudIndex& index, const ParticleCloud& cloud, const double* points,
+                    std::size_t count, bool gradients, ShapeFunctionValues& out,
+                    std::vector<int>& status) {
   if (cloud.section.basis == Basis::linear)
-    run_kernel<Dim, 1>(cloud, points, count, gradients, out, status);
+    run_kernel<Dim, 1>(index, cloud, points, count, gradients, out, status);
   else
-    run_kernel<Dim, 2>(cloud, points, count, gradients, out, status);
+    run_kernel<Dim, 2>(index, cloud, points, count, gradients, out, status);
 }
 
 std::string describe_dilation(const SectionSpec& s) {
@@ -69,17 +70,23 @@ int basis_size(Basis basis, int dimension) {
 ShapeFunctionValues evaluate_shape_functions(const ParticleCloud& cloud, const double* points,
                                              std::size_t count, bool gradients,
                                              const PointLabel& label) {
+  return evaluate_shape_functions(index_cloud(cloud), cloud, points, count, gradients, label);
+}
+
+ShapeFunctionValues evaluate_shape_functions(const CloudIndex& index, const ParticleCloud& cloud,
+                                             const double* points, std::size_t count,
+                                             bool gradients, const PointLabel& label) {
   ShapeFunctionValues out;
   std::vector<int> status;
   switch (cloud.dimension) {
     case 1:
-      dispatch_order<1>(cloud, points, count, gradients, out, status);
+      dispatch_order<1>(index, cloud, points, count, gradients, out, status);
       break;
     case 2:
-      dispatch_order<2>(cloud, points, count, gradients, out, status);
+      dispatch_order<2>(index, cloud, points, count, gradients, out, status);
       break;
     case 3:
-      dispatch_order<3>(cloud, points, count, gradients, out, status);
+      dispatch_order<3>(index, cloud, points, count, gradients, out, status);
       break;
     default:
       throw std::logic_error("shape functions: dimension must be 1, 2 or 3");

@@ -38,6 +38,11 @@ int basis_size(Basis basis, int dimension);
 ShapeFunctionValues evaluate_shape_functions(const ParticleCloud& cloud, const double* points,
                                              std::size_t count, bool gradients,
                                              const PointLabel& label = {});
+/// The same with the cloud's search index built once by the caller (index_cloud(cloud)), for
+/// many batches of points.
+ShapeFunctionValues evaluate_shape_functions(const CloudIndex& index, const ParticleCloud& cloud,
+                                             const double* points, std::size_t count,
+                                             bool gradients, const PointLabel& label = {});
 
 /// The rows `rows[k]` of `v`, in that order (a row may be taken more than once): the values at
 /// points that coincide with evaluated ones.
