@@ -50,6 +50,7 @@ CellAverages cell_averages(const BackgroundMesh& mesh, const ParticleCloud& clou
   out.gradients.offsets.assign(1, 0);
   std::vector<double> sum(cloud.size() * dim, 0.0);  // scratch: one cell's row, by particle
   std::vector<char> touched(cloud.size(), 0);
+  const auto index = index_cloud(cloud);  // searched by every batch (docs/scaling.md)
   for (std::size_t first = 0; first < cells.size(); first += kCellBatch) {
     const std::size_t last = std::min(cells.size(), first + kCellBatch);
     std::vector<double> coords;
@@ -60,7 +61,7 @@ CellAverages cell_averages(const BackgroundMesh& mesh, const ParticleCloud& clou
         cell_of_point.push_back(cells[c].cell);
       }
     const auto phi = evaluate_shape_functions(
-        cloud, coords.data(), cell_of_point.size(), false, [&](std::size_t p) {
+        index, cloud, coords.data(), cell_of_point.size(), false, [&](std::size_t p) {
           return "boundary point of cell " + std::to_string(cell_of_point[p] + 1) +
                  " (mixed u-p cell average)";
         });
