@@ -101,14 +101,35 @@ class Emitter {
 
   // A 3D quadrilateral facet p0..p3 (possibly warped) whose right-hand normal points out of
   // `plus`: four triangles about the vertex average, one centroid point each; or, when
-  // `merge_flat` and the facet is flat, one point (flat_facet_point).
+  // `merge_flat`, one point if the facet is flat (flat_facet_point), else two.
   void quad(const std::array<Vec, 4>& p, LocalIndex plus, LocalIndex minus,
             bool merge_flat = false) {
-    SmoothingPoint one;
-    if (merge_flat && flat_facet_point(p, one)) {
-      one.plus = plus;
-      one.minus = minus;
-      out_.push_back(one);
+    if (merge_flat) {
+      SmoothingPoint one;
+      if (flat_facet_point(p, one)) {
+        one.plus = plus;
+        one.minus = minus;
+        out_.push_back(one);
+        return;
+      }
+      // Warped: the two triangles on the diagonal p0 p2, one centroid point each. They span the
+      // facet's boundary loop as the 4 triangles about the centre do; the surface between two
+      // domains may be any surface on that loop, since both domains take these same points and
+      // V_L comes from them as well, so linear consistency holds with half the points. (p0 and
+      // p2 are the edge midpoint and the cell centroid, or the node and the side centre: the
+      // same diagonal for the cells on either side of a shared side.)
+      for (const std::array<std::size_t, 3> t :
+           {std::array<std::size_t, 3>{0, 1, 2}, std::array<std::size_t, 3>{0, 2, 3}}) {
+        const Vec n = cross(sub(p[t[1]], p[t[0]]), sub(p[t[2]], p[t[0]]));
+        SmoothingPoint s;
+        for (std::size_t d = 0; d < 3; ++d) {
+          s.x[d] = (p[t[0]][d] + p[t[1]][d] + p[t[2]][d]) / 3.0;
+          s.weighted_normal[d] = 0.5 * n[d];
+        }
+        s.plus = plus;
+        s.minus = minus;
+        out_.push_back(s);
+      }
       return;
     }
     const Vec c = average({p[0], p[1], p[2], p[3]});
@@ -135,7 +156,8 @@ class Emitter {
 };
 
 // The boundary facets of one side, split among its nodes (see side_smoothing_points); with
-// `one_point`, one point per flat facet (SCNI subcells' sides inside the part).
+// `one_point`, one point per flat facet, two per warped one (SCNI subcells' sides inside the
+// part).
 void emit_side(Emitter& emit, const std::vector<Vec>& x, const std::vector<LocalIndex>& node,
                bool one_point = false) {
   auto mid = [&](std::size_t a, std::size_t b) { return average({x[a], x[b]}); };

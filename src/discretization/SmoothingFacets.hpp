@@ -33,7 +33,8 @@ struct SmoothingPoint {
 /// segments get 2 Gauss points; 3D facets are split into 4 triangles about their centre, one
 /// centroid point each (exact for the linear fields of the patch test, and the same points on
 /// every rank). With `inside` centroid, the facets inside a cell (between two nodes' domains)
-/// get one point each where they are flat (see flat_facet_point); sides keep the split rule.
+/// get one point each where they are flat (see flat_facet_point), two where they are warped
+/// (the triangles on a diagonal); the part's boundary sides keep the split rule.
 std::vector<SmoothingPoint> smoothing_points(
     const BackgroundMesh& mesh, const std::vector<std::string>& blocks,
     const std::vector<char>& node_wanted = {}, std::vector<std::size_t>* cell_of_point = nullptr,
