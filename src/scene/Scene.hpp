@@ -23,7 +23,7 @@ enum class SupportShape { box, sphere };
 enum class SpacingMeasure { cells, edges, neighbors };
 enum class Integration { scni, scni_subcells, nodal, gauss };
 /// Quadrature on the SCNI facets inside the cells: split (2 Gauss points per 2D segment, 4
-/// triangles per 3D facet) or centroid (one point per flat facet; warped ones stay split).
+/// triangles per 3D facet) or centroid (one point per flat facet, two per warped one).
 enum class SmoothingQuadrature { split, centroid };
 enum class Formulation { small_strain, total_lagrangian };
 /// The fields of a part: displacement only, or displacement and a pressure per background cell

@@ -71,27 +71,27 @@ TEST_P(Patch, LinearFieldToRoundOff) {
 
 INSTANTIATE_TEST_SUITE_P(
     Methods, Patch,
-    ::testing::Values(Case{2, "quad4", "transformation"}, Case{2, "tri3", "transformation"},
-                      Case{3, "hex8", "transformation"}, Case{3, "tet4", "transformation"},
-                      Case{2, "quad4", "nitsche"}, Case{3, "hex8", "nitsche"},
-                      Case{3, "wedge6", "nitsche"},
-                      // SCNI subcells: every piece of a nodal domain passes on its own
-                      Case{2, "quad4", "transformation", "cell", "scni_subcells"},
-                      Case{2, "tri3", "transformation", "cell", "scni_subcells"},
-                      Case{3, "hex8", "transformation", "cell", "scni_subcells"},
-                      Case{3, "tet4", "transformation", "cell", "scni_subcells"},
-                      Case{2, "quad4", "nitsche", "cell", "scni_subcells"},
-                      Case{3, "wedge6", "nitsche", "cell", "scni_subcells"},
-                      // One point per flat facet inside the cells (tetrahedra's are all flat
-                      // and not parallelograms; the perturbed hexahedra's warped ones stay split)
-                      Case{2, "quad4", "transformation", "cell", "scni", "centroid"},
-                      Case{2, "tri3", "nitsche", "cell", "scni", "centroid"},
-                      Case{3, "tet4", "transformation", "cell", "scni", "centroid"},
-                      Case{3, "tet4", "nitsche", "cell", "scni_subcells", "centroid"},
-                      Case{3, "hex8", "transformation", "cell", "scni", "centroid"},
-                      Case{2, "quad4", "transformation", "cell", "scni_subcells", "centroid"},
-                      Case{3, "wedge6", "transformation", "cell", "scni_subcells", "centroid"},
-                      Case{3, "wedge6", "nitsche", "cell", "scni", "centroid"}),
+    ::testing::Values(
+        Case{2, "quad4", "transformation"}, Case{2, "tri3", "transformation"},
+        Case{3, "hex8", "transformation"}, Case{3, "tet4", "transformation"},
+        Case{2, "quad4", "nitsche"}, Case{3, "hex8", "nitsche"}, Case{3, "wedge6", "nitsche"},
+        // SCNI subcells: every piece of a nodal domain passes on its own
+        Case{2, "quad4", "transformation", "cell", "scni_subcells"},
+        Case{2, "tri3", "transformation", "cell", "scni_subcells"},
+        Case{3, "hex8", "transformation", "cell", "scni_subcells"},
+        Case{3, "tet4", "transformation", "cell", "scni_subcells"},
+        Case{2, "quad4", "nitsche", "cell", "scni_subcells"},
+        Case{3, "wedge6", "nitsche", "cell", "scni_subcells"},
+        // One point per flat facet inside the cells (tetrahedra's are all flat
+        // and not parallelograms; the perturbed hexahedra's warped ones get two points)
+        Case{2, "quad4", "transformation", "cell", "scni", "centroid"},
+        Case{2, "tri3", "nitsche", "cell", "scni", "centroid"},
+        Case{3, "tet4", "transformation", "cell", "scni", "centroid"},
+        Case{3, "tet4", "nitsche", "cell", "scni_subcells", "centroid"},
+        Case{3, "hex8", "transformation", "cell", "scni", "centroid"},
+        Case{2, "quad4", "transformation", "cell", "scni_subcells", "centroid"},
+        Case{3, "wedge6", "transformation", "cell", "scni_subcells", "centroid"},
+        Case{3, "wedge6", "nitsche", "cell", "scni", "centroid"}),
     case_name);
 
 // Mixed u-p at nu = 0.4999 (operators/MixedPressure): the cell dilatations come from each cell's
