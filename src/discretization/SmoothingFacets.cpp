@@ -23,27 +23,44 @@ double dot(const Vec& a, const Vec& b) {
 }
 
 template <class Points>
-Vec average_of(const Points& pts) {
+Vec average(const Points& pts) {
   Vec c{0, 0, 0};
   for (const auto& p : pts)
     for (int d = 0; d < 3; ++d) c[static_cast<std::size_t>(d)] += p[static_cast<std::size_t>(d)];
   for (auto& v : c) v /= static_cast<double>(pts.size());
   return c;
 }
-Vec average(const std::vector<Vec>& pts) {
-  return average_of(pts);
-}
 // A braced list of points, without the heap (some 60 averages per cell).
 Vec average(std::initializer_list<Vec> pts) {
-  return average_of(pts);
+  return average<std::initializer_list<Vec>>(pts);
 }
-// The points x[k] for k in `which`, summed in that order (as average_of), without a copy.
+// The points x[k] for k in `which`, summed in that order (as average), without a copy.
 Vec average_at(const std::vector<Vec>& x, const std::vector<int>& which) {
   Vec c{0, 0, 0};
   for (int k : which)
     for (std::size_t d = 0; d < 3; ++d) c[d] += x[static_cast<std::size_t>(k)][d];
   for (auto& v : c) v /= static_cast<double>(which.size());
   return c;
+}
+
+// One triangle's point: its centroid (t0 + t1 + t2) / 3, exact for linear functions, with its
+// vector area (t1 - t0) x (t2 - t0) / 2 as the weighted normal.
+SmoothingPoint triangle_point(const Vec& t0, const Vec& t1, const Vec& t2) {
+  const Vec n = cross(sub(t1, t0), sub(t2, t0));
+  SmoothingPoint s;
+  for (std::size_t d = 0; d < 3; ++d) {
+    s.x[d] = (t0[d] + t1[d] + t2[d]) / 3.0;
+    s.weighted_normal[d] = 0.5 * n[d];
+  }
+  return s;
+}
+
+// The split rule of a quadrilateral facet p0..p3: 4 triangles about its vertex average.
+std::array<SmoothingPoint, 4> split_triangles(const std::array<Vec, 4>& p) {
+  const Vec c = average({p[0], p[1], p[2], p[3]});
+  std::array<SmoothingPoint, 4> t;
+  for (std::size_t i = 0; i < 4; ++i) t[i] = triangle_point(c, p[i], p[(i + 1) % 4]);
+  return t;
 }
 
 // The facets inside a cell of one type, one per cell edge (a, e), a < e ascending, with the
@@ -104,48 +121,25 @@ class Emitter {
   // `merge_flat`, one point if the facet is flat (flat_facet_point), else two.
   void quad(const std::array<Vec, 4>& p, LocalIndex plus, LocalIndex minus,
             bool merge_flat = false) {
+    auto emit = [&](SmoothingPoint s) {
+      s.plus = plus;
+      s.minus = minus;
+      out_.push_back(s);
+    };
     if (merge_flat) {
       SmoothingPoint one;
-      if (flat_facet_point(p, one)) {
-        one.plus = plus;
-        one.minus = minus;
-        out_.push_back(one);
-        return;
-      }
+      if (flat_facet_point(p, one)) return emit(one);
       // Warped: the two triangles on the diagonal p0 p2, one centroid point each. They span the
       // facet's boundary loop as the 4 triangles about the centre do; the surface between two
       // domains may be any surface on that loop, since both domains take these same points and
       // V_L comes from them as well, so linear consistency holds with half the points. (p0 and
       // p2 are the edge midpoint and the cell centroid, or the node and the side centre: the
       // same diagonal for the cells on either side of a shared side.)
-      for (const std::array<std::size_t, 3> t :
-           {std::array<std::size_t, 3>{0, 1, 2}, std::array<std::size_t, 3>{0, 2, 3}}) {
-        const Vec n = cross(sub(p[t[1]], p[t[0]]), sub(p[t[2]], p[t[0]]));
-        SmoothingPoint s;
-        for (std::size_t d = 0; d < 3; ++d) {
-          s.x[d] = (p[t[0]][d] + p[t[1]][d] + p[t[2]][d]) / 3.0;
-          s.weighted_normal[d] = 0.5 * n[d];
-        }
-        s.plus = plus;
-        s.minus = minus;
-        out_.push_back(s);
-      }
+      emit(triangle_point(p[0], p[1], p[2]));
+      emit(triangle_point(p[0], p[2], p[3]));
       return;
     }
-    const Vec c = average({p[0], p[1], p[2], p[3]});
-    for (std::size_t i = 0; i < 4; ++i) {
-      const Vec& a = p[i];
-      const Vec& b = p[(i + 1) % 4];
-      const Vec n = cross(sub(a, c), sub(b, c));
-      SmoothingPoint s;
-      for (std::size_t d = 0; d < 3; ++d) {
-        s.x[d] = (c[d] + a[d] + b[d]) / 3.0;
-        s.weighted_normal[d] = 0.5 * n[d];
-      }
-      s.plus = plus;
-      s.minus = minus;
-      out_.push_back(s);
-    }
+    for (const auto& t : split_triangles(p)) emit(t);
   }
 
   int dim() const { return dim_; }
@@ -262,34 +256,27 @@ std::vector<SmoothingPoint> smoothing_points(const BackgroundMesh& mesh,
 }
 
 bool flat_facet_point(const std::array<Vec, 4>& p, SmoothingPoint& out) {
-  // The 4 triangles about the vertex average c, as in the split rule: vector areas n_i / 2,
-  // centroids g_i. A flat facet's n_i are parallel to their sum N, so the facet's integral of
-  // a linear f n, sum_i f(g_i) n_i / 2, equals f(x*) N / 2 at x* = sum_i (n_i . N / N . N) g_i.
-  const Vec c = average({p[0], p[1], p[2], p[3]});
-  std::array<Vec, 4> n, g;
-  Vec total{0, 0, 0};
-  for (std::size_t i = 0; i < 4; ++i) {
-    const Vec& a = p[i];
-    const Vec& b = p[(i + 1) % 4];
-    n[i] = cross(sub(a, c), sub(b, c));
-    for (std::size_t d = 0; d < 3; ++d) {
-      g[i][d] = (c[d] + a[d] + b[d]) / 3.0;
-      total[d] += n[i][d];
-    }
-  }
+  // The split rule's 4 triangles: vector areas n_i / 2, centroids g_i. A flat facet's n_i are
+  // parallel to their sum N, so the facet's integral of a linear f n, sum_i f(g_i) n_i / 2,
+  // equals f(x*) N / 2 at x* = sum_i (n_i . N / N . N) g_i.
+  const auto t = split_triangles(p);
+  Vec total{0, 0, 0};  // N / 2
+  for (const auto& ti : t)
+    for (std::size_t d = 0; d < 3; ++d) total[d] += ti.weighted_normal[d];
   const double nn = dot(total, total);
   if (!(nn > 0.0)) return false;
   constexpr double flat = 1e-10;  // sine of the largest angle between a triangle and the facet
-  for (const auto& ni : n) {
-    const Vec off = cross(ni, total);
-    if (dot(off, off) > flat * flat * dot(ni, ni) * nn) return false;
+  for (const auto& ti : t) {
+    const Vec off = cross(ti.weighted_normal, total);
+    if (dot(off, off) > flat * flat * dot(ti.weighted_normal, ti.weighted_normal) * nn)
+      return false;
   }
   out.x = {0, 0, 0};
-  for (std::size_t i = 0; i < 4; ++i) {
-    const double share = dot(n[i], total) / nn;
-    for (std::size_t d = 0; d < 3; ++d) out.x[d] += share * g[i][d];
+  for (const auto& ti : t) {
+    const double share = dot(ti.weighted_normal, total) / nn;
+    for (std::size_t d = 0; d < 3; ++d) out.x[d] += share * ti.x[d];
   }
-  for (std::size_t d = 0; d < 3; ++d) out.weighted_normal[d] = 0.5 * total[d];
+  out.weighted_normal = total;
   return true;
 }
 
