@@ -188,9 +188,10 @@ efg_distributed_twin(NAME twin_shell_surface_strip SCENE tests/scenes/shells/str
   HISTORY history.csv FIELDS displacement_x displacement_z thickness TOL 2e-8
   REPLACE "mesh: {file: meshes/tapered_strip_16.exo}"
           "mesh:\n  file: ${PROJECT_SOURCE_DIR}/tests/scenes/shells/meshes/tapered_strip_16.exo")
-# One point per flat smoothing facet (smoothing_quadrature: centroid) on a sliced mesh: each rank
-# emits the facets of the cells around its nodes, the same points as the whole mesh gives.
-efg_distributed_twin(NAME twin_centroid_facets_3d SCENE regression/cantilever_block_3d/scene.yaml
+# The split rule on the smoothing facets (smoothing_quadrature: split; the default with the
+# linear basis is one point per flat facet) on a sliced mesh: each rank emits the facets of the
+# cells around its nodes, the same points as the whole mesh gives.
+efg_distributed_twin(NAME twin_split_facets_3d SCENE regression/cantilever_block_3d/scene.yaml
   HISTORY history.csv FIELDS displacement_x displacement_y displacement_z
-  REPLACE "      integration: scni" "      integration: scni\n      smoothing_quadrature: centroid"
+  REPLACE "      integration: scni" "      integration: scni\n      smoothing_quadrature: split"
           "  fields: [displacement, stress, von_mises, nodal_volume]" "  fields: [displacement, stress, von_mises, nodal_volume]\n  history: history.csv")
