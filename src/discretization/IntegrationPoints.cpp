@@ -111,7 +111,7 @@ void build_scni_subcells(const BackgroundMesh& mesh, const PartSpec& part,
   for (std::size_t n = 0; n < owned.size(); ++n) owned[n] = owner[n] == rank;
   std::vector<std::size_t> cell_of_point;
   const auto points = smoothing_points(mesh, part.blocks, owned, &cell_of_point, true,
-                                       part.section.smoothing_quadrature);
+                                       facet_rule(part.section, cloud.dimension));
   const auto index = index_cloud(cloud);  // searched batch after batch
   const auto at_particles = evaluate_shape_functions(
       index, cloud, cloud.position.data(), cloud.owned_count, false, [&](std::size_t p) {
@@ -253,8 +253,8 @@ void build_scni(const BackgroundMesh& mesh, const PartSpec& part, const Particle
 
   std::vector<char> owned(mesh.node_count(), 0);
   for (std::size_t n = 0; n < owned.size(); ++n) owned[n] = owner[n] == rank;
-  const auto points =
-      smoothing_points(mesh, part.blocks, owned, nullptr, false, part.section.smoothing_quadrature);
+  const auto points = smoothing_points(mesh, part.blocks, owned, nullptr, false,
+                                       facet_rule(part.section, cloud.dimension));
   const auto volume = smoothing_domain_volumes(points, mesh.node_count(), cloud.dimension);
   // The shape functions at the smoothing points (some 24-48 points per particle in 3D, each
   // with its whole neighbour list) are about ten times the rows of B~ they make: evaluated for a

@@ -307,4 +307,12 @@ std::vector<double> smoothing_domain_volumes(const std::vector<SmoothingPoint>& 
   return volume;
 }
 
+SmoothingQuadrature facet_rule(const SectionSpec& section, int dimension) {
+  if (section.smoothing_quadrature != SmoothingQuadrature::automatic)
+    return section.smoothing_quadrature;
+  const bool centroid =
+      dimension == 3 && section.basis == Basis::linear && section.integration == Integration::scni;
+  return centroid ? SmoothingQuadrature::centroid : SmoothingQuadrature::split;
+}
+
 }  // namespace efg

@@ -67,8 +67,9 @@ SpecPtr section_spec() {
                  "functions in 3D (2x in 2D), setup about 3x faster on hex grids, results moved "
                  "by about 1e-5 there; with a quadratic basis in 2D it gives up the split rule's "
                  "exactness for quadratics along the segments (energy errors about 1.35x). The "
-                 "part's boundary sides always use the split rule. auto: centroid with the "
-                 "linear basis, split with the quadratic. See docs/discretization.md.",
+                 "part's boundary sides always use the split rule. auto (default): centroid "
+                 "for integration scni with the linear basis in 3D, split otherwise. See "
+                 "docs/discretization.md.",
                  {"auto", "split", "centroid"}),
           "auto")
       .optional("gauss_order",

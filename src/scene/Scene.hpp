@@ -23,8 +23,9 @@ enum class SupportShape { box, sphere };
 enum class SpacingMeasure { cells, edges, neighbors };
 enum class Integration { scni, scni_subcells, nodal, gauss };
 /// Quadrature on the SCNI facets inside the cells: split (2 Gauss points per 2D segment, 4
-/// triangles per 3D facet) or centroid (one point per flat facet, two per warped one).
-enum class SmoothingQuadrature { split, centroid };
+/// triangles per 3D facet) or centroid (one point per flat facet, two per warped one);
+/// automatic: chosen per part by discretization/SmoothingFacets' facet_rule.
+enum class SmoothingQuadrature { automatic, split, centroid };
 enum class Formulation { small_strain, total_lagrangian };
 /// The fields of a part: displacement only, or displacement and a pressure per background cell
 /// (mixed u-p, statically condensed; operators/MixedPressure.hpp).
@@ -60,7 +61,7 @@ struct SectionSpec {
   /// per direction over the whole mesh (set by model/DistributedMesh; empty otherwise).
   std::vector<double> part_support;
   Integration integration = Integration::scni;
-  SmoothingQuadrature smoothing_quadrature = SmoothingQuadrature::split;
+  SmoothingQuadrature smoothing_quadrature = SmoothingQuadrature::automatic;
   int gauss_order = 2;
   Formulation formulation = Formulation::small_strain;
 };

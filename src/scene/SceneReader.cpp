@@ -203,16 +203,11 @@ class SceneBuilder {
                                             {"scni_subcells", Integration::scni_subcells},
                                             {"nodal", Integration::nodal},
                                             {"gauss", Integration::gauss}});
-    // auto: one point per flat facet with the linear basis, whose consistency it keeps exactly at
-    // a third of the split rule's setup; the quadratic basis keeps the split rule, whose 2 Gauss
-    // points per 2D segment integrate its quadratic fields (docs/discretization.md).
-    const auto quadrature = sec["smoothing_quadrature"].as<std::string>();
     out.smoothing_quadrature =
-        quadrature == "auto"
-            ? (out.basis == Basis::linear ? SmoothingQuadrature::centroid
-                                          : SmoothingQuadrature::split)
-            : enum_of<SmoothingQuadrature>(quadrature, {{"split", SmoothingQuadrature::split},
-                                                        {"centroid", SmoothingQuadrature::centroid}});
+        enum_of<SmoothingQuadrature>(sec["smoothing_quadrature"].as<std::string>(),
+                                     {{"auto", SmoothingQuadrature::automatic},
+                                      {"split", SmoothingQuadrature::split},
+                                      {"centroid", SmoothingQuadrature::centroid}});
     out.gauss_order = sec["gauss_order"].as<int>();
     out.formulation = enum_of<Formulation>(sec["formulation"].as<std::string>(),
                                            {{"small_strain", Formulation::small_strain},

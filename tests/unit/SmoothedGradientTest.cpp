@@ -225,6 +225,27 @@ TEST(SmoothedGradient, CentroidRuleMergesFlatFacetsAndHalvesWarpedOnes) {
             3024u);
 }
 
+// smoothing_quadrature: auto takes one point per flat facet only where it costs nothing
+// measurable: plain SCNI, linear basis, 3D. The 2D, quadratic-basis and subcell cases keep the
+// split rule, and a rule named in the scene is kept as named.
+TEST(SmoothedGradient, AutoRuleIsCentroidForPlainLinearScniIn3DOnly) {
+  SectionSpec section;  // the defaults: auto, linear basis, scni
+  EXPECT_EQ(facet_rule(section, 3), SmoothingQuadrature::centroid);
+  EXPECT_EQ(facet_rule(section, 2), SmoothingQuadrature::split);
+  section.basis = Basis::quadratic;
+  EXPECT_EQ(facet_rule(section, 3), SmoothingQuadrature::split);
+  section.basis = Basis::linear;
+  section.integration = Integration::scni_subcells;
+  EXPECT_EQ(facet_rule(section, 3), SmoothingQuadrature::split);
+  section.smoothing_quadrature = SmoothingQuadrature::centroid;
+  EXPECT_EQ(facet_rule(section, 3), SmoothingQuadrature::centroid);
+  section.integration = Integration::scni;
+  section.smoothing_quadrature = SmoothingQuadrature::split;
+  EXPECT_EQ(facet_rule(section, 3), SmoothingQuadrature::split);
+  section.smoothing_quadrature = SmoothingQuadrature::centroid;
+  EXPECT_EQ(facet_rule(section, 2), SmoothingQuadrature::centroid);
+}
+
 // The boundary rule of one side: the same exactness for a cubic along a side from (0, 0) to
 // (2, 0): integral of x^3 = 4, of x^2 = 8/3.
 TEST(SmoothedGradient, SidePointsIntegrateACubicExactly) {
