@@ -28,6 +28,7 @@ using StateOutput = std::function<void(const RunState&)>;
 
 struct ExplicitSummary {
   long long steps = 0;
+  long long dt_estimates = 0;  ///< stable-step estimates during the stage (the plan's not counted)
   double smallest_dt = 0, largest_dt = 0, worst_balance_error = 0;
   /// Quasi-static indicator of a forming stage, from the records: the time integral of the
   /// kinetic energy over that of the internal energy (trapezoids), and their ratio at the end.

@@ -195,7 +195,8 @@ RunOutcome run_stages(const CommPtr& comm, const Model& model, const std::string
           << " to " << s.largest_dt << ", worst energy balance error "
           << 100 * s.worst_balance_error << " %, kinetic / internal energy "
           << s.kinetic_to_internal_mean << " (time integrals over the stage), "
-          << s.kinetic_to_internal_end << " at its end";
+          << s.kinetic_to_internal_end << " at its end, " << s.dt_estimates
+          << " stable-step re-estimates";
         Log::info(o.str());
       }
     });

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "core/Errors.hpp"
+#include "core/Log.hpp"
 #include "scene/ContactInput.hpp"
 #include "scene/DistributedReadChecks.hpp"
 #include "scene/FieldInput.hpp"
@@ -18,6 +19,7 @@
 #include "scene/SceneSchema.hpp"
 #include "scene/SchemaValidator.hpp"
 #include "scene/StageLists.hpp"
+#include "scene/UnreadPartKeys.hpp"
 #include "scene/YamlDocument.hpp"
 
 namespace efg {
@@ -150,6 +152,7 @@ class SceneBuilder {
 
   void build_part(const YAML::Node& p, const YAML::Node& doc, std::size_t i) {
     const std::string path = "parts[" + std::to_string(i) + "]";
+    for (const auto& message : unread_part_keys(s_.file, doc, p, path)) Log::warning(message);
     PartSpec part;
     part.name = p["name"].as<std::string>();
     part.blocks = as_vector<std::string>(p["blocks"]);

@@ -12,6 +12,7 @@
 #include "scene/SceneReader.hpp"
 #include "scene/SceneSchema.hpp"
 #include "scene/SchemaMarkdown.hpp"
+#include "scene/UnreadPartKeys.hpp"
 
 namespace efg {
 namespace {
@@ -111,3 +112,32 @@ TEST(SceneSchema, ExactSolutionChoicesAreImplemented) {
   std::sort(implemented.begin(), implemented.end());
   EXPECT_EQ(offered, implemented);
 }
+
+namespace efg {
+namespace {
+
+// Each key is reported where its part's other choices leave it unread, and nowhere else.
+TEST(UnreadPartKeys, WarnsOnlyOfKeysThePartsIntegrationLeavesUnread) {
+  const auto warnings = [](const char* written, const char* integration) {
+    YAML::Node resolved;
+    resolved["section"]["integration"] = integration;
+    return unread_part_keys("s.yaml", YAML::Load(written), resolved, "parts[0]");
+  };
+  const char* both = "{section: {gauss_order: 3, smoothing_quadrature: split}}";
+  auto w = warnings(both, "gauss");
+  ASSERT_EQ(w.size(), 1u);
+  EXPECT_NE(w[0].find("s.yaml:1:50: parts[0].section.smoothing_quadrature: ignored"),
+            std::string::npos)
+      << w[0];
+  w = warnings(both, "scni");
+  ASSERT_EQ(w.size(), 1u);
+  EXPECT_NE(w[0].find("s.yaml:1:25: parts[0].section.gauss_order: ignored"), std::string::npos)
+      << w[0];
+  EXPECT_EQ(warnings(both, "scni_subcells").size(), 1u);  // gauss_order
+  EXPECT_EQ(warnings(both, "nodal").size(), 2u);
+  EXPECT_TRUE(warnings("{section: {integration: gauss}}", "gauss").empty());
+  EXPECT_TRUE(warnings("{name: p}", "scni").empty());
+}
+
+}  // namespace
+}  // namespace efg
