@@ -40,16 +40,6 @@ double largest_wall_penalty(const Scene& scene) {
   for (const auto& w : scene.rigid_walls) p = std::max(p, w.penalty);
   return p;
 }
-// Linear elastic parts only (small strain by the scene's rules): f_int = K d with K constant, so
-// the largest eigenvalue of M^-1 K is the same at every step (walls, contacts and weak supports
-// enter by constant terms; erosion needs plasticity). The plan's estimate serves the whole
-// stage: at 1e6 particles each re-estimate took 9 s, some 16 steps' worth (docs/explicit.md).
-bool constant_stiffness(const Scene& scene) {
-  for (const auto& part : scene.parts)
-    for (const auto& material : scene.materials)
-      if (material.name == part.material && material.model != "linear_elastic") return false;
-  return true;
-}
 }  // namespace
 
 ExplicitDriver::ExplicitDriver(const ModelOperators& ops, const StageSpec& stage)
@@ -383,9 +373,11 @@ ExplicitSummary ExplicitDriver::run(RunState& state, const StateOutput& output, 
   // The stable step is re-estimated after 1, 3, 7, ... steps: the interval doubles up to
   // dt_update_interval while the estimate holds, and halves when it fell by more than 5 % since
   // the last one. An impact that shrinks the stable step tenfold within a few dozen steps (the
-  // Taylor bar) is followed at once; a steady run pays for a few estimates only. A constant
-  // stiffness keeps the plan's estimate.
-  const bool reestimate = !fixed && !constant_stiffness(ops_.model().scene);
+  // Taylor bar) is followed at once; a steady run pays for a few estimates only. Linear elastic
+  // parts keep the plan's estimate: their K is constant, so is omega_max of M^-1 K (walls,
+  // contacts and weak supports enter by constant terms; erosion needs plasticity); at 1e6
+  // particles each re-estimate took 9 s, some 16 steps' worth (docs/explicit.md).
+  const bool reestimate = !fixed && !ops_.model().scene.every_part_linear_elastic();
   long long estimate_interval = 1, next_estimate = 1;
   // Trapezoids of the kinetic and internal energies over the records (quasi-static indicator).
   double kinetic_integral = 0, internal_integral = 0, last_record_time = start_time,

@@ -45,10 +45,7 @@ StaticProblem::StaticProblem(std::shared_ptr<const ModelOperators> operators)
     surfaces_->refresh_couplings(d_overlap_);  // the reference configuration's reach
   }
   build_graph();
-  linear_ = contact_ == nullptr && surfaces_ == nullptr;
-  for (const auto& part : model_.scene.parts)
-    for (const auto& material : model_.scene.materials)
-      if (material.name == part.material && material.model != "linear_elastic") linear_ = false;
+  linear_ = contact_ == nullptr && surfaces_ == nullptr && model_.scene.every_part_linear_elastic();
 }
 
 void StaticProblem::build_graph() {

@@ -288,6 +288,10 @@ struct Scene {
   /// The largest Poisson's ratio of the parts' materials (0 when none has one): how close to
   /// incompressible the model is (the automatic linear solver choice depends on it).
   double largest_poissons_ratio() const;
+  /// True when every part's material is linear elastic (small strain by the scene's rules): the
+  /// internal force is then K d with a constant K (one Newton step solves an implicit stage
+  /// without contacts; an explicit stage keeps its first stable-step estimate).
+  bool every_part_linear_elastic() const;
   /// True when a part is a shell (the run then takes the shell path, src/shells).
   bool has_shells() const {
     for (const auto& p : parts)

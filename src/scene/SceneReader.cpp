@@ -506,6 +506,14 @@ const MaterialSpec* Scene::find_material(const std::string& material_name) const
   return nullptr;
 }
 
+bool Scene::every_part_linear_elastic() const {
+  for (const auto& part : parts) {
+    const auto* material = find_material(part.material);
+    if (material && material->model != "linear_elastic") return false;
+  }
+  return true;
+}
+
 std::string read_scene_text(const std::string& file) {
   std::ifstream in(file);
   if (!in)

@@ -1,8 +1,8 @@
 // Keys of a part that its other choices leave unread: `gauss_order` beside an integration other
 // than gauss, `smoothing_quadrature` beside gauss or nodal integration (`pressure_cells` beside
-// the displacement formulation is refused: PartFormulationCheck). Valid keys, so no error; but a user who writes
-// `gauss_order: 4` next to `integration: scni` expects it to do something, and should hear that it
-// does not (warnings, with the file, line, column and key path of the key).
+// the displacement formulation is refused: PartFormulationCheck). Valid keys, so no error; but a
+// user who writes `gauss_order: 4` next to `integration: scni` expects it to do something, and
+// should hear that it does not (warnings, with the file, line, column and key path of the key).
 #pragma once
 
 #include <yaml-cpp/yaml.h>
