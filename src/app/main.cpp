@@ -1,5 +1,5 @@
 // efg entry point: parses the command line, runs one command, maps failures to exit codes.
-#include <Teuchos_CommHelpers.hpp>
+#include <mpi.h>
 #include <Tpetra_Core.hpp>
 
 #include <cstdlib>
@@ -16,19 +16,12 @@
 #include "core/Threads.hpp"
 #include "core/Version.hpp"
 #include "parallel/Collective.hpp"
+#include "parallel/ExitReport.hpp"
+#include "parallel/FailureWatchdog.hpp"
 
 namespace {
 
-struct Outcome {
-  int code = 0;
-  std::string message;  ///< what this rank has to say (empty: nothing)
-};
-
-Outcome dispatch(const efg::CommPtr& comm, const std::vector<std::string>& args) {
-  using efg::ExitCode;
-  auto failed = [](ExitCode code, const std::string& prefix, const char* what) {
-    return Outcome{static_cast<int>(code), prefix + what};
-  };
+efg::ExitReport dispatch(const efg::CommPtr& comm, const std::vector<std::string>& args) {
   try {
     const auto cl = efg::parse_command_line(args);
     if (cl.command == "help") {
@@ -48,20 +41,12 @@ Outcome dispatch(const efg::CommPtr& comm, const std::vector<std::string>& args)
       if (comm->getRank() == 0) efg::schema_command();
     }
     return {};
-  } catch (const efg::PeerFailure& e) {
-    return {e.exit_code(), ""};  // the failing rank has the message
-  } catch (const efg::InputError& e) {
-    return failed(ExitCode::bad_input, "efg: error: ", e.what());
-  } catch (const efg::VerificationError& e) {
-    return failed(ExitCode::verification, "efg: verification failed: ", e.what());
-  } catch (const efg::NumericalError& e) {
-    return failed(ExitCode::numerical, "efg: numerical failure: ", e.what());
-  } catch (const std::bad_alloc&) {
-    return failed(ExitCode::other, "efg: error: ",
-                  "out of memory: the model needs more memory than this process can have "
-                  "(coarsen the mesh, or run on more ranks or machines)");
-  } catch (const std::exception& e) {
-    return failed(ExitCode::other, "efg: error: ", e.what());
+  } catch (...) {
+    // A failure of this rank (not a peer's, which was agreed) raises the watchdog's alarm: if
+    // the other ranks never come to settle the exit, it still ends, with this message.
+    auto report = efg::exit_report(std::current_exception());
+    if (!report.message.empty()) efg::raise_failure_alarm(report.code, report.message);
+    return report;
   }
 }
 
@@ -75,15 +60,22 @@ int main(int argc, char** argv) {
     Tpetra::ScopeGuard scope(library.argc(), library.argv());
     const auto comm = Tpetra::getDefaultComm();
     efg::Log::set_rank(comm->getRank());
+    // The exit is settled on a communicator of its own: a rank that failed alone must never
+    // match a collective call the others make on the run's communicator.
+    MPI_Comm exit_comm = MPI_COMM_NULL;
+    MPI_Comm_dup(MPI_COMM_WORLD, &exit_comm);
+    efg::start_failure_watchdog();
     const std::vector<std::string> args(argv + 1, argv + argc);
     const auto outcome = dispatch(comm, args);
     // One message however many ranks failed: the lowest rank that has one prints it. All ranks
     // leave with the worst code any rank saw (a numerical failure may be rank-local).
     const int size = comm->getSize(), rank = comm->getRank();
-    int speaker = outcome.message.empty() ? size : rank, first = size;
-    Teuchos::reduceAll(*comm, Teuchos::REDUCE_MIN, speaker, Teuchos::outArg(first));
-    if (rank == first) std::cerr << outcome.message << std::endl;
-    Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, outcome.code, Teuchos::outArg(code));
+    int mine[2] = {outcome.code, outcome.message.empty() ? -size : -rank}, all[2] = {0, 0};
+    MPI_Allreduce(mine, all, 2, MPI_INT, MPI_MAX, exit_comm);
+    efg::settle_failure_alarm();
+    if (rank == -all[1]) std::cerr << outcome.message << std::endl;
+    code = all[0];
+    MPI_Comm_free(&exit_comm);
   }
   return code;
 }

@@ -1,4 +1,5 @@
 #include "contact/RigidContact.hpp"
+#include "parallel/FaultInjection.hpp"
 
 namespace efg {
 
@@ -32,6 +33,7 @@ void RigidContact::move(double time, double dt) {
 }
 
 void RigidContact::add_forces(const Vector& d_overlap, double dt, Vector& f_overlap) {
+  fault_point("contact");
   contact_.add_forces(d_overlap, dt, states_, f_overlap);
   if (surfaces_) surfaces_->add_forces(d_overlap, dt, f_overlap);
 }

@@ -14,6 +14,7 @@
 
 #include "core/Errors.hpp"
 #include "core/Log.hpp"
+#include "parallel/ExitReport.hpp"
 #include "scene/ParameterListFromYaml.hpp"
 #include "solvers/RigidBodyModes.hpp"
 
@@ -226,9 +227,13 @@ NewtonResult NewtonSolver::solve(Vector& d, double step_scale, double step_energ
   try {
     status = solver->solve();
   } catch (const NumericalError& e) {  // a singular factorization, a failed multigrid setup
+    // The stage goes on collectively (a cutback, the last state written): only once every rank
+    // knows (a factorization fails on all); a failure of this rank alone ends the run here.
+    meet_with_current_failure();
     result.failure = e.what();
     result.linear_failure = true;
   } catch (const std::exception& e) {
+    meet_with_current_failure();
     result.failure = std::string("linear or nonlinear solver failed: ") + e.what();
   }
   // A failed evaluation at a line-search trial point (an inverted point, say) is no failure of

@@ -13,6 +13,7 @@
 
 #include "core/Errors.hpp"
 #include "core/Log.hpp"
+#include "parallel/FaultInjection.hpp"
 #include "parallel/ReproducibleSum.hpp"
 
 namespace efg {
@@ -133,6 +134,7 @@ double StableTimeStep::estimate(const Vector& d_owned) {
   Anasazi::BlockKrylovSchurSolMgr<double, MultiVector, Tpetra::Operator<>> solver(problem,
                                                                                   settings);
   try {
+    fault_point("stable_step");
     solver.solve();
   } catch (const std::exception& e) {
     // Anasazi's Hermitian Krylov-Schur throws on restart when a nonsymmetric operator gives

@@ -8,6 +8,7 @@
 
 #include "core/Log.hpp"
 #include "parallel/Collective.hpp"
+#include "parallel/FaultInjection.hpp"
 
 namespace efg {
 
@@ -121,7 +122,10 @@ void StaticProblem::unconstrained_residual(const Vector& d_owned, Vector& r_owne
   // A failure among one rank's points (det F <= 0 in a line-search trial) stops every rank here,
   // before the export where the others would wait for it forever (seen on 2 ranks).
   const auto comm = model_.maps.owned_dofs->getComm();
-  run_collectively(comm, [&] { ops_->add_internal_force(d_overlap_, r_overlap_); });
+  run_collectively(comm, [&] {
+    fault_point("newton");
+    ops_->add_internal_force(d_overlap_, r_overlap_);
+  });
   ops_->to_owned(r_overlap_, r_owned);
   // The Newton test's force scale: f_int alone, whose rows carry the reactions of the supports
   // and prescribed motions. With the boundary terms and contact forces added the sum vanishes at

@@ -2,10 +2,12 @@
 
 #include <exodusII.h>
 
+#include <cerrno>
 #include <stdexcept>
 
 #include "core/Errors.hpp"
 #include "io/NetcdfHeaderCheck.hpp"
+#include "io/WritePaths.hpp"
 
 namespace efg::exodus {
 
@@ -24,9 +26,16 @@ File File::open_read(const std::string& path) {
 
 File File::create(const std::string& path) {
   ex_opts(0);
+  // A temporary name of ours: whatever holds it (a stale partial file, a symbolic link planted
+  // there) is removed, not followed, and the file is made anew (O_EXCL through NOCLOBBER), so
+  // the results never land outside the output folder through a link.
+  const auto reason = clear_for_writing(path);
+  if (!reason.empty()) throw std::runtime_error("cannot create '" + path + "': " + reason);
   int cpu_ws = sizeof(double), io_ws = sizeof(double);
-  const int id = ex_create(path.c_str(), EX_CLOBBER, &cpu_ws, &io_ws);
-  if (id < 0) throw std::runtime_error("cannot create Exodus file '" + path + "'");
+  errno = 0;
+  const int id = ex_create(path.c_str(), EX_NOCLOBBER, &cpu_ws, &io_ws);
+  if (id < 0)
+    throw std::runtime_error("cannot create Exodus file '" + path + "'" + os_reason(errno));
   ex_set_int64_status(id, EX_ALL_INT64_API);
   return File(id, path, true);
 }
@@ -51,7 +60,9 @@ void File::close() {
 void File::check(int status, const char* what) const {
   if (status >= 0) return;
   const std::string message = "Exodus file '" + path_ + "': " + what + " failed";
-  if (writing_) throw std::runtime_error(message);
+  // The library's status says only that the call failed; the OS's reason (no space left on the
+  // device, a quota) is what the user can act on.
+  if (writing_) throw std::runtime_error(message + os_reason(errno));
   throw InputError("mesh file '" + path_ + "': " + what + " failed (corrupt or truncated file?)");
 }
 

@@ -2,12 +2,15 @@
 
 #include <exodusII.h>
 
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <stdexcept>
 #include <string>
 
 #include "core/Errors.hpp"
+#include "io/WritePaths.hpp"
 
 namespace efg {
 namespace {
@@ -212,6 +215,17 @@ void ExodusWriter::write_record(double time, const std::vector<std::vector<doubl
   ++records_;
 }
 
+ExodusWriter::~ExodusWriter() {
+  if (!file_) return;
+  try {
+    file_->close();
+  } catch (...) {
+  }
+  file_.reset();
+  std::error_code ec;
+  std::filesystem::remove(path_ + ".part", ec);
+}
+
 void ExodusWriter::close(bool keep_partial) {
   if (!file_) return;
   file_->close();
@@ -219,7 +233,7 @@ void ExodusWriter::close(bool keep_partial) {
   if (keep_partial) return;
   const std::string part = path_ + ".part";
   if (std::rename(part.c_str(), path_.c_str()) != 0)
-    throw std::runtime_error("cannot rename '" + part + "' to '" + path_ + "'");
+    throw std::runtime_error("cannot rename '" + part + "' to '" + path_ + "'" + os_reason(errno));
 }
 
 }  // namespace efg

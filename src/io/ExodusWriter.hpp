@@ -40,7 +40,9 @@ class ExodusWriter {
                const std::string& title, const ExodusPieceIds* piece = nullptr);
   ExodusWriter(const ExodusWriter&) = delete;
   ExodusWriter& operator=(const ExodusWriter&) = delete;
-  ~ExodusWriter() = default;  // an unclosed writer leaves only "<path>.part" behind
+  /// A writer neither closed nor kept (a run stopped by bad input or an unexpected error)
+  /// removes its "<path>.part": such a failure writes nothing. A killed process leaves it.
+  ~ExodusWriter();
 
   /// Appends one record. Each vector holds the fields in layout order.
   void write_record(double time, const std::vector<std::vector<double>>& nodal,

@@ -9,6 +9,7 @@
 
 #include "mesh/MeshPiece.hpp"
 #include "parallel/Collective.hpp"
+#include "parallel/FaultInjection.hpp"
 
 namespace efg {
 namespace {
@@ -115,6 +116,7 @@ void ResultsOutput::write(double time, const MultiVector& nodal, const std::vect
   // The writing ranks write; a refused record (a non-finite value) or a failed write is learned
   // by all.
   run_collectively(comm_, [&] {
+    fault_point("output");
     if (!writer_) return;
     std::vector<std::vector<double>> columns(nodal.getNumVectors(), std::vector<double>(nodes_));
     auto view = gathered.getLocalViewHost(Tpetra::Access::ReadOnly);

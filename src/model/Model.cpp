@@ -17,6 +17,7 @@
 #include "model/ScenePoints.hpp"
 #include "model/SurfaceSliceChart.hpp"
 #include "parallel/Collective.hpp"
+#include "parallel/FaultInjection.hpp"
 #include "parallel/MeshBroadcast.hpp"
 #include "parallel/RootBroadcast.hpp"
 #include "scene/SceneMeshChecks.hpp"
@@ -38,6 +39,7 @@ Scene load_scene(const CommPtr& comm, const std::string& scene_file) {
 BackgroundMesh load_mesh(const CommPtr& comm, Scene& scene) {
   auto mesh = load_on_root_and_broadcast(comm, [&] {
     try {
+      fault_point("mesh");
       auto m =
           scene.generator ? generate_mesh(*scene.generator) : read_exodus_mesh(scene.mesh_file);
       for (const auto& block : scene.more_blocks) append_generated(m, block);
@@ -100,6 +102,7 @@ Model build_model(const CommPtr& comm, Scene scene) {
     for (std::size_t p = 0; p < model.scene.parts.size(); ++p) {
       const auto* whole =
           p < patches.part.size() && patches.part[p].size() > 0 ? &patches.part[p] : nullptr;
+      fault_point("discretization");
       model.parts.push_back(
           discretize_part(model.mesh, model.scene.parts[p], model.partition, whole));
     }

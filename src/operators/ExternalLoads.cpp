@@ -6,6 +6,8 @@
 #include "discretization/ShapeFunctions.hpp"
 #include "model/NodeSetSize.hpp"
 #include "operators/SideQuadrature.hpp"
+#include "parallel/Collective.hpp"
+#include "parallel/FaultInjection.hpp"
 
 namespace efg {
 
@@ -158,6 +160,7 @@ std::array<double, 3> load_value(const LoadSpec& spec, const ExactSolution* exac
 // f_overlap += scale * sum over points of phi_I(x_p) value(x_p, t) w_p.
 void scatter(const LoadSpec& spec, const ExactSolution* exact, int dim, const Points& pts, double t,
              double scale, Vector& f_overlap) {
+  fault_point("loads");
   auto f = f_overlap.getLocalViewHost(Tpetra::Access::ReadWrite);
   const auto udim = static_cast<std::size_t>(dim);
   for (std::size_t q = 0; q < pts.weight.size(); ++q) {
@@ -209,18 +212,23 @@ ExternalLoads::ExternalLoads(const Model& model, const SolidOperator& op,
 
 void ExternalLoads::assemble(const LoadFactor& factor, Vector& f_owned) const {
   f_owned.putScalar(0.0);
-  if (!timed_overlap_.is_null()) timed_overlap_->putScalar(0.0);
-  for (const auto& l : loads_) {
-    if (!l.spec->stages.includes(factor.stage())) continue;  // not applied in this stage
-    if (l.force.is_null()) {
-      // An expression of t is the value at that time: no default ramp without a curve.
-      const double f = l.spec->curve.empty() ? 1.0 : factor(l.spec->curve);
-      scatter(*l.spec, exact_, dim_, l.points, factor.time(), f, *timed_overlap_);
-    } else {
+  for (const auto& l : loads_)
+    if (l.spec->stages.includes(factor.stage()) && !l.force.is_null())
       f_owned.update(factor(l.spec->curve), *l.force, 1.0);
-    }
-  }
   if (!timed_overlap_.is_null()) {
+    // An expression may be finite at the scene check's sample times and not at a time the run
+    // reaches (1/(t - 0.4) at a load step ending at 0.4). Only the ranks holding the loaded
+    // points find it: every rank learns of it here, before the export where the others would
+    // wait for them forever.
+    run_collectively(owned_->getComm(), [&] {
+      timed_overlap_->putScalar(0.0);
+      for (const auto& l : loads_) {
+        if (!l.spec->stages.includes(factor.stage()) || !l.force.is_null()) continue;
+        // An expression of t is the value at that time: no default ramp without a curve.
+        const double f = l.spec->curve.empty() ? 1.0 : factor(l.spec->curve);
+        scatter(*l.spec, exact_, dim_, l.points, factor.time(), f, *timed_overlap_);
+      }
+    });
     timed_owned_->putScalar(0.0);  // as a fresh vector: ADD sums every rank's share
     timed_owned_->doExport(*timed_overlap_, *to_owned_, Tpetra::ADD);
     f_owned.update(1.0, *timed_owned_, 1.0);

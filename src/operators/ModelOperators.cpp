@@ -1,6 +1,7 @@
 #include "operators/ModelOperators.hpp"
 
 #include "parallel/Collective.hpp"
+#include "parallel/FaultInjection.hpp"
 
 namespace efg {
 namespace {
@@ -19,15 +20,19 @@ ModelOperators::ModelOperators(const Model& model)
       import_(Teuchos::rcp(new Tpetra::Import<>(model.maps.owned_dofs, model.maps.overlap_dofs))),
       export_(Teuchos::rcp(new Tpetra::Export<>(model.maps.overlap_dofs, model.maps.owned_dofs))),
       d_overlap_(model.maps.overlap_dofs),
-      f_overlap_(model.maps.overlap_dofs) {}
+      f_overlap_(model.maps.overlap_dofs) {
+  fault_point("operators");
+}
 
 void ModelOperators::internal_force(const Vector& d_owned, Vector& f_owned) const {
   to_overlap(d_owned, d_overlap_);
   f_overlap_.putScalar(0.0);
   // An inverted point on one rank must stop every rank before the export, where the others
   // would otherwise wait for it forever.
-  run_collectively(model_.maps.owned_dofs->getComm(),
-                   [&] { add_internal_force(d_overlap_, f_overlap_); });
+  run_collectively(model_.maps.owned_dofs->getComm(), [&] {
+    fault_point("internal_force");
+    add_internal_force(d_overlap_, f_overlap_);
+  });
   to_owned(f_overlap_, f_owned);
 }
 

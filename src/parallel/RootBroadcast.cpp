@@ -12,7 +12,8 @@ namespace efg {
 
 std::vector<char> produce_on_root(const CommPtr& comm,
                                   const std::function<std::vector<char>()>& produce) {
-  // Message: one status byte (0 ok, 2 input error, 1 other error), then the bytes or the text.
+  // Message: one status byte (0 ok, 2 input error, 3 numerical, 1 other error), then the bytes
+  // or the text.
   std::vector<char> message(1, 0);
   if (comm->getRank() == 0) {
     try {
@@ -20,6 +21,9 @@ std::vector<char> produce_on_root(const CommPtr& comm,
       message.insert(message.end(), body.begin(), body.end());
     } catch (const InputError& e) {
       message = {2};
+      message.insert(message.end(), e.what(), e.what() + std::string(e.what()).size());
+    } catch (const NumericalError& e) {
+      message = {3};
       message.insert(message.end(), e.what(), e.what() + std::string(e.what()).size());
     } catch (const std::exception& e) {
       message = {1};
@@ -40,6 +44,7 @@ std::vector<char> produce_on_root(const CommPtr& comm,
   const char status = message.front();
   std::vector<char> body(message.begin() + 1, message.end());
   if (status == 2) throw InputError(std::string(body.begin(), body.end()));
+  if (status == 3) throw NumericalError(std::string(body.begin(), body.end()));
   if (status != 0) throw std::runtime_error(std::string(body.begin(), body.end()));
   return body;
 }

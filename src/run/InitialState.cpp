@@ -11,6 +11,7 @@
 #include "mesh/MeshSlice.hpp"
 #include "model/MaterialLaws.hpp"
 #include "parallel/Collective.hpp"
+#include "parallel/FaultInjection.hpp"
 #include "parallel/SliceLookup.hpp"
 #include "run/OutputFields.hpp"
 #include "scene/SchemaValidator.hpp"
@@ -85,11 +86,16 @@ std::optional<RestartRecord> read_initial_state(const CommPtr& comm, const Scene
         std::string("initial_state") + (key ? "." : "") + (key ? key : ""), message));
   };
   ResultsHeader header;
-  try {
-    header = read_results_header(spec.file);
-  } catch (const InputError& e) {
-    fail("file", e.what());
-  }
+  // Every rank reads the header itself: a file one rank cannot read (another node's disk) is
+  // learned by all.
+  run_collectively(comm, [&] {
+    try {
+      fault_point("initial_state");
+      header = read_results_header(spec.file);
+    } catch (const InputError& e) {
+      fail("file", e.what());
+    }
+  });
   if (header.times.empty()) fail("file", "'" + spec.file + "' holds no record");
   // The record: the last one, or the one at the given time (to 1e-9 of the time scale).
   std::size_t record = header.times.size() - 1;

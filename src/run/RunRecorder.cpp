@@ -3,10 +3,12 @@
 #include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_TimeMonitor.hpp>
 
+#include <cerrno>
 #include <filesystem>
 #include <iomanip>
 
 #include "core/Log.hpp"
+#include "io/WritePaths.hpp"
 #include "parallel/Collective.hpp"
 #include "run/OutputFields.hpp"
 
@@ -35,6 +37,7 @@ RunRecorder::RunRecorder(const CommPtr& comm, const Model& model, const ModelOpe
       a_overlap_(model.maps.overlap_dofs) {
   if (!model.scene.output.history.empty() && comm->getRank() == 0) {
     csv_final_ = (std::filesystem::path(path).parent_path() / model.scene.output.history).string();
+    create_fresh_file(csv_final_ + ".part");  // never through a link planted at the name
     csv_ = std::make_unique<std::ofstream>(csv_final_ + ".part");  // renamed on success
     *csv_ << history_.csv_header() << "\n";
   }
@@ -91,13 +94,24 @@ void RunRecorder::write(const RunState& s) {
     *csv_ << std::setprecision(12) << s.time;
     for (double g : globals) *csv_ << "," << g;
     *csv_ << "\n" << std::flush;
+    if (!*csv_)
+      throw std::runtime_error("writing the history '" + csv_final_ + ".part' failed" +
+                               os_reason(errno));
   }
   ++records_;
+}
+
+RunRecorder::~RunRecorder() {
+  if (!csv_) return;
+  csv_->close();
+  std::error_code ec;
+  std::filesystem::remove(csv_final_ + ".part", ec);
 }
 
 void RunRecorder::keep_partial() {
   output_.close_partial();
   if (csv_) csv_->close();
+  csv_.reset();
   // (one file per rank: every rank's piece keeps its ".part")
   const bool pieces = writes_pieces(model_.scene.output.per_rank_files, comm_->getSize());
   Log::info("results up to the failure: " +
@@ -109,6 +123,7 @@ void RunRecorder::close() {
   output_.close();
   if (csv_) {
     csv_->close();
+    csv_.reset();
     std::filesystem::rename(csv_final_ + ".part", csv_final_);
   }
 }

@@ -30,6 +30,11 @@ class RunRecorder {
   void keep_partial();
   /// After success: closes and renames both files (collective).
   void close();
+  /// Neither closed nor kept (bad input or an unexpected error after the output opened): the
+  /// history's .part is removed, as the results writer removes its own (exit 2 writes nothing).
+  ~RunRecorder();
+  RunRecorder(const RunRecorder&) = delete;
+  RunRecorder& operator=(const RunRecorder&) = delete;
 
   int records() const { return records_; }
   const std::vector<double>& last_globals() const { return last_globals_; }

@@ -12,6 +12,9 @@
 #include "core/Errors.hpp"
 #include "core/Threads.hpp"
 #include "core/Version.hpp"
+#include "io/WritePaths.hpp"
+#include "parallel/Collective.hpp"
+#include "parallel/FaultInjection.hpp"
 #include "run/RunSummary.hpp"
 
 namespace efg {
@@ -169,73 +172,80 @@ void write_run_report(const CommPtr& comm, const Model& model, const std::string
   const long long memory = peak_memory_bytes();
   long long memory_max = 0;
   Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, memory, Teuchos::outArg(memory_max));
-  if (comm->getRank() != 0) return;
-  std::ofstream o(json_path);
-  o << "{\n  \"scene\": " << quoted(model.scene.file)
-    << ",\n  \"title\": " << quoted(model.scene.title)
-    << ",\n  \"efg_version\": " << quoted(std::string(version_string) + " (" + git_describe + ")")
-    << ",\n  \"results\": " << quoted(results_path) << ",\n  \"ranks\": " << comm->getSize()
-    << ",\n  \"threads_per_rank\": " << threads_per_rank()
-    << ",\n  \"execution_space\": " << quoted(ExecSpace::name())
-    << ",\n  \"particles\": " << model.mesh.whole_node_count()
-    << ",\n  \"dofs\": " << model.maps.owned_dofs->getGlobalNumElements()
-    << ",\n  \"end_time\": " << number(state.time) << ",\n  \"phase_seconds\": {";
-  for (std::size_t i = 0; i < global.size(); ++i)
-    o << (i ? ", " : "") << quoted(report_phases()[i]) << ": " << number(global[i]);
-  o << "},\n  \"total_seconds\": " << number(total_seconds)
-    << ",\n  \"memory_high_water_bytes\": " << memory_max;
-  if (!memory_phases.empty()) {
-    o << ",\n  \"memory_by_phase\": [";
-    for (std::size_t i = 0; i < memory_phases.size(); ++i)
-      o << (i ? ", " : "") << "{\"phase\": " << quoted(memory_phases[i].phase)
-        << ", \"bytes\": " << memory_phases[i].bytes
-        << ", \"bytes_per_particle\": " << number(memory_phases[i].bytes_per_particle)
-        << ", \"peak_bytes\": " << memory_phases[i].peak_bytes << "}";
-    o << "]";
-  }
-  if (state.energy_started) o << ",\n  \"energy_balance_error\": " << number(state.balance_error());
-  if (errors)
-    o << ",\n  \"errors\": {\"exact_solution\": " << quoted(model.scene.exact_solution)
-      << ", \"l2_rel_error\": " << number(errors->l2_relative)
-      << ", \"energy_rel_error\": " << number(errors->energy_relative)
-      << ", \"max_nodal_error\": " << number(errors->max_nodal)
-      << (errors->pressure_relative >= 0
-              ? ", \"pressure_rel_error\": " + number(errors->pressure_relative)
-              : std::string())
-      << "}";
-  write_implicit_stages(o, implicit);
-  auto write_probes = [&](const ProbeValues& values) {
-    o << "{";
-    for (std::size_t i = 0; i < values.size(); ++i)
-      o << (i ? ", " : "") << quoted(values[i].first) << ": " << number(values[i].second);
-    o << "}";
-  };
-  if (!probes.empty()) {
-    o << ",\n  \"probes\": ";
-    write_probes(probes);
-  }
-  // At each stage's end: a springback is a difference of two stages' values.
-  auto write_by_stage = [&](const char* key,
-                            const std::vector<std::pair<std::string, ProbeValues>>& staged) {
-    if (staged.empty()) return;
-    o << ",\n  \"" << key << "\": {";
-    for (std::size_t k = 0; k < staged.size(); ++k) {
-      o << (k ? ", " : "") << quoted(staged[k].first) << ": ";
-      write_probes(staged[k].second);
-    }
-    o << "}";
-  };
-  write_by_stage("probes_by_stage", probes_by_stage);
-  write_by_stage("angles_by_stage", angles_by_stage);
-  o << ",\n  \"reference_values\": [";
-  for (std::size_t i = 0; i < checks.size(); ++i)
-    o << (i ? ", " : "") << "{\"name\": " << quoted(checks[i].name)
-      << ", \"quantity\": " << quoted(checks[i].quantity)
-      << ", \"value\": " << number(checks[i].value)
-      << ", \"reference\": " << number(checks[i].reference)
-      << ", \"tolerance\": " << number(checks[i].tolerance)
-      << ", \"passed\": " << (checks[i].passed() ? "true" : "false") << "}";
-  o << "]\n}\n";
+  // Rank 0 writes; a failed write (a full disk) is learned by every rank, which would otherwise
+  // wait for rank 0 in the run summary's reductions.
+  run_collectively(comm, [&] {
+    fault_point("report");
+    if (comm->getRank() != 0) return;
+    write_then_rename(json_path, [&](std::ostream& o) {
+      o << "{\n  \"scene\": " << quoted(model.scene.file)
+        << ",\n  \"title\": " << quoted(model.scene.title) << ",\n  \"efg_version\": "
+        << quoted(std::string(version_string) + " (" + git_describe + ")")
+        << ",\n  \"results\": " << quoted(results_path) << ",\n  \"ranks\": " << comm->getSize()
+        << ",\n  \"threads_per_rank\": " << threads_per_rank()
+        << ",\n  \"execution_space\": " << quoted(ExecSpace::name())
+        << ",\n  \"particles\": " << model.mesh.whole_node_count()
+        << ",\n  \"dofs\": " << model.maps.owned_dofs->getGlobalNumElements()
+        << ",\n  \"end_time\": " << number(state.time) << ",\n  \"phase_seconds\": {";
+      for (std::size_t i = 0; i < global.size(); ++i)
+        o << (i ? ", " : "") << quoted(report_phases()[i]) << ": " << number(global[i]);
+      o << "},\n  \"total_seconds\": " << number(total_seconds)
+        << ",\n  \"memory_high_water_bytes\": " << memory_max;
+      if (!memory_phases.empty()) {
+        o << ",\n  \"memory_by_phase\": [";
+        for (std::size_t i = 0; i < memory_phases.size(); ++i)
+          o << (i ? ", " : "") << "{\"phase\": " << quoted(memory_phases[i].phase)
+            << ", \"bytes\": " << memory_phases[i].bytes
+            << ", \"bytes_per_particle\": " << number(memory_phases[i].bytes_per_particle)
+            << ", \"peak_bytes\": " << memory_phases[i].peak_bytes << "}";
+        o << "]";
+      }
+      if (state.energy_started)
+        o << ",\n  \"energy_balance_error\": " << number(state.balance_error());
+      if (errors)
+        o << ",\n  \"errors\": {\"exact_solution\": " << quoted(model.scene.exact_solution)
+          << ", \"l2_rel_error\": " << number(errors->l2_relative)
+          << ", \"energy_rel_error\": " << number(errors->energy_relative)
+          << ", \"max_nodal_error\": " << number(errors->max_nodal)
+          << (errors->pressure_relative >= 0
+                  ? ", \"pressure_rel_error\": " + number(errors->pressure_relative)
+                  : std::string())
+          << "}";
+      write_implicit_stages(o, implicit);
+      auto write_probes = [&](const ProbeValues& values) {
+        o << "{";
+        for (std::size_t i = 0; i < values.size(); ++i)
+          o << (i ? ", " : "") << quoted(values[i].first) << ": " << number(values[i].second);
+        o << "}";
+      };
+      if (!probes.empty()) {
+        o << ",\n  \"probes\": ";
+        write_probes(probes);
+      }
+      // At each stage's end: a springback is a difference of two stages' values.
+      auto write_by_stage = [&](const char* key,
+                                const std::vector<std::pair<std::string, ProbeValues>>& staged) {
+        if (staged.empty()) return;
+        o << ",\n  \"" << key << "\": {";
+        for (std::size_t k = 0; k < staged.size(); ++k) {
+          o << (k ? ", " : "") << quoted(staged[k].first) << ": ";
+          write_probes(staged[k].second);
+        }
+        o << "}";
+      };
+      write_by_stage("probes_by_stage", probes_by_stage);
+      write_by_stage("angles_by_stage", angles_by_stage);
+      o << ",\n  \"reference_values\": [";
+      for (std::size_t i = 0; i < checks.size(); ++i)
+        o << (i ? ", " : "") << "{\"name\": " << quoted(checks[i].name)
+          << ", \"quantity\": " << quoted(checks[i].quantity)
+          << ", \"value\": " << number(checks[i].value)
+          << ", \"reference\": " << number(checks[i].reference)
+          << ", \"tolerance\": " << number(checks[i].tolerance)
+          << ", \"passed\": " << (checks[i].passed() ? "true" : "false") << "}";
+      o << "]\n}\n";
+    });
+  });
 }
 
 }  // namespace efg

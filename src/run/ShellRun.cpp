@@ -15,11 +15,13 @@
 #include "core/Log.hpp"
 #include "discretization/ShapeFunctions.hpp"
 #include "io/ResultsOutput.hpp"
+#include "io/WritePaths.hpp"
 #include "mesh/NodalVolume.hpp"
 #include "mesh/SurfaceChart.hpp"
 #include "model/Curves.hpp"
 #include "model/PointOwner.hpp"
 #include "parallel/Collective.hpp"
+#include "parallel/ExitReport.hpp"
 #include "run/ShellExplicitStage.hpp"
 #include "run/ShellImplicitStage.hpp"
 #include "run/ShellStageInputs.hpp"
@@ -329,7 +331,10 @@ RunOutcome run_shell_stages(const CommPtr& comm, const Model& model, const std::
       results.push_back(r);
     }
   } catch (...) {
-    output.close_partial();
+    // As the solid stages: meet, then a numerical failure keeps the records so far in the .part
+    // file; any other leaves nothing (bad input writes nothing).
+    if (meet_with_current_failure().code == static_cast<int>(ExitCode::numerical))
+      output.close_partial();
     throw;
   }
   output.close();
@@ -343,50 +348,53 @@ RunOutcome run_shell_stages(const CommPtr& comm, const Model& model, const std::
   if (comm->getRank() == 0) {
     if (!scene.output.history.empty()) {
       const auto file = (std::filesystem::path(path).parent_path() / scene.output.history).string();
-      std::ofstream csv(file);
-      csv << "time";
-      for (const auto& n : names) csv << "," << n;
-      csv << "\n" << std::setprecision(17);
-      for (const auto& row : history) {
-        for (std::size_t k = 0; k < row.size(); ++k) csv << (k ? "," : "") << row[k];
-        csv << "\n";
-      }
-    }
-    std::ofstream report(path + ".report.json");
-    report << std::setprecision(17) << "{\n  \"scene\": \"" << scene.file << "\",\n"
-           << "  \"results\": \"" << path
-           << "\",\n  \"formulation\": \"flat Reissner-Mindlin shells\",\n"
-           << "  \"seconds\": "
-           << setup_seconds +
-                  std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count()
-           << ",\n  \"shell_stages\": [";
-    for (std::size_t s = 0; s < results.size(); ++s) {
-      report << (s ? "," : "") << "\n    {\"name\": \"" << results[s].name
-             << "\", \"time\": " << results[s].time << ", \"dofs\": " << results[s].dofs
-             << ", \"seconds\": " << results[s].seconds
-             << ", \"strain_energy\": " << results[s].strain_energy
-             << ", \"largest_deflection\": " << results[s].largest_deflection;
-      if (results[s].newton_iterations >= 0) {
-        report << ", \"steps\": " << results[s].steps
-               << ", \"newton_iterations\": " << results[s].newton_iterations
-               << ", \"cutbacks\": " << results[s].cutbacks << ", \"newton_residuals\": [";
-        for (std::size_t k = 0; k < results[s].residuals.size(); ++k) {
-          report << (k ? ", " : "") << "[";
-          for (std::size_t i = 0; i < results[s].residuals[k].size(); ++i)
-            report << (i ? ", " : "") << results[s].residuals[k][i];
-          report << "]";
+      write_then_rename(file, [&](std::ostream& csv) {
+        csv << "time";
+        for (const auto& n : names) csv << "," << n;
+        csv << "\n" << std::setprecision(17);
+        for (const auto& row : history) {
+          for (std::size_t k = 0; k < row.size(); ++k) csv << (k ? "," : "") << row[k];
+          csv << "\n";
         }
-        report << "]";
-      } else if (results[s].steps > 0) {
-        report << ", \"steps\": " << results[s].steps << ", \"dt\": " << results[s].dt
-               << ", \"energy_balance_error\": " << results[s].energy_error;
-      }
-      report << "}";
+      });
     }
-    report << "\n  ],\n  \"probes\": {";
-    for (std::size_t k = 1; k < names.size(); ++k)
-      report << (k > 1 ? "," : "") << "\n    \"" << names[k] << "\": " << history.back()[k + 1];
-    report << "\n  }\n}\n";
+    write_then_rename(path + ".report.json", [&](std::ostream& report) {
+      report
+          << std::setprecision(17) << "{\n  \"scene\": \"" << scene.file << "\",\n"
+          << "  \"results\": \"" << path
+          << "\",\n  \"formulation\": \"flat Reissner-Mindlin shells\",\n"
+          << "  \"seconds\": "
+          << setup_seconds +
+                 std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count()
+          << ",\n  \"shell_stages\": [";
+      for (std::size_t s = 0; s < results.size(); ++s) {
+        report << (s ? "," : "") << "\n    {\"name\": \"" << results[s].name
+               << "\", \"time\": " << results[s].time << ", \"dofs\": " << results[s].dofs
+               << ", \"seconds\": " << results[s].seconds
+               << ", \"strain_energy\": " << results[s].strain_energy
+               << ", \"largest_deflection\": " << results[s].largest_deflection;
+        if (results[s].newton_iterations >= 0) {
+          report << ", \"steps\": " << results[s].steps
+                 << ", \"newton_iterations\": " << results[s].newton_iterations
+                 << ", \"cutbacks\": " << results[s].cutbacks << ", \"newton_residuals\": [";
+          for (std::size_t k = 0; k < results[s].residuals.size(); ++k) {
+            report << (k ? ", " : "") << "[";
+            for (std::size_t i = 0; i < results[s].residuals[k].size(); ++i)
+              report << (i ? ", " : "") << results[s].residuals[k][i];
+            report << "]";
+          }
+          report << "]";
+        } else if (results[s].steps > 0) {
+          report << ", \"steps\": " << results[s].steps << ", \"dt\": " << results[s].dt
+                 << ", \"energy_balance_error\": " << results[s].energy_error;
+        }
+        report << "}";
+      }
+      report << "\n  ],\n  \"probes\": {";
+      for (std::size_t k = 1; k < names.size(); ++k)
+        report << (k > 1 ? "," : "") << "\n    \"" << names[k] << "\": " << history.back()[k + 1];
+      report << "\n  }\n}\n";
+    });
   }
   Log::info("run report: " + path + ".report.json");
   return outcome;

@@ -20,6 +20,7 @@
 #include "drivers/ImplicitDriver.hpp"
 #include "io/ResultsOutput.hpp"
 #include "parallel/Collective.hpp"
+#include "parallel/ExitReport.hpp"
 #include "run/InitialConditions.hpp"
 #include "run/InitialState.hpp"
 #include "run/OutputFields.hpp"
@@ -126,14 +127,17 @@ RunOutcome run_stages(const CommPtr& comm, const Model& model, const std::string
   apply_initial_state(model, ops->solid(), state);  // a restart: the record replaces them
   auto write = [&](const RunState& s) { recorder.write(s); };
   // A numerical failure on any rank keeps the records so far in the .part files, on all ranks.
+  // Every failure of a stage meets the other ranks before the collective clean-up.
   auto guarded = [&](const std::function<void()>& work) {
     try {
       work();
-    } catch (const NumericalError&) {
-      recorder.keep_partial();
-      throw;
-    } catch (const PeerFailure&) {  // the failing rank holds the message
-      recorder.keep_partial();
+    } catch (...) {
+      // Keeping the records is collective: a failure of this rank alone stops at the meeting
+      // (the others never come) and the watchdog ends the run with its message. A numerical
+      // failure keeps the records so far; any other leaves nothing (the writers remove their
+      // .part files: bad input writes nothing).
+      if (meet_with_current_failure().code == static_cast<int>(ExitCode::numerical))
+        recorder.keep_partial();
       throw;
     }
   };

@@ -4,6 +4,7 @@
 #include <fstream>
 
 #include "core/Errors.hpp"
+#include "io/WritePaths.hpp"
 #include "scene/SchemaValidator.hpp"
 
 namespace efg {
@@ -17,11 +18,12 @@ void read_initial_state_input(Scene& scene) {
   spec.file =
       (given.is_absolute() ? given : fs::path(scene.directory) / given).lexically_normal().string();
   if (r["time"]) spec.time = r["time"].as<double>();
-  std::ifstream probe(spec.file, std::ios::binary);
-  if (!probe)
+  const auto why = unreadable_input_file(spec.file);
+  if (!why.empty())
     throw InputError(schema::located_message(
         scene.file, scene.document["initial_state"]["file"], "initial_state.file",
-        "cannot read '" + spec.file + "' (expected the Exodus results file of an earlier run)"));
+        "cannot read '" + spec.file + "': " + why +
+            " (expected the Exodus results file of an earlier run)"));
   scene.initial_state = spec;
 }
 

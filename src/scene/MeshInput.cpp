@@ -4,6 +4,7 @@
 #include <fstream>
 
 #include "core/Errors.hpp"
+#include "io/WritePaths.hpp"
 #include "scene/FieldInput.hpp"
 #include "scene/SchemaValidator.hpp"
 
@@ -78,11 +79,11 @@ void read_mesh(Scene& s, const YAML::Node& m, const YAML::Node& doc) {
     const fs::path given = m["file"].as<std::string>();
     const fs::path path = given.is_absolute() ? given : fs::path(s.directory) / given;
     s.mesh_file = path.lexically_normal().string();
-    std::ifstream probe(s.mesh_file, std::ios::binary);
-    if (!probe)
+    const auto why = unreadable_input_file(s.mesh_file);
+    if (!why.empty())
       fail(s, doc["file"], "mesh.file",
-           "cannot read mesh file '" + s.mesh_file +
-               "' (expected an existing, readable Exodus II file)");
+           "cannot read mesh file '" + s.mesh_file + "': " + why +
+               " (expected an existing, readable Exodus II file)");
     s.distributed_read = m["read"].as<std::string>() == "distributed";
     if (m["more_blocks"].size() > 0)
       fail(s, doc["more_blocks"], "mesh.more_blocks",
