@@ -8,7 +8,7 @@ and the mixed law (isochoric neo-Hookean + U(J) = kappa/2 (ln J)^2 on the cells)
 
 with lambda_1 from sigma_11 = 0 (bisection here, independent of efg). Checks on 1 or 2 ranks:
 the right side's displacement lambda_1 - 1 and the top reaction sigma_22 lambda_1 (per unit
-thickness) to 1e-10, every cell pressure -kappa ln J / J to 1e-10 (homogeneous: no checkerboard),
+thickness) to 1e-10, the reactions in equilibrium (bottom = -top, left = 0) to 1e-10, every cell pressure -kappa ln J / J to 1e-10 (homogeneous: no checkerboard),
 and Newton converging quadratically in every load step (best measured order >= 1.8).
 With SOLVER = iterative: the same checks on the saddle-point path of the bulk stiffness
 (operators/BulkSplit.hpp, finite strain: B's rows F_c^-T b_c at the Newton state), whose inner
@@ -79,6 +79,12 @@ u = float(last["u_xmax_x"])
 check(abs(u - (l1 - 1)) <= 1e-10 * (l1 - 1), f"right side u_x {u:.12g} vs lambda_1 - 1 = {l1 - 1:.12g}")
 r = float(last["R_top_y"])
 check(abs(r - force) <= 1e-10 * abs(force), f"top reaction {r:.12g} vs sigma_22 lambda_1 = {force:.12g}")
+# Equilibrium (no loads but the conditions): the bottom rollers carry the top's force back, the
+# left rollers nothing (the right side is free); the same 1e-10 as the Newton state's (measured
+# 0 and 1.5e-11 of the force).
+bottom, left = float(last["R_bottom_y"]), float(last["R_left_x"])
+check(abs(bottom + r) <= 1e-10 * abs(force) and abs(left) <= 1e-10 * abs(force),
+      f"reactions in equilibrium: bottom + top {bottom + r:.3g}, left {left:.3g}")
 d = netCDF4.Dataset(os.path.join(out, "block_compressed.e"))
 names = ["".join(c.decode() for c in n if c) for n in d["name_elem_var"][:]]
 p = np.asarray(d["vals_elem_var%deb1" % (names.index("cell_pressure") + 1)][-1])

@@ -64,7 +64,8 @@ set_tests_properties(cli.j2_tension_finite_perturbed_closed_form PROPERTIES LABE
 efg_cli_test(NAME cli.j2_tension_finite_np2 COMMAND "${EFG_MPIRUN2}|${efg}|run|tests/scenes/plasticity/j2_tension_finite.yaml|-o|${EFG_CLI_TMP}/j2_tension_finite_np2"
   EXIT 0 TEXT "stage 'stretch' done: 8 steps, 0 cutbacks" RANKS 2)
 set_tests_properties(cli.j2_tension_finite_np2 PROPERTIES TIMEOUT 120)
-# Erosion: the plastic zone of the wall impact fails at 5 % plastic strain (check_erosion.py).
+# Erosion: the plastic zone of the wall impact fails at 5 % plastic strain (check_erosion.py;
+# every step recorded: each particle erodes in the step that takes it past the failure strain).
 # The stable step is re-estimated as the plastic tangent and the erosion change it (7 times; the
 # step grows from 2.8e-4 to 6.1e-4 after the bounce), unlike a linear elastic stage's.
 efg_cli_test(NAME cli.j2_erosion COMMAND "${efg}|run|tests/scenes/plasticity/plastic_wave_erosion.yaml|-o|${EFG_CLI_TMP}/erosion"

@@ -7,7 +7,7 @@ the closed form of elastic-perfectly plastic pure bending in plane strain
 with kappa the curvature the strip was formed to (measured). The curvature of the middle line
 (particles at Y = 0 within the middle half of the length) is a least-squares circle through its
 deformed points (Kasa fit), after forming (time T) and after release (the last record).
-Checks: on the finest of three levels the drop within 3 % of the closed form, the error falling
+Checks: on the finest of three levels the drop within 0.5 % of the closed form, the error falling
 from the coarsest to the finest level; the formed curvature within 1 % of the prescribed one;
 the released strip in equilibrium (the springback stage converged: exit 0).
 usage: run_strip_springback.py EFG OUTDIR [--levels N] [--ranks R]   (exit 1 when a check fails)
@@ -109,7 +109,10 @@ for i, (nx, ny, kfm, ksp, drop, exp, err) in enumerate(rows):
 # was formed in the range the closed form is tested for, 5 to 20 kappa_y.
 check(5 < rows[-1][2] / ky < 20, f"formed curvature of the middle half {rows[-1][2] / ky:.2f} "
       f"kappa_y (prescribed {kf / ky:.0f})")
-check(abs(rows[-1][6]) < 0.03, f"curvature drop within 3 % of M/(E' I) on the finest level "
+# 0.5 %: measured -0.18 % on the finest level and -0.12 % on the middle one (the levels agree to
+# 0.06 %, the discretization settled well below the bound); a yield stress 1 % off (the drop
+# scales with M, so with sigma_y) fails it, which the earlier 3 % let through.
+check(abs(rows[-1][6]) < 0.005, f"curvature drop within 0.5 % of M/(E' I) on the finest level "
       f"({100 * rows[-1][6]:+.2f} %)")
 if len(rows) > 1:
     check(abs(rows[-1][6]) < abs(rows[0][6]), f"the error falls from the coarsest to the finest "
