@@ -50,6 +50,9 @@ endfunction()
 # Exodus II (Debian's libexodusii-dev ships no CMake config).
 efg_debian_library(efg_exodus exodusII.h "exodusii" "exoIIv2;exodus;exoIIv2c" "Exodus II"
                    libexodusii-dev)
+# netCDF (Debian's libnetcdf-dev), Exodus II's container: the record checksums are a netCDF
+# variable of their own (io/RecordChecksum).
+efg_debian_library(efg_netcdf netcdf.h "" "netcdf" netCDF libnetcdf-dev)
 # UMFPACK (Debian's libsuitesparse-dev): the default sparse direct solver (solvers/SparseLU).
 efg_debian_library(efg_umfpack suitesparse/umfpack.h "" "umfpack" UMFPACK libsuitesparse-dev)
 # MUMPS (Debian's libmumps-dev): the distributed sparse direct solver (solvers/DistributedLU).

@@ -12,6 +12,7 @@
 #include "core/Log.hpp"
 #include "core/Progress.hpp"
 #include "parallel/Collective.hpp"
+#include "parallel/ExitReport.hpp"
 #include "parallel/LargestParticle.hpp"
 #include "parallel/NonFinite.hpp"
 #include "parallel/ReproducibleSum.hpp"
@@ -296,6 +297,7 @@ void ExplicitDriver::advance(RunState& state, double step_dt, long long step,
   } catch (const std::exception& e) {
     const bool here = dynamic_cast<const NumericalError*>(&e) != nullptr;
     const std::string what = e.what();
+    meet_with_current_failure();  // agreed above; the meeting makes it so whatever threw
     restore_previous(state);
     output(state);
     if (!here) throw;
@@ -386,7 +388,16 @@ ExplicitSummary ExplicitDriver::run(RunState& state, const StateOutput& output, 
   while (state.time < end - 1e-12 * span) {
     if (reestimate && summary.steps >= next_estimate) {
       const double previous = dt_crit;
-      dt_crit = stable_.estimate(state.d);
+      try {
+        dt_crit = stable_.estimate(state.d);
+      } catch (const NumericalError& e) {
+        meet_with_current_failure();  // before the collective write (a rank-local failure ends)
+        output(state);
+        std::ostringstream why;
+        why << "stage '" << stage_.name << "' at step " << summary.steps << ", t = " << state.time
+            << ": " << e.what() << "; the last state is in the results";
+        throw NumericalError(why.str());
+      }
       ++summary.dt_estimates;
       dt = scale * dt_crit;
       wall_dt_ = dt;

@@ -10,6 +10,8 @@
 
 #include <iostream>
 #include <sstream>
+#include <string>
+#include <typeinfo>
 #include <vector>
 
 #include "core/Errors.hpp"
@@ -83,6 +85,20 @@ std::string unknown_key(const std::string& key, const std::vector<std::string>& 
   return message;
 }
 
+// A text value where a number is read (Maximum Iterations: abc): Teuchos' get<int> throws a
+// bare type message ('An attempt was made to access parameter "NAME" of type "string" ...')
+// naming no scene key. The key is taken from it and reported at its line.
+void refuse_text_for_number(const List& user, const std::string& what, const Locator& at) {
+  const std::string mark = "parameter \"";
+  const auto begin = what.find(mark);
+  if (begin == std::string::npos) return;
+  const auto end = what.find('"', begin + mark.size());
+  const auto key = what.substr(begin + mark.size(), end - begin - mark.size());
+  if (user.isParameter(key) && user.getEntry(key).getAny().type() == typeid(std::string))
+    at.fail("linear_solver", {key},
+            "expected a number, found '" + user.get<std::string>(key) + "'");
+}
+
 void check_linear(const List& user, const LinearSolverPlan& plan, const Locator& at) {
   Stratimikos::DefaultLinearSolverBuilder builder;
   try {
@@ -103,6 +119,18 @@ void check_linear(const List& user, const LinearSolverPlan& plan, const Locator&
     const auto& key = user.name(it);
     if (key != "Solver Type" && !valid.isParameter(key))
       at.fail("linear_solver", {key}, unknown_key(key, known, "Belos '" + method + "'"));
+    if (key == "Solver Type" || valid.isSublist(key) || user.isSublist(key)) continue;
+    // Text where Belos reads a number or a flag: its get<int> would throw a bare Teuchos type
+    // message at solve time (Maximum Iterations: abc).
+    const auto& expected = valid.getEntry(key).getAny().type();
+    const char* kind = expected == typeid(int)      ? "an integer"
+                       : expected == typeid(double) ? "a number"
+                       : expected == typeid(bool)   ? "true or false"
+                                                    : nullptr;
+    if (kind && user.getEntry(key).getAny().type() == typeid(std::string))
+      at.fail("linear_solver", {key},
+              "expected " + std::string(kind) + " for Belos '" + method + "', found '" +
+                  user.get<std::string>(key) + "'");
   }
 }
 
@@ -257,10 +285,15 @@ void check_solver_settings(const YAML::Node& stage, const YAML::Node& written,
     return parameter_list_from_yaml(stage[key], key, file, path + "." + key);
   };
   const auto linear = list("linear_solver"), nonlinear = list("nonlinear_solver");
-  const auto plan =
-      plan_linear_solver(stage["solver"] ? stage["solver"].as<std::string>() : "auto",
-                         stage["direct_limit"] ? stage["direct_limit"].as<std::int64_t>() : 0,
-                         linear, list("preconditioner"), dofs, dimension, 1, poissons_ratio);
+  LinearSolverPlan plan;
+  try {
+    plan = plan_linear_solver(stage["solver"] ? stage["solver"].as<std::string>() : "auto",
+                              stage["direct_limit"] ? stage["direct_limit"].as<std::int64_t>() : 0,
+                              linear, list("preconditioner"), dofs, dimension, 1, poissons_ratio);
+  } catch (const Teuchos::Exceptions::InvalidParameterType& e) {
+    refuse_text_for_number(linear, e.what(), at);  // the plan reads the Krylov limits as numbers
+    throw;
+  }
   check_linear(linear, plan, at);
   check_nonlinear(nonlinear, at);
   check_preconditioner(plan, dimension, at);

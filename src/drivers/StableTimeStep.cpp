@@ -161,6 +161,11 @@ double StableTimeStep::estimate(const Vector& d_owned) {
   // d), which the bound must cover (measured against a dense solve: 2e-8).
   const double bound = (std::abs(ritz_) + residual_) * (1.0 + 1e-6);
   omega_ = std::sqrt(bound);
+  if (bound == 0)  // every point eroded (or a model of no stiffness): no step is bounded
+    throw NumericalError(
+        "the model has no stiffness left (the largest eigenvalue of M^-1 K is 0): every "
+        "integration point has eroded, or no part carries a material stiffness; nothing is left "
+        "to integrate");
   if (!(omega_ > 0) || !std::isfinite(omega_))
     throw NumericalError(
         "the stable time step could not be estimated: the largest eigenvalue of "

@@ -95,6 +95,15 @@ int thickness_attribute(const File& f, std::int64_t id, std::int64_t attributes)
 
 }  // namespace
 
+std::int64_t block_cell_count(const File& f, std::int64_t id) {
+  char type_name[MAX_STR_LENGTH + 1] = {};
+  std::int64_t count = 0, per_cell = 0, edges = 0, faces = 0, attributes = 0;
+  f.check(ex_get_block(f.id(), EX_ELEM_BLOCK, id, type_name, &count, &per_cell, &edges, &faces,
+                       &attributes),
+          "reading an element block");
+  return count;
+}
+
 BlockHeader read_block_header(const File& f, const std::string& path, std::int64_t id,
                               const std::string& name) {
   char type_name[MAX_STR_LENGTH + 1] = {};

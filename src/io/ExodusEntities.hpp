@@ -32,6 +32,9 @@ std::vector<std::int64_t> read_ids(const File& f, ex_entity_type type, std::int6
 /// The names of the file's variables of `type` (EX_NODAL, EX_ELEM_BLOCK, EX_GLOBAL), in order.
 std::vector<std::string> read_variable_names(const File& f, ex_entity_type type);
 
+/// The number of cells of element block `id`.
+std::int64_t block_cell_count(const File& f, std::int64_t id);
+
 /// Entity names; unnamed entities get `prefix` followed by their id ("block_7").
 std::vector<std::string> read_names(const File& f, ex_entity_type type, std::size_t count,
                                     const std::vector<std::int64_t>& ids, const char* prefix);

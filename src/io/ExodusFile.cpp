@@ -11,17 +11,17 @@
 
 namespace efg::exodus {
 
-File File::open_read(const std::string& path) {
+File File::open_read(const std::string& path, const std::string& kind) {
   ex_opts(0);  // errors are reported by efg, not printed by the library
   const auto problem = classic_header_problem(path);
   if (!problem.empty())
-    throw InputError("mesh file '" + path + "': not a valid Exodus II (netCDF) file: " + problem);
+    throw InputError(kind + " '" + path + "': not a valid Exodus II (netCDF) file: " + problem);
   int cpu_ws = sizeof(double), io_ws = 0;
   float version = 0;
   const int id = ex_open(path.c_str(), EX_READ, &cpu_ws, &io_ws, &version);
-  if (id < 0) throw InputError("mesh file '" + path + "': cannot be opened as Exodus II");
+  if (id < 0) throw InputError(kind + " '" + path + "': cannot be opened as Exodus II");
   ex_set_int64_status(id, EX_ALL_INT64_API);
-  return File(id, path, false);
+  return File(id, path, false, kind);
 }
 
 File File::create(const std::string& path) {
@@ -41,7 +41,10 @@ File File::create(const std::string& path) {
 }
 
 File::File(File&& other) noexcept
-    : id_(other.id_), path_(std::move(other.path_)), writing_(other.writing_) {
+    : id_(other.id_),
+      path_(std::move(other.path_)),
+      kind_(std::move(other.kind_)),
+      writing_(other.writing_) {
   other.id_ = -1;
 }
 
@@ -63,7 +66,7 @@ void File::check(int status, const char* what) const {
   // The library's status says only that the call failed; the OS's reason (no space left on the
   // device, a quota) is what the user can act on.
   if (writing_) throw std::runtime_error(message + os_reason(errno));
-  throw InputError("mesh file '" + path_ + "': " + what + " failed (corrupt or truncated file?)");
+  throw InputError(kind_ + " '" + path_ + "': " + what + " failed (corrupt or truncated file?)");
 }
 
 }  // namespace efg::exodus

@@ -8,7 +8,8 @@ namespace efg::exodus {
 /// Owns an Exodus file id; closes it on destruction.
 class File {
  public:
-  static File open_read(const std::string& path);
+  /// `kind` names the file in messages: "mesh file", or "results file" for a restart record.
+  static File open_read(const std::string& path, const std::string& kind = "mesh file");
   static File create(const std::string& path);
   File(File&& other) noexcept;
   File& operator=(File&&) = delete;
@@ -22,10 +23,10 @@ class File {
   void close();
 
  private:
-  File(int id, std::string path, bool writing)
-      : id_(id), path_(std::move(path)), writing_(writing) {}
+  File(int id, std::string path, bool writing, std::string kind = "mesh file")
+      : id_(id), path_(std::move(path)), kind_(std::move(kind)), writing_(writing) {}
   int id_ = -1;
-  std::string path_;
+  std::string path_, kind_;
   bool writing_ = false;
 };
 

@@ -103,13 +103,7 @@ ExodusResults read_exodus_results(const std::string& path) {
   const auto nblocks = ex_inquire_int(f.id(), EX_INQ_ELEM_BLK);
   const auto block_ids = exodus::read_ids(f, EX_ELEM_BLOCK, nblocks);
   std::vector<std::int64_t> block_sizes;
-  for (auto id : block_ids) {
-    char type_name[MAX_STR_LENGTH + 1] = {};
-    std::int64_t count = 0, per = 0, e = 0, fa = 0, at = 0;
-    f.check(ex_get_block(f.id(), EX_ELEM_BLOCK, id, type_name, &count, &per, &e, &fa, &at),
-            "reading an element block");
-    block_sizes.push_back(count);
-  }
+  for (auto id : block_ids) block_sizes.push_back(exodus::block_cell_count(f, id));
   const auto nodal_names = read_variable_names(f, EX_NODAL);
   const auto element_names = read_variable_names(f, EX_ELEM_BLOCK);
   const auto global_names = read_variable_names(f, EX_GLOBAL);

@@ -32,4 +32,8 @@ NodalRecordSlice read_nodal_record(const std::string& path, const ResultsHeader&
                                    std::size_t record, const std::vector<std::string>& names,
                                    std::int64_t first, std::int64_t count);
 
+/// "" when record `record` (0-based) matches the checksum efg stored with it, or when the file
+/// has none (io/RecordChecksum); otherwise what is wrong. Reads the whole record.
+std::string record_checksum_problem(const std::string& path, std::size_t record);
+
 }  // namespace efg

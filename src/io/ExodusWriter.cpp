@@ -10,6 +10,7 @@
 #include <string>
 
 #include "core/Errors.hpp"
+#include "io/RecordChecksum.hpp"
 #include "io/WritePaths.hpp"
 
 namespace efg {
@@ -65,6 +66,7 @@ ExodusWriter::ExodusWriter(const std::string& path, const BackgroundMesh& mesh,
   write_variable_names(EX_NODAL, layout.nodal);
   write_variable_names(EX_ELEM_BLOCK, layout.element);
   write_variable_names(EX_GLOBAL, layout.global);
+  checksum_variable_ = exodus::define_record_checksum(*file_);
   file_->check(ex_update(file_->id()), "flushing the mesh");
 }
 
@@ -185,6 +187,9 @@ void ExodusWriter::write_record(double time, const std::vector<std::vector<doubl
     throw std::logic_error("output record does not match the output layout");
   const int id = file_->id();
   const int step = records_ + 1;
+  // The record's checksum, over its values in the order they are written (io/RecordChecksum).
+  RecordHash hash;
+  hash.add(&time, 1);
   file_->check(ex_put_time(id, step, &time), "writing a time value");
   for (std::size_t v = 0; v < nodal.size(); ++v) {
     if (nodal[v].size() != nodes_) throw std::logic_error("nodal field of wrong length");
@@ -192,6 +197,7 @@ void ExodusWriter::write_record(double time, const std::vector<std::vector<doubl
     file_->check(ex_put_var(id, step, EX_NODAL, static_cast<int>(v + 1), 1,
                             static_cast<std::int64_t>(nodes_), nodal[v].data()),
                  "writing a nodal variable");
+    hash.add(nodal[v].data(), nodes_);
   }
   for (std::size_t v = 0; v < element.size(); ++v) {
     require_finite(element[v], layout_.element[v], time, "cell", piece_.cells);
@@ -201,6 +207,7 @@ void ExodusWriter::write_record(double time, const std::vector<std::vector<doubl
       file_->check(ex_put_var(id, step, EX_ELEM_BLOCK, static_cast<int>(v + 1), block_id,
                               static_cast<std::int64_t>(count), element[v].data() + offset),
                    "writing an element variable");
+      hash.add(element[v].data() + offset, count);
       offset += count;
     }
   }
@@ -210,7 +217,9 @@ void ExodusWriter::write_record(double time, const std::vector<std::vector<doubl
     file_->check(ex_put_var(id, step, EX_GLOBAL, 1, 0, static_cast<std::int64_t>(global.size()),
                             global.data()),
                  "writing global variables");
+    hash.add(global.data(), global.size());
   }
+  exodus::put_record_checksum(*file_, checksum_variable_, step, hash.value());
   file_->check(ex_update(id), "flushing a record");
   ++records_;
 }

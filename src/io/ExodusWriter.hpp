@@ -66,7 +66,8 @@ class ExodusWriter {
   std::vector<std::pair<std::int64_t, std::size_t>> blocks_;  // id, cell count
   std::size_t nodes_ = 0;
   int records_ = 0;
-  ExodusPieceIds piece_;  // empty maps for a whole mesh
+  int checksum_variable_ = -1;  ///< the netCDF id of the record checksums (io/RecordChecksum)
+  ExodusPieceIds piece_;        // empty maps for a whole mesh
 };
 
 }  // namespace efg

@@ -1,8 +1,9 @@
 #include "io/NetcdfHeaderCheck.hpp"
 
+#include <algorithm>
 #include <cstdint>
+#include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <stdexcept>
 #include <vector>
 
@@ -17,22 +18,49 @@ class HeaderWalk {
       : b_(std::move(bytes)), size_(file_size), version_(version) {}
 
   void walk() {
-    count();          // numrecs
-    list(0x0A, [&] {  // dimensions: name, length
+    numrecs_ = count();
+    list(0x0A, [&] {  // dimensions: name, length (0: the record dimension)
       name();
-      count();
+      dimension_lengths_.push_back(count());
     });
     attributes();
     list(0x0B, [&] {  // variables: name, dimension ids, attributes, type, size, begin
       name();
-      skip(count(), wide());
+      const auto rank = count();
+      std::uint64_t first_dimension = 0;
+      if (rank > 0) {
+        first_dimension = wide() == 8 ? u64() : u32();
+        skip(rank - 1, wide());
+      }
       attributes();
       type_size(u32());
-      count();
+      const auto vsize = count();
       const std::uint64_t begin = version_ == 1 ? u32() : u64();
-      if (begin > size_) fail("a variable starts beyond the end of the file");
+      const bool record = rank > 0 && first_dimension < dimension_lengths_.size() &&
+                          dimension_lengths_[first_dimension] == 0;
+      // (The records of a file with none may start past its end: the library aligns them.)
+      if (begin > size_ && !(record && numrecs_ == 0))
+        fail("a variable starts beyond the end of the file");
+      if (record) {
+        record_size_ += vsize;
+        record_ends_.push_back(begin + vsize);
+      } else {
+        data_end_ = std::max(data_end_, begin + vsize);
+      }
     });
   }
+
+  /// The bytes the header says the data take: every fixed variable's end and, for the record
+  /// variables, numrecs records of record_size bytes each. A file cut short (a copy interrupted,
+  /// a run killed while it wrote its last record) is shorter: the library would read zeros.
+  std::uint64_t data_extent() const {
+    std::uint64_t end = data_end_;
+    const bool streaming = numrecs_ == (wide() == 8 ? ~std::uint64_t{0} : 0xFFFFFFFFu);
+    if (numrecs_ > 0 && !streaming)
+      for (auto e : record_ends_) end = std::max(end, e + (numrecs_ - 1) * record_size_);
+    return end;
+  }
+  std::uint64_t records() const { return numrecs_; }
 
  private:
   [[noreturn]] static void fail(const std::string& why) { throw std::out_of_range(why); }
@@ -101,22 +129,35 @@ class HeaderWalk {
   std::vector<unsigned char> b_;
   std::uint64_t size_, at_ = 4;
   int version_;
+  std::uint64_t numrecs_ = 0, record_size_ = 0, data_end_ = 0;
+  std::vector<std::uint64_t> dimension_lengths_, record_ends_;
 };
 
 }  // namespace
 
 std::string classic_header_problem(const std::string& path) {
+  std::error_code ec;
+  const auto size = static_cast<std::uint64_t>(std::filesystem::file_size(path, ec));
+  if (ec) return "";  // the library reports unreadable files
   std::ifstream in(path, std::ios::binary);
-  if (!in) return "";  // the library reports unreadable files
-  std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)),
-                                   std::istreambuf_iterator<char>());
+  if (!in) return "";
+  // The header only: it precedes the data, and a file's header is kilobytes (the data may be
+  // gigabytes). A header longer than this is reported as truncated.
+  constexpr std::uint64_t kHeaderLimit = std::uint64_t{64} << 20;
+  std::vector<unsigned char> bytes(static_cast<std::size_t>(std::min(size, kHeaderLimit)));
+  in.read(reinterpret_cast<char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+  bytes.resize(static_cast<std::size_t>(in.gcount()));
   if (bytes.size() < 4 || bytes[0] != 'C' || bytes[1] != 'D' || bytes[2] != 'F') return "";
   const int version = bytes[3];
   if (version != 1 && version != 2 && version != 5)
     return "an unknown classic netCDF version " + std::to_string(version);
-  const auto size = static_cast<std::uint64_t>(bytes.size());
   try {
-    HeaderWalk(std::move(bytes), size, version).walk();
+    HeaderWalk walk(std::move(bytes), size, version);
+    walk.walk();
+    if (walk.data_extent() > size)
+      return "the file is truncated: its header describes " + std::to_string(walk.records()) +
+             " record(s) and " + std::to_string(walk.data_extent()) + " bytes, the file has " +
+             std::to_string(size) + " (a copy cut short, or a run stopped while it wrote)";
   } catch (const std::out_of_range& e) {
     return e.what();
   }

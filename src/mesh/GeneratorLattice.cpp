@@ -69,11 +69,16 @@ Lattice checked_lattice(const GeneratorSpec& s) {
     if (s.cells[du] < 1) throw InputError("mesh generator: cells must be >= 1 in every direction");
     if (!(s.upper[du] > s.lower[du]))
       throw InputError("mesh generator: upper must exceed lower in every direction");
-    lat.n[du] = s.cells[du] + 1;
   }
   // A mesh this generator cannot hold is bad input, not a bad_alloc: efg indexes particles with
-  // 32-bit ints, and each particle of an EFG model needs a few kilobytes.
-  const double count = static_cast<double>(lat.n[0]) * lat.n[1] * lat.n[2];
+  // 32-bit ints, and each particle of an EFG model needs a few kilobytes. Counted in double
+  // before any int holds cells + 1 (2147483647 cells overflowed to a negative count).
+  double count = 1;
+  for (int d = 0; d < dim; ++d)
+    count *= static_cast<double>(s.cells[static_cast<std::size_t>(d)]) + 1;
+  if (count <= kMaxGeneratedNodes)
+    for (int d = 0; d < dim; ++d)
+      lat.n[static_cast<std::size_t>(d)] = s.cells[static_cast<std::size_t>(d)] + 1;
   if (count > kMaxGeneratedNodes) {
     std::ostringstream o;
     o << "mesh generator: " << describe(s) << " has " << count << " nodes; at most "

@@ -103,6 +103,25 @@ void validate_mesh(const BackgroundMesh& mesh, const std::vector<std::string>& t
     }
     first += block.cell_count();
   }
+  // A node in no cell is a particle with no volume and no support of its own: the implicit
+  // stiffness is singular at it, reported by the factorization without the node (issue 55). A
+  // rank's part of a mesh read in slices holds halo nodes of other ranks' cells: checked whole.
+  if (!mesh.is_part()) {
+    std::vector<char> used(nodes, 0);
+    for (const auto& block : mesh.blocks)
+      for (auto node : block.connectivity) used[static_cast<std::size_t>(node)] = 1;
+    const auto orphans = static_cast<std::size_t>(std::count(used.begin(), used.end(), 0));
+    if (orphans > 0) {
+      const auto n =
+          static_cast<std::size_t>(std::find(used.begin(), used.end(), 0) - used.begin());
+      const auto dim = static_cast<std::size_t>(mesh.dimension);
+      std::ostringstream o;
+      o << "has " << orphans << " node(s) in no cell (the first: node " << n + 1 << " at (";
+      for (std::size_t d = 0; d < dim; ++d) o << (d ? ", " : "") << mesh.coordinates[n * dim + d];
+      o << ")); expected every node in a cell of some block (remove the unused nodes)";
+      fail(mesh, o.str());
+    }
+  }
 
   for (const auto& set : mesh.node_sets)
     for (auto node : set.nodes)

@@ -150,6 +150,18 @@ std::optional<RestartRecord> read_initial_state(const CommPtr& comm, const Scene
   std::vector<std::string> read = needed;
   for (const auto& name : velocity)  // optional: an implicit run has none to give
     if (written(name)) read.push_back(name);
+  // The record's bytes as the run wrote them (a flipped bit is still a plausible number): rank 0
+  // reads it whole once against its checksum; every rank learns the verdict.
+  run_collectively(comm, [&] {
+    if (comm->getRank() != 0) return;
+    std::string problem;
+    try {
+      problem = record_checksum_problem(spec.file, record);
+    } catch (const InputError& e) {
+      problem = e.what();
+    }
+    if (!problem.empty()) fail("file", "'" + spec.file + "': " + problem);
+  });
   NodalRecordSlice values;
   try {
     values = record_at_mesh_nodes(comm, spec.file, header, record, read, mesh);

@@ -2,9 +2,11 @@
 
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 #include "core/Errors.hpp"
 #include "io/WritePaths.hpp"
+#include "mesh/MeshGenerator.hpp"
 #include "scene/FieldInput.hpp"
 #include "scene/SchemaValidator.hpp"
 
@@ -110,6 +112,22 @@ void read_mesh(Scene& s, const YAML::Node& m, const YAML::Node& doc) {
            "block name '" + spec.block_name +
                "' is taken by an earlier generated block (expected a name of its own)");
     s.more_blocks.push_back(std::move(spec));
+  }
+  // The node limit holds for the whole mesh, not each block alone (2.4e8 nodes in two blocks of
+  // 1.2e8 were accepted).
+  auto nodes = [](const GeneratorSpec& g) {
+    double n = 1;
+    for (int d = 0; d < g.dimension; ++d)
+      n *= static_cast<double>(g.cells[static_cast<std::size_t>(d)]) + 1;
+    return n;
+  };
+  double total = nodes(*s.generator);
+  for (const auto& b : s.more_blocks) total += nodes(b);
+  if (!s.more_blocks.empty() && total > kMaxGeneratedNodes) {
+    std::ostringstream o;
+    o << "the generated blocks have " << total << " nodes together; at most " << kMaxGeneratedNodes
+      << " are supported (expected fewer cells)";
+    fail(s, doc["more_blocks"], "mesh.more_blocks", o.str());
   }
 }
 

@@ -14,6 +14,7 @@
 #include "scene/MeshInput.hpp"
 #include "scene/PartFormulationCheck.hpp"
 #include "scene/PlasticityInput.hpp"
+#include "scene/RigidWallStages.hpp"
 #include "scene/SceneAngles.hpp"
 #include "scene/SceneNodeSets.hpp"
 #include "scene/SceneSchema.hpp"
@@ -105,6 +106,7 @@ class SceneBuilder {
       s_.rigid_walls.push_back({w["name"].as<std::string>(), as_vector<double>(w["point"]),
                                 as_vector<double>(w["normal"]), opt_string(w, "node_set"),
                                 w["penalty"].as<double>()});
+    for (const auto& warning : check_rigid_wall_stages(s_)) Log::warning(warning);
     if (r["verification"]) {
       s_.verification = r["verification"];
       if (r["verification"]["exact_solution"])

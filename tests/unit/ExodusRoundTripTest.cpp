@@ -121,13 +121,24 @@ TEST(ExodusWriter, UnclosedWriterLeavesEarlierResultUntouched) {
   {
     ExodusWriter writer(path, mesh, OutputLayout{{"u"}, {}, {}}, "crash");
     writer.write_record(0.0, {std::vector<double>(mesh.node_count(), 1.0)}, {}, {});
-    // destroyed without close(): as if the run had died here
+    // destroyed without close(): a run stopped by an error other than a numerical one (bad
+    // input found at run time) writes nothing (issue 55)
   }
   std::ifstream in(path);
   std::string text;
   std::getline(in, text);
   EXPECT_EQ(text, "earlier result");
-  // The partial file is a readable Exodus file holding the record written before the "crash".
+  EXPECT_FALSE(std::filesystem::exists(path + ".part"));
+  {
+    ExodusWriter writer(path, mesh, OutputLayout{{"u"}, {}, {}}, "crash");
+    writer.write_record(0.0, {std::vector<double>(mesh.node_count(), 1.0)}, {}, {});
+    writer.close(/*keep_partial=*/true);  // a numerical failure keeps the records so far
+  }
+  std::ifstream again(path);
+  std::getline(again, text);
+  EXPECT_EQ(text, "earlier result");
+  // The partial file is a readable Exodus file holding the record written before the failure
+  // (a killed process leaves it the same way: each record is flushed).
   EXPECT_EQ(read_exodus_results(path + ".part").times.size(), 1u);
 }
 
