@@ -88,10 +88,15 @@ set(mixed_fields displacement_x displacement_y pressure)
 # an odd count, so that patches chosen on each part alone differ from the whole mesh's) and the 3D
 # cantilever block twice as long at nu = 0.45 (73 %). Measured: 0 apart on 2 ranks (on 3: 0 and
 # 1.7e-9 of displacement_y, where two whole-mesh runs on 3 ranks differ by 1.1e-9).
+# The block at nu = 0.4999 is factored by UMFPACK gathered on rank 0, which is deterministic:
+# MUMPS on 2 ranks schedules its factorization dynamically, and two runs of the same binary on
+# this stiff saddle point (lambda / mu = 5,000) came 1.98e-10 apart in R_left_x (issue 55, item
+# 9): the comparison is of the sliced read's model, not of MUMPS' reproducibility.
 efg_distributed_twin(NAME twin_mixed_patches SCENE tests/scenes/mixed/block_compressed.yaml
   HISTORY block_compressed.csv FIELDS ${mixed_fields}
   REPLACE "upper: [1, 1], cells: [8, 8]" "upper: [4, 1], cells: [33, 8]"
-          "    formulation: mixed_up" "    formulation: mixed_up\n    pressure_cells: patch")
+          "    formulation: mixed_up" "    formulation: mixed_up\n    pressure_cells: patch"
+          "residual_tolerance: 1e-12}" "residual_tolerance: 1e-12,\n     preconditioner: {Type: direct, solver: UMFPACK}}")
 efg_distributed_twin(NAME twin_mixed_patches_3d SCENE regression/cantilever_block_3d/scene.yaml
   HISTORY history.csv FIELDS displacement_x displacement_y displacement_z
   REPLACE "upper: [10.0, 2.0, 2.0]\n    cells: [20, 4, 4]" "upper: [20.0, 2.0, 2.0]\n    cells: [40, 4, 4]"

@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """A scripted mutation fuzzer for efg's input readers (issue 14): scene files (YAML syntax, schema,
-cross-references, solver maps) and Exodus meshes. Each case mutates a seed file, runs
+cross-references, solver maps) and Exodus meshes; and (issue 55) loads singular at a time the run
+reaches on 1-3 ranks, damaged restart files, links planted in the output folder. Each case mutates a seed file, runs
 `efg check` on it (and `efg run` on some that pass, on a tiny model; every mutated mesh is also
 run read in slices, mesh.read: distributed, on 1 or 2 ranks), and requires a clean outcome:
 exit 0, 2 (bad input), 3 (numerical failure: check builds the model and plans explicit steps too)
@@ -114,10 +115,69 @@ def verdict(code, log, allowed):
     return None
 
 
-def one_case(args, index, scene_seeds, mesh_bytes):
+def mpi_launch(rng, ranks_max=3):
+    ranks = rng.randint(1, ranks_max)
+    if ranks == 1 or not shutil.which("mpirun"):
+        return [], 1
+    launch = ["mpirun", "-np", str(ranks), "--oversubscribe"]
+    if os.geteuid() == 0:
+        launch.append("--allow-run-as-root")
+    return launch, ranks
+
+
+def runtime_case(args, rng, case, restart_bytes):
+    """The families of issue 55: a load singular at a time the run reaches, on 1-3 ranks (never
+    a hang); a damaged restart file (exit 0 or 2, never a restart from zeros by exit 1 or a
+    crash); links planted in the output folder (never followed)."""
+    kind = rng.randrange(3)
+    if kind == 0:
+        singular = rng.choice(["0.003", "0.004", "0.0055", "0.01", "0"])
+        text = SINGULAR_SCENE.replace("T0", singular)
+        with open(os.path.join(case, "scene.yaml"), "w") as f:
+            f.write(text)
+        launch, ranks = mpi_launch(rng)
+        code, log = run(launch + [args.efg, "run", "scene.yaml", "-o", "out"], case, args.timeout)
+        return "singular load at t = %s on %d rank(s)" % (singular, ranks), verdict(code, log, (0, 2, 3))
+    if kind == 1:
+        with open(os.path.join(case, "explicit_contact.e"), "wb") as f:
+            f.write(mutate_bytes(restart_bytes, rng))
+        shutil.copy(os.path.join(ROOT, "tests/scenes/faults/implicit_restart.yaml"),
+                    os.path.join(case, "scene.yaml"))
+        launch, ranks = mpi_launch(rng, 2)
+        code, log = run([args.efg, "check", "scene.yaml"], case, args.timeout)
+        problem = verdict(code, log, (0, 2, 3))
+        if problem is None:
+            code, log = run(launch + [args.efg, "run", "scene.yaml", "-o", "out"], case,
+                            args.timeout)
+            problem = verdict(code, log, (0, 2, 3))
+        return "damaged restart file on %d rank(s)" % ranks, problem
+    outside = os.path.join(case, "outside")
+    os.makedirs(outside)
+    os.makedirs(os.path.join(case, "out"))
+    names = ["scene.e.part", "scene.e", "history.csv.part", "history.csv", "scene.e.report.json"]
+    for name in rng.sample(names, rng.randint(1, len(names))):
+        target = os.path.join(outside, name)
+        with open(target, "w") as f:
+            f.write("outside\n")
+        os.symlink(target, os.path.join(case, "out", name))
+    with open(os.path.join(case, "scene.yaml"), "w") as f:
+        f.write(SINGULAR_SCENE.replace("1/(t-T0)", "1"))
+    code, log = run([args.efg, "run", "scene.yaml", "-o", "out"], case, args.timeout)
+    problem = verdict(code, log, (0,))
+    for name in os.listdir(outside):
+        with open(os.path.join(outside, name)) as f:
+            if f.read() != "outside\n":
+                problem = "wrote through the planted link %s" % name
+    return "links planted in the output folder", problem
+
+
+def one_case(args, index, scene_seeds, mesh_bytes, restart_bytes):
     rng = random.Random(args.seed * 1000003 + index)
     case = os.path.join(args.workdir, "case%05d" % index)
     os.makedirs(case, exist_ok=True)
+    if rng.random() < 0.2:  # run-time failures, restarts, links (issue 55)
+        what, problem = runtime_case(args, rng, case, restart_bytes)
+        return finish_case(args, case, what, problem)
     if rng.random() < 0.25:  # a mutated Exodus mesh behind a valid scene
         with open(os.path.join(case, "mesh.e"), "wb") as f:
             f.write(mutate_bytes(mesh_bytes, rng))
@@ -151,6 +211,10 @@ def one_case(args, index, scene_seeds, mesh_bytes):
         code, log = run([args.efg, "run", "scene.yaml", "-o", "out"], case, args.timeout)
         problem = verdict(code, log, (0, 2, 3, 4))
         what += "+run"
+    return finish_case(args, case, what, problem)
+
+
+def finish_case(args, case, what, problem):
     if problem is None:
         shutil.rmtree(case, ignore_errors=True)
         return None
@@ -188,6 +252,24 @@ stages:
 """
 
 
+# A load infinite at t = T0, a time an explicit run of dt 0.001 may reach (issue 55, item 1).
+SINGULAR_SCENE = """mesh:
+  generate: {element: quad4, lower: [0, 0], upper: [10, 2], cells: [10, 4]}
+parts:
+  - {name: p, blocks: [block_1], material: m}
+materials:
+  - {name: m, model: linear_elastic, youngs_modulus: 1, poissons_ratio: 0.3, density: 1}
+boundary_conditions:
+  - {name: clamp, type: displacement, node_set: xmin, x: 0, y: 0}
+loads:
+  - {name: tip, type: traction, side_set: xmax, value: [0, "1/(t-T0)"]}
+stages:
+  - {name: s, driver: explicit, end_time: 0.01, dt: 0.001, energy_balance_limit: 0}
+output:
+  history: history.csv
+"""
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("efg")
@@ -208,9 +290,14 @@ def main():
                    capture_output=True)
     with open(os.path.join(args.workdir, "mesh.e"), "rb") as f:
         mesh_bytes = f.read()
+    # The restart seed: an explicit run's results with the restart fields.
+    subprocess.run([args.efg, "run", os.path.join(ROOT, "tests/scenes/faults/explicit_contact.yaml"),
+                    "-o", "restart"], cwd=args.workdir, check=True, capture_output=True)
+    with open(os.path.join(args.workdir, "restart", "explicit_contact.e"), "rb") as f:
+        restart_bytes = f.read()
     scene_seeds = seeds()
     with ThreadPoolExecutor(max_workers=2) as pool:
-        results = list(pool.map(lambda i: one_case(args, i, scene_seeds, mesh_bytes),
+        results = list(pool.map(lambda i: one_case(args, i, scene_seeds, mesh_bytes, restart_bytes),
                                 range(args.cases)))
     failures = [r for r in results if r]
     for r in failures:
