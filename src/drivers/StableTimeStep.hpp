@@ -53,6 +53,10 @@ class StableTimeStep {
   double residual_norm() const { return residual_; }
 
  private:
+  /// dt_crit of a bound on the largest eigenvalue of M^-1 K (sets omega_; throws when it is 0
+  /// or not finite).
+  double step_of_bound(double bound);
+
   InternalForce internal_force_;
   std::function<void(bool)> elastic_probe_;  ///< plastic points probed elastically while on
   Vector inv_sqrt_mass_, start_;

@@ -196,6 +196,35 @@ stages:
   expect_bound(rubber_block("0.45"), 0.05);
 }
 
+// Models of one and two cells (8 to 24 dofs): the estimate takes the dense path (its Krylov space
+// broke down on the rigid-body modes, exit 1 before; issue 55, item 5) and is the exact dt_crit of
+// the implicit path's K to its 1e-6 safety and 8-digit rounding.
+TEST(Explicit, StableTimeStepOfOneAndTwoCellModelsIsTheDenseEigenvalue) {
+  const auto comm = Tpetra::getDefaultComm();
+  for (const char* mesh :
+       {"{element: quad4, lower: [0, 0], upper: [1, 1], cells: [1, 1]}",
+        "{element: quad4, lower: [0, 0], upper: [2, 1], cells: [2, 1]}",
+        "{element: hex8, lower: [0, 0, 0], upper: [1, 1, 1], cells: [1, 1, 1]}"}) {
+    const std::string text = std::string("mesh:\n  generate: ") + mesh + R"(
+parts:
+  - {name: p, blocks: [block_1], material: m}
+materials:
+  - {name: m, model: linear_elastic, density: 2.0, youngs_modulus: 70.0, poissons_ratio: 0.3}
+stages:
+  - {name: go, driver: explicit, end_time: 1.0}
+)";
+    const auto model = build_model(comm, parse_scene(text, "tiny.yaml"));
+    auto ops = std::make_shared<ModelOperators>(model);
+    ExplicitDriver driver(*ops, model.scene.stages.front());
+    Vector d(model.maps.owned_dofs);
+    const double exact = dense_critical_step(model, ops, d, driver.mass());
+    StableTimeStep stable(*ops, driver.mass());
+    const double estimate = stable.estimate(d);
+    EXPECT_LE(estimate, exact * (1 + 1e-12)) << mesh;
+    EXPECT_GE(estimate, exact * (1 - 2e-6)) << mesh;
+  }
+}
+
 // Transformation supports with their traction term (transformation_traction: true) make the
 // free rows' operator K_ff + T_ff, T not symmetric. Its real eigenvalues lie below the largest
 // of M^-1 (K + (T + T^T) / 2) (x^T T x = x^T T_sym x for a real eigenvector), which the
