@@ -37,68 +37,53 @@ def main():
     size = os.path.getsize(source)
     with open(os.path.join(FAULTS, "implicit_restart.yaml")) as f:
         scene_text = f.read()
-    # The cut points: bytes 3 and 100 (the header), fractions of the file, and one byte short.
-    cuts = [3, 100] + [int(size * q) for q in (0.1, 0.25, 0.5, 0.75, 0.9, 0.95, 0.99)] + [size - 1]
     failures = []
-    for n, cut in enumerate(cuts + [size]):
-        damaged = os.path.join(work, f"cut_{n}", "explicit_contact.e")
+
+    def restart_from(data, folder, label, ranks):
+        """Writes `data` as the restart file of a copy of the restart scene in `folder`, runs
+        check (1 rank) and run (on each of `ranks`); intact data must restart (exit 0), damaged
+        data be refused (exit 2 naming initial_state.file and the file, nothing written)."""
+        damaged = os.path.join(work, folder, "explicit_contact.e")
         os.makedirs(os.path.dirname(damaged))
-        with open(source, "rb") as f, open(damaged, "wb") as g:
-            g.write(f.read(cut))
-        scene = os.path.join(os.path.dirname(damaged), "restart.yaml")
-        with open(scene, "w") as f:
-            f.write(scene_text)
-        ranks = [1, 2] if n % 3 == 0 else [1]
-        for command, r in [("check", 1)] + [("run", r) for r in ranks]:
-            out = os.path.join(work, f"out_{n}_{command}_{r}")
-            launch = [efg] if r == 1 else mpiexec + ["-np", str(r), efg]
-            code, text = run(launch + [command, scene] + (["-o", out] if command == "run" else []))
-            intact = cut == size
-            expected = 0 if intact else 2
-            problems = []
-            if code != expected:
-                problems.append(f"exit {code}, expected {expected}")
-            if not intact:
-                if "initial_state.file" not in text or damaged not in text:
-                    problems.append("the message names neither initial_state.file nor the file")
-                if command == "run" and os.path.isdir(out) and os.listdir(out):
-                    problems.append(f"wrote {sorted(os.listdir(out))}")
-            label = f"cut at {cut} of {size} bytes, {command} on {r} rank(s)"
-            print(f"  {label:45s} exit {code}  " + ("; ".join(problems) if problems else "ok"))
-            if problems:
-                failures.append(label + ": " + "; ".join(problems) + "\n" + text[-1500:])
-    # A flipped bit in the record the restart reads (the last: the file's last bytes), a value
-    # that stays a plausible number: the record's checksum refuses it (io/RecordChecksum).
-    flips = [size - 1, size - 9, size - 100, size - 700, size - 2000]
-    for n, at in enumerate(flips):
-        damaged = os.path.join(work, f"flip_{n}", "explicit_contact.e")
-        os.makedirs(os.path.dirname(damaged))
-        with open(source, "rb") as f:
-            data = bytearray(f.read())
-        data[at] ^= 0x10
         with open(damaged, "wb") as g:
             g.write(data)
         scene = os.path.join(os.path.dirname(damaged), "restart.yaml")
         with open(scene, "w") as f:
             f.write(scene_text)
-        for command in ["check", "run"]:
-            out = os.path.join(work, f"flip_out_{n}_{command}")
-            code, text = run([efg, command, scene] + (["-o", out] if command == "run" else []))
-            problems = []
-            if code != 2:
-                problems.append(f"exit {code}, expected 2")
-            if "initial_state.file" not in text or damaged not in text:
-                problems.append("the message names neither initial_state.file nor the file")
-            if command == "run" and os.path.isdir(out) and os.listdir(out):
-                problems.append(f"wrote {sorted(os.listdir(out))}")
-            label = f"bit flipped at byte {at} of {size}, {command}"
-            print(f"  {label:45s} exit {code}  " + ("; ".join(problems) if problems else "ok"))
+        intact = data == original
+        for command, r in [("check", 1)] + [("run", r) for r in ranks]:
+            out = os.path.join(work, folder, f"out_{command}_{r}")
+            launch = [efg] if r == 1 else mpiexec + ["-np", str(r), efg]
+            code, text = run(launch + [command, scene] + (["-o", out] if command == "run" else []))
+            expected = 0 if intact else 2
+            problems = [f"exit {code}, expected {expected}"] if code != expected else []
+            if not intact:
+                if "initial_state.file" not in text or damaged not in text:
+                    problems.append("the message names neither initial_state.file nor the file")
+                if command == "run" and os.path.isdir(out) and os.listdir(out):
+                    problems.append(f"wrote {sorted(os.listdir(out))}")
+            line = f"{label}, {command} on {r} rank(s)"
+            print(f"  {line:50s} exit {code}  " + ("; ".join(problems) if problems else "ok"))
             if problems:
-                failures.append(label + ": " + "; ".join(problems) + "\n" + text[-1500:])
+                failures.append(line + ": " + "; ".join(problems) + "\n" + text[-1500:])
+
+    with open(source, "rb") as f:
+        original = f.read()
+    # The cut points: bytes 3 and 100 (the header), fractions of the file, and one byte short.
+    cuts = [3, 100] + [int(size * q) for q in (0.1, 0.25, 0.5, 0.75, 0.9, 0.95, 0.99)] + [size - 1]
+    for n, cut in enumerate(cuts + [size]):
+        restart_from(original[:cut], f"cut_{n}", f"cut at {cut} of {size} bytes",
+                     [1, 2] if n % 3 == 0 else [1])
+    # A flipped bit in the record the restart reads (the last: the file's last bytes), a value
+    # that stays a plausible number: the record's checksum refuses it (io/RecordChecksum).
+    flips = [size - 1, size - 9, size - 100, size - 700, size - 2000]
+    for n, at in enumerate(flips):
+        data = bytearray(original)
+        data[at] ^= 0x10
+        restart_from(bytes(data), f"flip_{n}", f"bit flipped at byte {at} of {size}", [1])
     if failures:
         sys.exit("\n\n".join(failures))
     print(f"all {len(cuts)} cut files and {len(flips)} flipped bits refused; the intact file restarts")
-
 
 if __name__ == "__main__":
     main()
