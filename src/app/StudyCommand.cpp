@@ -16,6 +16,7 @@
 #include "core/Errors.hpp"
 #include "core/Log.hpp"
 #include "core/Version.hpp"
+#include "mesh/MeshGenerator.hpp"
 #include "parallel/RootBroadcast.hpp"
 #include "run/RunReport.hpp"
 #include "run/Simulation.hpp"
@@ -117,6 +118,63 @@ std::string level_scene(const std::string& text, const GeneratorSpec& base,
   return out.c_str();
 }
 
+// Nodes of the generated mesh at `level` (a double: it may overflow any integer).
+double level_nodes(const GeneratorSpec& base, double factor, int level) {
+  double nodes = 1;
+  for (int d = 0; d < base.dimension; ++d)
+    nodes *= std::round(base.cells[static_cast<std::size_t>(d)] * std::pow(factor, level)) + 1;
+  return nodes;
+}
+
+// The finest level must be a mesh the generator can hold: refused before anything runs (an
+// absurd --levels used to start the series and fail, or overflow the cell counts, much later).
+void check_levels(const GeneratorSpec& base, const CommandLine& cl) {
+  if (level_nodes(base, cl.factor, cl.levels - 1) <= kMaxGeneratedNodes) return;
+  int most = 0;
+  while (level_nodes(base, cl.factor, most) <= kMaxGeneratedNodes) ++most;
+  std::ostringstream o;
+  o << "command line: --levels " << cl.levels << ": level " << cl.levels - 1
+    << " would refine the mesh.generate.cells of " << cl.scene << " by " << cl.factor << "^"
+    << cl.levels - 1 << ", beyond the " << kMaxGeneratedNodes
+    << " nodes a generated mesh may have; expected at most " << most << " levels with --factor "
+    << cl.factor;
+  throw InputError(o.str());
+}
+
+// The message of an error found in the scene with the sweep values, without the scene's
+// file:line:col (the lines are those of the re-emitted text, not of the file).
+std::string without_location(const std::string& message, const std::string& file) {
+  if (message.rfind(file, 0) != 0) return message;
+  std::size_t at = file.size();
+  while (at < message.size() &&
+         (message[at] == ':' || std::isdigit(static_cast<unsigned char>(message[at]))))
+    ++at;
+  while (at < message.size() && message[at] == ' ') ++at;
+  return message.substr(at);
+}
+
+// Every run's scene (each combination of sweep values at each level) validated before anything
+// runs or is written: a bad sweep value used to fail after the earlier runs had written their
+// results, at a line of the scene that does not hold it.
+void check_study_scenes(const std::string& text, const GeneratorSpec& base,
+                        const std::vector<Sweep>& sweeps, const CommandLine& cl) {
+  for (const auto& combo : combinations(sweeps))
+    for (int level = 0; level < cl.levels; ++level) {
+      double h = 0;
+      try {
+        parse_scene(level_scene(text, base, sweeps, combo, cl, level, h), cl.scene);
+      } catch (const InputError& e) {
+        std::string values;
+        for (std::size_t i = 0; i < sweeps.size(); ++i)
+          values += (i ? ", " : "") + sweeps[i].key + "=" + combo[i];
+        throw InputError("command line: --sweep " + values + ": " + cl.scene +
+                         (sweeps.size() > 1 ? " with these values" : " with this value") +
+                         " is not a valid scene (level " + std::to_string(level) +
+                         "): " + without_location(e.what(), cl.scene) + "; nothing was run");
+      }
+    }
+}
+
 }  // namespace
 
 void study_command(const CommPtr& comm, const CommandLine& cl) {
@@ -130,6 +188,8 @@ void study_command(const CommPtr& comm, const CommandLine& cl) {
     throw InputError(cl.scene +
                      ": mesh: a study refines a generated mesh (mesh.generate), not a mesh file");
   const auto sweeps = parse_sweeps(cl.sweeps);
+  check_levels(*base.generator, cl);
+  check_study_scenes(text, *base.generator, sweeps, cl);
   const std::filesystem::path dir(cl.output_dir);
   if (comm->getRank() == 0) std::filesystem::create_directories(dir);
   const auto csv_path = (dir / (base.name + "_study.csv")).string();

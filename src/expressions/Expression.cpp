@@ -3,7 +3,9 @@
 #include <muParser.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstdlib>
 #include <regex>
 
 namespace efg {
@@ -30,12 +32,30 @@ const char* variable_list(ExpressionVariables v) {
   }
 }
 
+// A number too large for a double (1e400): muParser's reader fails on it and reports the token as
+// an unknown name; the YAML reader, too, leaves such a number to the expression. The literal at
+// `at` (muParser's token position; its token may hold only the digits before '.' or 'e'), when
+// it overflows; "" otherwise.
+std::string overflowing_number(const std::string& text, int at) {
+  if (at < 0 || at >= static_cast<int>(text.size())) return "";
+  const std::string token = text.substr(static_cast<std::size_t>(at));
+  static const std::regex literal("^([0-9]+\\.?[0-9]*|\\.[0-9]+)[eE][-+]?[0-9]+");
+  std::smatch m;
+  if (!std::regex_search(token, m, literal)) return "";
+  errno = 0;
+  const double v = std::strtod(m.str().c_str(), nullptr);
+  return errno == ERANGE && std::isinf(v) ? m.str() : "";
+}
+
 // muParser's messages end with "at position N." (1-based); ours name the position in the caller's
 // file:line:col instead, so only the reason is kept, with a plainer wording for the common cases.
-std::string reason(const mu::ParserError& e, ExpressionVariables v) {
+std::string reason(const mu::ParserError& e, ExpressionVariables v, const std::string& text) {
   const auto& token = e.GetToken();
   switch (e.GetCode()) {
     case mu::ecUNASSIGNABLE_TOKEN:
+      if (const auto number = overflowing_number(text, e.GetPos()); !number.empty())
+        return "the number " + number +
+               " is out of the range of double (overflow; magnitudes up to 1.8e308)";
       return "unknown name '" + token + "' (allowed here: " + variable_list(v) +
              ", the scene's parameters and " + Expression::builtin_names() + ")";
     case mu::ecUNEXPECTED_EOF:
@@ -107,7 +127,7 @@ Expression::Expression(const std::string& text, const std::map<std::string, doub
   } catch (const mu::ParserError& e) {
     // GetPos is muParser's 0-based index of the offending token (-1 when unknown).
     // at the end of the text muParser may point one past it
-    throw ExpressionError(reason(e, variables),
+    throw ExpressionError(reason(e, variables, text),
                           std::min(e.GetPos(), static_cast<int>(text.size())));
   }
 }

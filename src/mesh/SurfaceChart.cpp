@@ -86,6 +86,22 @@ SurfaceProjection surface_projection(const BackgroundMesh& mesh) {
 void check_chart_triangle(const SurfaceProjection& p, std::size_t cell, const std::string& block,
                           const double* a, const double* b, const double* c) {
   const auto n = triangle_normal(a, b, c);
+  // A collapsed cell (coincident or collinear corners) has no normal to compare: say so, rather
+  // than report the NaN angle as a turn of 0 degrees. Zero relative to the longest edge squared.
+  double longest = 0;
+  for (const auto& edge : {minus(b, a), minus(c, b), minus(a, c)})
+    longest = std::max(longest, dot3(edge, edge));
+  if (std::sqrt(dot3(n, n)) <= 1e-12 * longest) {
+    std::ostringstream o;
+    o.precision(6);
+    o << "shell surface: cell " << cell + 1 << " (block '" << block
+      << "') is collapsed: its corners";
+    for (const double* corner : {a, b, c})
+      o << (corner == a ? " (" : ", (") << corner[0] << ", " << corner[1] << ", " << corner[2]
+        << ")";
+    o << " enclose zero area (coincident or collinear nodes); expected cells of positive area";
+    throw InputError(o.str());
+  }
   const double cosine = dot3(n, p.normal) / std::sqrt(dot3(n, n));
   if (cosine > std::cos(80.0 * M_PI / 180.0)) return;
   const auto shown = [](double v) { return std::abs(v) < 1e-12 ? 0.0 : v; };  // no -1e-17

@@ -42,7 +42,8 @@ SurfaceProjection projection_from(const std::array<double, 3>& normal_sum,
                                   const std::array<double, 3>& origin);
 
 /// Throws InputError naming cell `cell` (0-based over the mesh's blocks) of block `block` when
-/// its triangle a, b, c turns its normal by 80 degrees or more from the projection's.
+/// its triangle a, b, c turns its normal by 80 degrees or more from the projection's, or has no
+/// area (a collapsed cell).
 void check_chart_triangle(const SurfaceProjection& p, std::size_t cell, const std::string& block,
                           const double* a, const double* b, const double* c);
 

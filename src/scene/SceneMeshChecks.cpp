@@ -136,6 +136,7 @@ class Checker {
     check_rigid_bodies();
     on_this_rank([&] { check_conflicting_conditions(); });
     on_this_rank([&] { check_parts_do_not_share_nodes(); });
+    check_no_far_nodes();
     check_parts_held();
     for (std::size_t i = 0; i < s_.output.history_node_sets.size(); ++i)
       require_name(d["output"]["history_node_sets"][i],
@@ -245,7 +246,87 @@ class Checker {
     }
   }
 
+  // A node far from the rest of its part (x = 1e6 in a part 10 long: a mistyped coordinate)
+  // stretches its cells by orders of magnitude; later checks then fail for reasons that hide it
+  // (a held part "free to rotate", an ill-conditioned moment matrix). Found first: a cell whose
+  // diameter exceeds kStretch times the part's typical one (the geometric mean, which one
+  // outlier barely moves; graded meshes stay within a few hundred of it).
+  void check_no_far_nodes() const {
+    constexpr double kStretch = 1e4;
+    const auto udim = static_cast<std::size_t>(m_.dimension);
+    const auto distance = [&](LocalIndex a, LocalIndex b) {
+      double d2 = 0;
+      for (std::size_t k = 0; k < udim; ++k) {
+        const double d = m_.coordinates[static_cast<std::size_t>(a) * udim + k] -
+                         m_.coordinates[static_cast<std::size_t>(b) * udim + k];
+        d2 += d * d;
+      }
+      return std::sqrt(d2);
+    };
+    for (std::size_t p = 0; p < s_.parts.size(); ++p) {
+      // Each cell once (by the owner of its first node), its diameter over its node pairs.
+      const auto for_each_cell = [&](auto&& f) {
+        for (const auto& b : m_.blocks) {
+          const auto& names = s_.parts[p].blocks;
+          if (std::find(names.begin(), names.end(), b.name) == names.end()) continue;
+          const auto n = static_cast<std::size_t>(cell_node_count(b.type));
+          for (std::size_t c = 0; c < b.cell_count(); ++c) {
+            const auto* k = &b.connectivity[c * n];
+            if (!owned(static_cast<std::size_t>(k[0]))) continue;
+            double diameter = 0;
+            for (std::size_t i = 0; i < n; ++i)
+              for (std::size_t j = i + 1; j < n; ++j)
+                diameter = std::max(diameter, distance(k[i], k[j]));
+            f(b, c, k, n, diameter);
+          }
+        }
+      };
+      double sums[2] = {0, 0};  // sum of log diameters, count
+      for_each_cell(
+          [&](const ElementBlock&, std::size_t, const LocalIndex*, std::size_t, double d) {
+            if (d > 0) {
+              sums[0] += std::log(d);
+              sums[1] += 1;
+            }
+          });
+      reduce_over_ranks(sums, 2, Teuchos::REDUCE_SUM);
+      if (sums[1] == 0) continue;
+      const double typical = std::exp(sums[0] / sums[1]);
+      on_this_rank([&] {
+        for_each_cell([&](const ElementBlock& b, std::size_t c, const LocalIndex* k, std::size_t n,
+                          double d) {
+          if (!(d > kStretch * typical)) return;
+          std::size_t far = 0;  // the node farthest from the others
+          double most = -1;
+          for (std::size_t i = 0; i < n; ++i) {
+            double sum = 0;
+            for (std::size_t j = 0; j < n; ++j) sum += distance(k[i], k[j]);
+            if (sum > most) most = sum, far = i;
+          }
+          const auto node = static_cast<std::size_t>(k[far]);
+          std::ostringstream o;
+          o.precision(6);
+          o << "part '" << s_.parts[p].name << "': mesh node " << m_.global_node(node) + 1
+            << " at (";
+          for (std::size_t i = 0; i < udim; ++i)
+            o << (i ? ", " : "") << m_.coordinates[node * udim + i];
+          o.precision(3);
+          o << ") lies far from the rest of the part: it stretches cell " << c + 1 << " of block '"
+            << b.name << "' to " << d << " across, " << d / typical
+            << " times the part's typical cell size " << typical
+            << "; expected cells of comparable size (a mistyped coordinate?)";
+          fail(s_.document["parts"][p]["blocks"], "parts[" + std::to_string(p) + "].blocks",
+               o.str());
+        });
+      });
+    }
+  }
+
   // "" when part p is held; otherwise the free motion in words.
+  // The modes are centred and scaled on the constrained nodes, not on the whole part: the rank
+  // does not depend on the centre, and a node far from the supports (x = 1e6 in a part 10 long)
+  // would otherwise shrink the rotations at the supports below the rank test's tolerance and
+  // report a held part free to rotate (issue 55).
   std::string free_rigid_motion(std::size_t p, const std::string& stage) const {
     const int dim = m_.dimension;
     const auto udim = static_cast<std::size_t>(dim);
@@ -254,32 +335,6 @@ class Checker {
       if (std::find(s_.parts[p].blocks.begin(), s_.parts[p].blocks.end(), b.name) !=
           s_.parts[p].blocks.end())
         for (auto n : b.connectivity) in_part[static_cast<std::size_t>(n)] = 1;
-    double centre[3] = {0, 0, 0}, lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
-    double count = 0;
-    for (std::size_t n = 0; n < m_.node_count(); ++n)
-      if (in_part[n] && owned(n)) {
-        count += 1;
-        for (std::size_t k = 0; k < udim; ++k) {
-          const double x = m_.coordinates[n * udim + k];
-          centre[k] += x;
-          lo[k] = std::min(lo[k], x);
-          hi[k] = std::max(hi[k], x);
-        }
-      }
-    reduce_over_ranks(centre, 3, Teuchos::REDUCE_SUM);
-    reduce_over_ranks(&count, 1, Teuchos::REDUCE_SUM);
-    reduce_over_ranks(lo, 3, Teuchos::REDUCE_MIN);
-    reduce_over_ranks(hi, 3, Teuchos::REDUCE_MAX);
-    if (count == 0) return "";
-    double size = 0;
-    for (std::size_t k = 0; k < udim; ++k) {
-      centre[k] /= count;
-      size = std::max(size, hi[k] - lo[k]);
-    }
-    // Gram matrix of the modes over the constrained pairs: modes are 2 translations + 1 rotation
-    // in 2D, 3 + 3 in 3D; u_rot = omega x r with r the scaled position.
-    const int modes = dim == 2 ? 3 : 6;
-    std::vector<double> gram(static_cast<std::size_t>(modes * modes), 0.0);
     std::vector<char> constrained(m_.node_count() * udim, 0);
     for (const auto& bc : s_.boundary_conditions) {
       if (bc.type != "displacement" || !bc.stages.includes(stage)) continue;
@@ -288,8 +343,42 @@ class Checker {
           if (bc.components[c] || bc.from_exact[c])
             constrained[static_cast<std::size_t>(n) * udim + c] = 1;
     }
+    const auto held = [&](std::size_t n) {
+      return std::any_of(&constrained[n * udim], &constrained[n * udim] + udim,
+                         [](char c) { return c != 0; });
+    };
+    double centre[3] = {0, 0, 0}, lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
+    double count = 0, part_count = 0;
     for (std::size_t n = 0; n < m_.node_count(); ++n) {
       if (!in_part[n] || !owned(n)) continue;
+      part_count += 1;
+      if (!held(n)) continue;
+      count += 1;
+      for (std::size_t k = 0; k < udim; ++k) {
+        const double x = m_.coordinates[n * udim + k];
+        centre[k] += x;
+        lo[k] = std::min(lo[k], x);
+        hi[k] = std::max(hi[k], x);
+      }
+    }
+    reduce_over_ranks(centre, 3, Teuchos::REDUCE_SUM);
+    reduce_over_ranks(&count, 1, Teuchos::REDUCE_SUM);
+    reduce_over_ranks(&part_count, 1, Teuchos::REDUCE_SUM);
+    reduce_over_ranks(lo, 3, Teuchos::REDUCE_MIN);
+    reduce_over_ranks(hi, 3, Teuchos::REDUCE_MAX);
+    if (part_count == 0) return "";
+    double size = 0;
+    for (std::size_t k = 0; k < udim && count > 0; ++k) {
+      centre[k] /= count;
+      size = std::max(size, hi[k] - lo[k]);
+    }
+    if (!(size > 0)) size = 1;  // one held point (or none): rotations are free either way
+    // Gram matrix of the modes over the constrained pairs: modes are 2 translations + 1 rotation
+    // in 2D, 3 + 3 in 3D; u_rot = omega x r with r the scaled position.
+    const int modes = dim == 2 ? 3 : 6;
+    std::vector<double> gram(static_cast<std::size_t>(modes * modes), 0.0);
+    for (std::size_t n = 0; n < m_.node_count(); ++n) {
+      if (!in_part[n] || !owned(n) || !held(n)) continue;
       double r[3] = {0, 0, 0};
       for (std::size_t k = 0; k < udim; ++k)
         r[k] = (m_.coordinates[n * udim + k] - centre[k]) / size;

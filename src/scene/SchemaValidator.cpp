@@ -54,6 +54,14 @@ int expression_column_offset(const YAML::Node& node, int position) {
   return (is_quoted(node) ? 1 : 0) + std::max(0, position);
 }
 
+bool is_non_decimal_integer(const YAML::Node& node) {
+  long long i = 0;
+  if (!node.IsScalar() || is_quoted(node) || !YAML::convert<long long>::decode(node, i))
+    return false;
+  static const std::regex decimal("[-+]?(0|[1-9][0-9]*)");
+  return !std::regex_match(node.Scalar(), decimal);
+}
+
 namespace {
 
 const std::set<std::string>& reserved_parameter_names() {
@@ -112,6 +120,7 @@ class Validator {
       case Type::passthrough:
         if (!node.IsNull() && !node.IsMap())
           fail(node, path, "expected a map of solver parameters, found " + describe_found(node));
+        refuse_non_decimal_integers(node, path);
         return node.IsNull() ? YAML::Node(YAML::NodeType::Map) : YAML::Clone(node);
       case Type::real_list:
       case Type::integer_list:
@@ -126,6 +135,23 @@ class Validator {
   [[noreturn]] void fail(const YAML::Node& node, const std::string& path,
                          const std::string& message) const {
     throw InputError(located_message(file_, node, path, message));
+  }
+
+  // Solver maps go to Trilinos untyped (ParameterListFromYaml): an integer there is read by
+  // yaml-cpp too, so 0x10 and 010 are refused here, where the written text has its lines.
+  void refuse_non_decimal_integers(const YAML::Node& node, const std::string& path) const {
+    if (is_non_decimal_integer(node)) fail(node, path, non_decimal_message(node, ""));
+    if (node.IsMap())
+      for (const auto& kv : node)
+        refuse_non_decimal_integers(kv.second, child_path(path, kv.first.Scalar()));
+    else if (node.IsSequence())
+      for (std::size_t i = 0; i < node.size(); ++i)
+        refuse_non_decimal_integers(node[i], path + "[" + std::to_string(i) + "]");
+  }
+
+  static std::string non_decimal_message(const YAML::Node& node, const std::string& range) {
+    return "expected a decimal integer" + (range.empty() ? "" : " " + range) + ", found '" +
+           node.Scalar() + "' (hexadecimal, octal and leading zeros are not read)";
   }
 
   YAML::Node check_scalar(const YAML::Node& node, const Spec& spec, const std::string& path) {
@@ -230,6 +256,8 @@ class Validator {
                       bool integral) {
     double value = 0;
     bool ok = !is_quoted(node);
+    if (ok && integral && is_non_decimal_integer(node))
+      fail(node, path, non_decimal_message(node, spec.range_text()));
     if (ok && integral) {
       long long i = 0;
       ok = YAML::convert<long long>::decode(node, i);

@@ -22,4 +22,9 @@ std::string located_message(const std::string& file, const YAML::Node& node,
 /// Column offset of character `position` of an expression written as this scalar (quotes skipped).
 int expression_column_offset(const YAML::Node& node, int position);
 
+/// True when yaml-cpp reads `node` as an integer written otherwise than in plain decimal digits:
+/// it takes 0x8 as 8 and 010 as octal 8 (the stream's base detection), which a reader expects
+/// to be an error or ten.
+bool is_non_decimal_integer(const YAML::Node& node);
+
 }  // namespace efg::schema
