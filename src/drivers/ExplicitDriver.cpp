@@ -249,7 +249,12 @@ void ExplicitDriver::start(RunState& state, double dt) {
                         state.a);
   energies(state);
   if (!state.energy_started) {
-    state.initial_energy = state.kinetic + state.internal;
+    // The first explicit stage, or one after an implicit stage: a static solve has no history of
+    // forces, so its work is not in the account, and the account is re-based here with the work
+    // so far kept: E_0 = E_kin + E_int + D - W_ext - W_wall (the first stage: E_kin + E_int).
+    // Without it an explicit stage after an implicit one stopped as unstable at equilibrium.
+    state.initial_energy =
+        state.kinetic + state.internal + state.damping_work - state.external_work - state.wall_work;
     state.energy_started = true;
   }
   state.dt = dt;
@@ -424,7 +429,12 @@ ExplicitSummary ExplicitDriver::run(RunState& state, const StateOutput& output, 
         why << "stage '" << stage_.name << "': unstable: the energy grew to "
             << state.kinetic + state.internal << " (loads and initial state put in "
             << reference_energy << ") at step " << summary.steps << ", t = " << state.time
-            << " with dt = " << step_dt << " above the stable time step " << dt_crit;
+            << " with dt = " << step_dt;
+        if (step_dt > dt_crit)
+          why << " above the stable time step " << dt_crit;
+        else  // the step is not the cause: energy from a source the account does not see
+          why << " within the stable time step " << dt_crit
+              << " (energy from an unaccounted force or a nonsymmetric operator, not the step)";
         throw NumericalError(why.str());
       }
       if (balance.failed(state)) {

@@ -186,6 +186,7 @@ RunOutcome run_stages(const CommPtr& comm, const Model& model, const std::string
           write(state);
         });
         implicit_reports.push_back({stage.name, s});
+        state.energy_started = false;  // the next explicit stage re-bases the energy account
         Log::info("stage '" + stage.name + "' done: " + std::to_string(s.steps) + " steps, " +
                   std::to_string(s.cutbacks) + " cutbacks, " + std::to_string(s.newton_iterations) +
                   " Newton iterations, " + std::to_string(s.linear_iterations) +
