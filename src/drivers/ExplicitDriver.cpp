@@ -73,7 +73,8 @@ ExplicitDriver::ExplicitDriver(const ModelOperators& ops, const StageSpec& stage
       v_half_(mass_.getMap()),
       previous_d_(mass_.getMap()),
       previous_v_(mass_.getMap()),
-      previous_a_(mass_.getMap()) {
+      previous_a_(mass_.getMap()),
+      damping_(stage_.settings["damping"].as<double>(), mass_) {
   inverse_mass_.reciprocal(mass_);
   viscosity_linear_ = stage_.settings["bulk_viscosity_linear"].as<double>();
   viscosity_quadratic_ = stage_.settings["bulk_viscosity_quadratic"].as<double>();
@@ -242,6 +243,7 @@ void ExplicitDriver::start(RunState& state, double dt) {
     contact_->begin(state.bodies, state.time, d_overlap_);
   }
   state.wall_forces = acceleration(state.time, dt, state.d, state.v, state.a);
+  damping_.add_to_acceleration(state.v, state.a);
   if (contact_) state.bodies = contact_->states();
   support_forces(state.a);
   const Vector v_start(state.v, Teuchos::Copy);
@@ -253,8 +255,8 @@ void ExplicitDriver::start(RunState& state, double dt) {
     // forces, so its work is not in the account, and the account is re-based here with the work
     // so far kept: E_0 = E_kin + E_int + D - W_ext - W_wall (the first stage: E_kin + E_int).
     // Without it an explicit stage after an implicit one stopped as unstable at equilibrium.
-    state.initial_energy =
-        state.kinetic + state.internal + state.damping_work - state.external_work - state.wall_work;
+    state.initial_energy = state.kinetic + state.internal + state.damping_work +
+                           state.mass_damping_work - state.external_work - state.wall_work;
     state.energy_started = true;
   }
   state.dt = dt;
@@ -313,6 +315,7 @@ void ExplicitDriver::advance(RunState& state, double step_dt, long long step,
   }
   Tpetra::deep_copy(state.v, v_half_);
   state.v.update(0.5 * step_dt, state.a, 1.0);
+  damping_.end_step(step_dt, state.v, state.a);
   if (contact_) {
     const auto work = contact_->finish(step_dt);
     state.wall_work += work.contact;
@@ -324,6 +327,7 @@ void ExplicitDriver::advance(RunState& state, double step_dt, long long step,
   state.dt = step_dt;
   account_energy(state, delta_);
   state.external_work += motion_.kinetic_energy_change(mass_, previous_v_, state.v);
+  state.mass_damping_work += damping_.work(step_dt, previous_v_, state.v);
   if (!finite(state)) {
     // Write the last good state, then name the particle, step and time.
     RunState failed(state.d.getMap());

@@ -16,6 +16,7 @@
 
 #include "contact/RigidContact.hpp"
 #include "drivers/EnergyBalanceCheck.hpp"
+#include "drivers/MassDamping.hpp"
 #include "drivers/PrescribedMotion.hpp"
 #include "drivers/RunState.hpp"
 #include "drivers/StableTimeStep.hpp"
@@ -92,6 +93,7 @@ class ExplicitDriver {
   double viscosity_linear_ = 0, viscosity_quadratic_ = 0;  ///< the stage's Q2, Q1
   Vector f_support_, f_support_old_;  ///< forces of the prescribed motions (their work is external)
   Vector delta_, v_half_, previous_d_, previous_v_, previous_a_;  ///< one step's scratch
+  MassDamping damping_;  ///< the stage's mass-proportional damping (off: 0)
 };
 
 }  // namespace efg

@@ -26,6 +26,8 @@ struct RunState {
   /// Work dissipated by the bulk viscosity of mixed u-p cells (explicit): E_kin + E_int + D =
   /// E_0 + W_ext + W_wall.
   double damping_work = 0;
+  /// Work dissipated by the stages' mass-proportional damping (drivers/MassDamping).
+  double mass_damping_work = 0;
   bool energy_started = false;
   /// The normal force of each rigid wall, then the force of each contact between deformable
   /// parts on its target parts (3 components each).
@@ -40,10 +42,11 @@ struct RunState {
   std::vector<std::array<double, 3>> reactions;
   bool reactions_from_driver = false;
 
-  /// |E_kin + E_int + D - E_0 - W_ext - W_wall| relative to the largest energy involved.
+  /// |E_kin + E_int + D - E_0 - W_ext - W_wall| relative to the largest energy involved (D: the
+  /// bulk viscosity's and the mass damping's work).
   double balance_error() const {
-    const double total =
-        kinetic + internal + damping_work - initial_energy - external_work - wall_work;
+    const double total = kinetic + internal + damping_work + mass_damping_work - initial_energy -
+                         external_work - wall_work;
     const double scale =
         std::max({std::abs(kinetic), std::abs(internal),
                   std::abs(initial_energy) + std::abs(external_work) + std::abs(wall_work)});

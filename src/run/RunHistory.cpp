@@ -31,6 +31,12 @@ bool erodes(const Scene& scene) {
     if (m.constants.count("failure_strain")) return true;
   return false;
 }
+
+bool damps(const Scene& scene) {
+  for (const auto& stage : scene.stages)
+    if (stage.driver == "explicit" && stage.settings["damping"].as<double>() > 0) return true;
+  return false;
+}
 }  // namespace
 
 std::vector<std::string> history_names(const Scene& scene, int dimension) {
@@ -42,6 +48,8 @@ std::vector<std::string> history_names(const Scene& scene, int dimension) {
   if (erodes(scene)) names.push_back("eroded_energy");
   // Mixed u-p cells: the work their bulk viscosity dissipated (explicit stages; 0 otherwise).
   if (has_mixed_parts(scene)) names.push_back("bulk_viscosity_work");
+  // Mass damping: its work, only when a stage damps (other scenes' columns stay as they were).
+  if (damps(scene)) names.push_back("mass_damping_work");
   const std::string axes = "xyz";
   const auto dim = static_cast<std::size_t>(dimension);
   for (const auto& w : scene.rigid_walls) names.push_back(short_name("wall_", w.name, "_force"));
@@ -107,6 +115,7 @@ std::vector<double> RunHistory::values(const ModelOperators& ops, const RunState
     out.push_back(eroded);
   }
   if (has_mixed_parts(model_.scene)) out.push_back(state.damping_work);
+  if (damps(model_.scene)) out.push_back(state.mass_damping_work);
   for (std::size_t w = 0; w < model_.scene.rigid_walls.size(); ++w)
     out.push_back(w < state.wall_forces.size() ? state.wall_forces[w] : 0.0);
   // After the walls' normal forces: 3 components per contact between deformable parts.

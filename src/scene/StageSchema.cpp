@@ -75,6 +75,17 @@ SpecPtr stage_spec() {
                              "-")
                             .at_least(1),
                         "1"),
+           optional_key(
+               "damping",
+               real("Mass-proportional damping alpha (1/time), the role of LS-DYNA's "
+                    "*DAMPING_GLOBAL: a force -alpha M v on every particle, for quasi-static "
+                    "stages (forming, settling under a preload); a free particle's velocity decays "
+                    "like exp(-alpha t). About 2 omega_1 (the lowest natural frequency, rad/time) "
+                    "damps that mode critically. Its work is in the energy account (history "
+                    "column mass_damping_work; docs/explicit.md, \"Damping\"). 0: off.",
+                    "1/time")
+                   .at_least(0),
+               "0"),
            optional_key("bulk_viscosity_linear",
                         real("Linear bulk viscosity coefficient (LS-DYNA's Q2) of the cells of "
                              "mixed_up parts: q = rho l (Q1 l theta'^2 - Q2 c theta') on "
