@@ -381,6 +381,8 @@ ExplicitSummary ExplicitDriver::run(RunState& state, const StateOutput& output, 
   double next_output = std::min(end, start_time + interval);
   double reference_energy = std::max(state.initial_energy, 1e-300);
   EnergyBalanceCheck balance(stage_.name, stage_.settings["energy_balance_limit"].as<double>());
+  const double relaxed_ratio = stage_.settings["relaxation_kinetic_ratio"].as<double>();
+  int relaxed_checks = 0;  // checks in a row at or below the ratio (dynamic relaxation)
   // The stable step is re-estimated after 1, 3, 7, ... steps: the interval doubles up to
   // dt_update_interval while the estimate holds, and halves when it fell by more than 5 % since
   // the last one. An impact that shrinks the stable step tenfold within a few dozen steps (the
@@ -444,6 +446,20 @@ ExplicitSummary ExplicitDriver::run(RunState& state, const StateOutput& output, 
       if (balance.failed(state)) {
         output(state);
         report_energy_balance(balance, state, summary.steps);
+      }
+      relaxed_checks =
+          relaxed_ratio > 0 && state.internal > 0 && state.kinetic <= relaxed_ratio * state.internal
+              ? relaxed_checks + 1
+              : 0;
+      if (relaxed_checks >= 2) {
+        std::ostringstream o;
+        o << "stage '" << stage_.name << "': relaxed at step " << summary.steps
+          << ", t = " << state.time << ": kinetic / internal energy "
+          << state.kinetic / state.internal << " <= " << relaxed_ratio;
+        Log::info(o.str());
+        summary.relaxed = true;
+        record();
+        break;
       }
     }
     if (due) {

@@ -34,6 +34,7 @@ struct ExplicitSummary {
   /// Quasi-static indicator of a forming stage, from the records: the time integral of the
   /// kinetic energy over that of the internal energy (trapezoids), and their ratio at the end.
   double kinetic_to_internal_mean = 0, kinetic_to_internal_end = 0;
+  bool relaxed = false;  ///< ended early by relaxation_kinetic_ratio (dynamic relaxation)
 };
 
 class ExplicitDriver {

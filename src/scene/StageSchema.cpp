@@ -86,6 +86,17 @@ SpecPtr stage_spec() {
                     "1/time")
                    .at_least(0),
                "0"),
+           optional_key(
+               "relaxation_kinetic_ratio",
+               real("Dynamic relaxation: the stage ends once its kinetic energy stays at or below "
+                    "this fraction of its internal energy at two checks in a row (every 100 "
+                    "steps and at records; a turning point of an oscillation passes one), with "
+                    "damping to settle the state (docs/explicit.md, \"Damping\"). The stage's "
+                    "last record is the relaxed state; the next stage starts at end_time. 0: off.",
+                    "-")
+                   .at_least(0)
+                   .below(1),
+               "0"),
            optional_key("bulk_viscosity_linear",
                         real("Linear bulk viscosity coefficient (LS-DYNA's Q2) of the cells of "
                              "mixed_up parts: q = rho l (Q1 l theta'^2 - Q2 c theta') on "
