@@ -71,6 +71,25 @@ void write_implicit_stages(std::ostream& o, const std::vector<ImplicitStageRepor
   o << "]";
 }
 
+// Per explicit stage: its steps, the step sizes, the stable-step estimates, the worst energy
+// balance error, the quasi-static indicator (kinetic over internal energy: time integrals over
+// the stage and at its end) and whether dynamic relaxation ended it.
+void write_explicit_stages(std::ostream& o, const std::vector<ExplicitStageReport>& stages) {
+  o << ",\n  \"explicit_stages\": [";
+  for (std::size_t s = 0; s < stages.size(); ++s) {
+    const auto& st = stages[s].summary;
+    o << (s ? ", " : "") << "{\"stage\": " << quoted(stages[s].stage) << ", \"steps\": " << st.steps
+      << ", \"smallest_dt\": " << number(st.smallest_dt)
+      << ", \"largest_dt\": " << number(st.largest_dt)
+      << ", \"stable_step_estimates\": " << st.dt_estimates
+      << ", \"worst_energy_balance_error\": " << number(st.worst_balance_error)
+      << ", \"kinetic_to_internal_mean\": " << number(st.kinetic_to_internal_mean)
+      << ", \"kinetic_to_internal_end\": " << number(st.kinetic_to_internal_end)
+      << ", \"relaxed\": " << (st.relaxed ? "true" : "false") << "}";
+  }
+  o << "]";
+}
+
 }  // namespace
 
 const std::vector<std::string>& report_phases() {
@@ -160,7 +179,8 @@ void write_run_report(const CommPtr& comm, const Model& model, const std::string
                       const std::vector<ImplicitStageReport>& implicit, const ProbeValues& probes,
                       const std::vector<MemoryPhase>& memory_phases,
                       const std::vector<std::pair<std::string, ProbeValues>>& probes_by_stage,
-                      const std::vector<std::pair<std::string, ProbeValues>>& angles_by_stage) {
+                      const std::vector<std::pair<std::string, ProbeValues>>& angles_by_stage,
+                      const std::vector<ExplicitStageReport>& explicit_stages) {
   std::vector<double> local, global;
   for (const auto& phase : report_phases()) {
     const auto timer = Teuchos::TimeMonitor::lookupCounter("efg: " + phase);
@@ -212,6 +232,7 @@ void write_run_report(const CommPtr& comm, const Model& model, const std::string
                   : std::string())
           << "}";
       write_implicit_stages(o, implicit);
+      write_explicit_stages(o, explicit_stages);
       auto write_probes = [&](const ProbeValues& values) {
         o << "{";
         for (std::size_t i = 0; i < values.size(); ++i)

@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "drivers/ExplicitDriver.hpp"
 #include "drivers/ImplicitDriver.hpp"
 #include "drivers/RunState.hpp"
 #include "operators/ModelOperators.hpp"
@@ -35,6 +36,12 @@ struct ImplicitStageReport {
   StageSummary summary;
 };
 
+/// What an explicit stage's steps did, for the report (its quasi-static indicator included).
+struct ExplicitStageReport {
+  std::string stage;
+  ExplicitSummary summary;
+};
+
 /// Probe name -> value (probe_<name>_<quantity>, as the history columns).
 using ProbeValues = std::vector<std::pair<std::string, double>>;
 
@@ -46,7 +53,8 @@ void write_run_report(const CommPtr& comm, const Model& model, const std::string
                       const std::vector<ImplicitStageReport>& implicit = {},
                       const ProbeValues& probes = {}, const std::vector<MemoryPhase>& memory = {},
                       const std::vector<std::pair<std::string, ProbeValues>>& probes_by_stage = {},
-                      const std::vector<std::pair<std::string, ProbeValues>>& angles_by_stage = {});
+                      const std::vector<std::pair<std::string, ProbeValues>>& angles_by_stage = {},
+                      const std::vector<ExplicitStageReport>& explicit_stages = {});
 
 /// The wall-time phases the report lists (Teuchos timer names without the "efg: " prefix).
 const std::vector<std::string>& report_phases();

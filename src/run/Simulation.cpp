@@ -143,6 +143,7 @@ RunOutcome run_stages(const CommPtr& comm, const Model& model, const std::string
   };
   const double first_end = model.scene.stages.empty() ? 1.0 : model.scene.stages.front().end_time;
   std::vector<ImplicitStageReport> implicit_reports;
+  std::vector<ExplicitStageReport> explicit_reports;
   std::vector<std::pair<std::string, ProbeValues>> probes_by_stage, angles_by_stage;
   // The first record: an explicit first stage writes it itself, once the start energies are
   // known (written here it would show a kinetic energy of 0 with a nonzero initial velocity).
@@ -195,6 +196,7 @@ RunOutcome run_stages(const CommPtr& comm, const Model& model, const std::string
         std::unique_ptr<ExplicitDriver> driver;
         run_collectively(comm, [&] { driver = std::make_unique<ExplicitDriver>(*ops, stage); });
         const auto s = driver->run(state, write, &stage == &model.scene.stages.front());
+        explicit_reports.push_back({stage.name, s});
         std::ostringstream o;
         o << "stage '" << stage.name << "' done: " << s.steps << " steps, dt " << s.smallest_dt
           << " to " << s.largest_dt << ", worst energy balance error "
@@ -236,7 +238,8 @@ RunOutcome run_stages(const CommPtr& comm, const Model& model, const std::string
   }
   const auto memory_phases = memory_by_phase(comm, model);
   write_run_report(comm, model, path + ".report.json", path, state, outcome.errors, checks, seconds,
-                   implicit_reports, probes, memory_phases, probes_by_stage, angles_by_stage);
+                   implicit_reports, probes, memory_phases, probes_by_stage, angles_by_stage,
+                   explicit_reports);
   Log::info("run report: " + path + ".report.json");
   return outcome;
 }
