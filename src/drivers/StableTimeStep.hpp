@@ -22,6 +22,7 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <string>
 
 #include "operators/ModelOperators.hpp"
@@ -56,6 +57,12 @@ class StableTimeStep {
   /// dt_crit of a bound on the largest eigenvalue of M^-1 K (sets omega_; throws when it is 0
   /// or not finite).
   double step_of_bound(double bound);
+  /// dt_crit of the exact largest eigenvalue (the dense path).
+  double dense_step(double largest);
+  /// The Krylov-Schur bound |theta| + ||A y - theta y|| on the largest eigenvalue of A, or empty
+  /// with `failure` saying why (no convergence, an exception).
+  std::optional<double> krylov_bound(const Teuchos::RCP<Tpetra::Operator<>>& A,
+                                     std::string& failure);
 
   InternalForce internal_force_;
   std::function<void(bool)> elastic_probe_;  ///< plastic points probed elastically while on
