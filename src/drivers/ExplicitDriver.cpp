@@ -74,7 +74,7 @@ ExplicitDriver::ExplicitDriver(const ModelOperators& ops, const StageSpec& stage
       previous_d_(mass_.getMap()),
       previous_v_(mass_.getMap()),
       previous_a_(mass_.getMap()),
-      damping_(stage_.settings["damping"].as<double>(), mass_) {
+      damping_(mass_damping_of(ops, stage), mass_) {
   inverse_mass_.reciprocal(mass_);
   viscosity_linear_ = stage_.settings["bulk_viscosity_linear"].as<double>();
   viscosity_quadratic_ = stage_.settings["bulk_viscosity_quadratic"].as<double>();

@@ -11,28 +11,36 @@
 
 #include <Tpetra_Vector.hpp>
 
+#include "operators/ModelOperators.hpp"
+#include "scene/Scene.hpp"
+
 namespace efg {
 
 using Vector = Tpetra::Vector<>;
 
 class MassDamping {
  public:
-  /// `alpha` in 1/time (0: off); `mass` the lumped mass per dof.
-  MassDamping(double alpha, const Vector& mass);
-  bool active() const { return alpha_ > 0; }
-  double alpha() const { return alpha_; }
+  /// `alpha` per dof in 1/time (0 where undamped: per-part damping); `mass` the lumped mass per
+  /// dof.
+  MassDamping(const Vector& alpha, const Vector& mass);
+  bool active() const { return active_; }
   /// a -= alpha v (the damping force of a state, per unit mass).
   void add_to_acceleration(const Vector& v, Vector& a) const;
   /// Ends a step: `v` holds v_{n+1/2} + dt/2 a_f,n+1 and becomes v_{n+1}; `a` holds a_f,n+1 and
-  /// becomes a_{n+1}.
+  /// becomes a_{n+1} (per dof).
   void end_step(double dt, Vector& v, Vector& a) const;
   /// The work dissipated over a step of length dt from v_old to v_new (collective).
   double work(double dt, const Vector& v_old, const Vector& v_new) const;
 
  private:
-  double alpha_;
+  Vector alpha_;
+  bool active_;
   const Vector& mass_;
-  mutable Vector average_, momentum_;  ///< scratch of work(), allocated once
+  mutable Vector average_, momentum_;  ///< scratch, allocated once
 };
+
+/// The stage's damping per owned dof: `damping` on the particles of the parts `damping_parts`
+/// names (every part when it names none), 0 elsewhere. Throws InputError for an unknown part.
+Vector mass_damping_of(const ModelOperators& ops, const StageSpec& stage);
 
 }  // namespace efg

@@ -86,6 +86,10 @@ SpecPtr stage_spec() {
                     "1/time")
                    .at_least(0),
                "0"),
+           optional_key("damping_parts",
+                        string_list("The parts damping acts on (per-part damping); none named: "
+                                    "every part."),
+                        "[]"),
            optional_key(
                "relaxation_kinetic_ratio",
                real("Dynamic relaxation: the stage ends once its kinetic energy stays at or below "
