@@ -401,9 +401,12 @@ ExplicitSummary ExplicitDriver::run(RunState& state, const StateOutput& output, 
       const double previous = dt_crit;
       try {
         dt_crit = stable_.estimate(state.d);
-      } catch (const NumericalError& e) {
+      } catch (const std::exception& e) {
+        // Every rank takes this handler (a peer's failure too: a PeerFailure caught only by the
+        // stage loop's handler would meet this rank there and then make other collective calls).
         meet_with_current_failure();  // before the collective write (a rank-local failure ends)
         output(state);
+        if (dynamic_cast<const NumericalError*>(&e) == nullptr) throw;  // a peer's: as it is
         std::ostringstream why;
         why << "stage '" << stage_.name << "' at step " << summary.steps << ", t = " << state.time
             << ": " << e.what() << "; the last state is in the results";

@@ -18,6 +18,7 @@
 
 #include "core/Errors.hpp"
 #include "core/Log.hpp"
+#include "parallel/ExitReport.hpp"
 #include "parallel/FaultInjection.hpp"
 #include "parallel/ReproducibleSum.hpp"
 
@@ -214,7 +215,11 @@ std::optional<double> StableTimeStep::krylov_bound(const Teuchos::RCP<Tpetra::Op
     solver.solve();
   } catch (const std::exception& e) {
     // Anasazi's Hermitian Krylov-Schur throws on restart when a nonsymmetric operator gives
-    // complex Ritz values; name the cause instead of passing Tpetra's index message on.
+    // complex Ritz values; name the cause instead of passing Tpetra's index message on. Every
+    // rank must know before the dense fallback's collective products: a failure of this rank
+    // alone (the others still inside the eigensolver) stops at the meeting (the watchdog ends
+    // the run with it; tests/cli/check_fault_injection.py, phase stable_step).
+    meet_with_current_failure();
     failure = std::string("failed (a nonsymmetric stiffness?): ") + e.what();
     return std::nullopt;
   }
