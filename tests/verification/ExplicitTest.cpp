@@ -196,11 +196,25 @@ stages:
   expect_bound(rubber_block("0.45"), 0.05);
 }
 
+// The estimate at rest against the exact dt_crit of the implicit path's K: never above it, and
+// below it by no more than the dense path's 1e-6 safety and 8-digit rounding.
+void expect_exact_dense_step(const std::string& text) {
+  const auto comm = Tpetra::getDefaultComm();
+  const auto model = build_model(comm, parse_scene(text, "dense_step.yaml"));
+  auto ops = std::make_shared<ModelOperators>(model);
+  ExplicitDriver driver(*ops, model.scene.stages.front());
+  Vector d(model.maps.owned_dofs);
+  const double exact = dense_critical_step(model, ops, d, driver.mass());
+  StableTimeStep stable(*ops, driver.mass());
+  const double estimate = stable.estimate(d);
+  EXPECT_LE(estimate, exact * (1 + 1e-12)) << text;
+  EXPECT_GE(estimate, exact * (1 - 2e-6)) << text;
+}
+
 // Models of one and two cells (8 to 24 dofs): the estimate takes the dense path (its Krylov space
 // broke down on the rigid-body modes, exit 1 before; issue 55, item 5) and is the exact dt_crit of
 // the implicit path's K to its 1e-6 safety and 8-digit rounding.
 TEST(Explicit, StableTimeStepOfOneAndTwoCellModelsIsTheDenseEigenvalue) {
-  const auto comm = Tpetra::getDefaultComm();
   for (const char* mesh :
        {"{element: quad4, lower: [0, 0], upper: [1, 1], cells: [1, 1]}",
         "{element: quad4, lower: [0, 0], upper: [2, 1], cells: [2, 1]}",
@@ -213,15 +227,7 @@ materials:
 stages:
   - {name: go, driver: explicit, end_time: 1.0}
 )";
-    const auto model = build_model(comm, parse_scene(text, "tiny.yaml"));
-    auto ops = std::make_shared<ModelOperators>(model);
-    ExplicitDriver driver(*ops, model.scene.stages.front());
-    Vector d(model.maps.owned_dofs);
-    const double exact = dense_critical_step(model, ops, d, driver.mass());
-    StableTimeStep stable(*ops, driver.mass());
-    const double estimate = stable.estimate(d);
-    EXPECT_LE(estimate, exact * (1 + 1e-12)) << mesh;
-    EXPECT_GE(estimate, exact * (1 - 2e-6)) << mesh;
+    expect_exact_dense_step(text);
   }
 }
 
@@ -231,7 +237,7 @@ stages:
 TEST(Explicit, StableTimeStepFallsBackToTheDenseEigenvalueWhereKrylovFails) {
   const auto comm = Tpetra::getDefaultComm();
   if (comm->getSize() > 1) GTEST_SKIP() << "a dense eigenvalue problem on one rank";
-  const auto model = build_model(comm, parse_scene(R"(
+  expect_exact_dense_step(R"(
 mesh:
   generate: {element: quad4, lower: [0, 0], upper: [1, 0.05], cells: [60, 3]}
 parts:
@@ -240,16 +246,7 @@ materials:
   - {name: m, model: linear_elastic, density: 1.0, youngs_modulus: 100.0, poissons_ratio: 0.0}
 stages:
   - {name: wave, driver: explicit, end_time: 0.15}
-)",
-                                                   "bar.yaml"));
-  auto ops = std::make_shared<ModelOperators>(model);
-  ExplicitDriver driver(*ops, model.scene.stages.front());
-  Vector d(model.maps.owned_dofs);
-  const double exact = dense_critical_step(model, ops, d, driver.mass());
-  StableTimeStep stable(*ops, driver.mass());
-  const double estimate = stable.estimate(d);
-  EXPECT_LE(estimate, exact * (1 + 1e-12));
-  EXPECT_GE(estimate, exact * (1 - 2e-6));
+)");
 }
 
 // Transformation supports with their traction term (transformation_traction: true) make the
