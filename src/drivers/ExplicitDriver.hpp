@@ -35,6 +35,10 @@ struct ExplicitSummary {
   /// kinetic energy over that of the internal energy (trapezoids), and their ratio at the end.
   double kinetic_to_internal_mean = 0, kinetic_to_internal_end = 0;
   bool relaxed = false;  ///< ended early by relaxation_kinetic_ratio (dynamic relaxation)
+  /// The stable step at the stage's start, its smallest estimate, and what the first came from
+  /// (StableTimeStep::source: dense, bound, lanczos, converged).
+  double first_dt_crit = 0, smallest_dt_crit = 0;
+  std::string stable_step_source;
 };
 
 class ExplicitDriver {

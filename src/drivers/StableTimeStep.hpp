@@ -1,14 +1,24 @@
 // The critical time step of central differences, dt_crit = 2 / omega_max, with omega_max^2 the
 // largest eigenvalue of M^-1 K (K the tangent of the internal force at the current state).
 //
-// The eigenvalue comes from Anasazi's block Krylov-Schur (a restarted Lanczos method) on the
-// symmetric form A = M^-1/2 K M^-1/2, applied matrix-free, K x = (f_int(d + e x) - f_int(d)) / e
-// with e scaled to the sizes of d and x (unit-free), so no stiffness matrix is built. The bound
-// used is the Ritz value plus its residual norm, theta + ||A y - theta y|| (Parlett, "The
-// Symmetric Eigenvalue Problem", Thm. 4.5.1: an eigenvalue lies within the residual norm of the
-// Ritz value): above the largest eigenvalue once the Ritz value belongs to it, which the
-// every-mode start vector ensures in practice. A power iteration with +5 % (the earlier estimate)
-// fell 2 % short on the 1D wave bar.
+// Three estimates of lambda_max (stage key stable_step, docs/explicit.md "Stable time step"):
+// - bound: a guaranteed upper bound that needs no iteration, from the integration points
+//   (operators/StiffnessBound.hpp: x^T K x <= sum c_I x_I^2, so lambda_max <= max c / m);
+//   1.5-4 times lambda_max, a step 0.5-0.8 times the critical one. Solid parts without mixed
+//   u-p cells or weak supports; elsewhere the sharpened estimate stands in.
+// - sharpened (the default): the largest Ritz value theta of a few Lanczos steps (Anasazi's
+//   block Krylov-Schur stopped after kLanczosSteps products, no convergence needed) times the
+//   safety factor kLanczosSafety, capped by the bound: min(bound, 1.1 theta). theta <= lambda_max
+//   always (a Rayleigh quotient); 24 steps from a start vector with every mode in it reach
+//   0.95-1.0 lambda_max on the explicit scenes of tests/cli/check_stable_step_margin.py.
+// - converged: Krylov-Schur run to convergence, bound theta + ||A y - theta y|| (Parlett, "The
+//   Symmetric Eigenvalue Problem", Thm. 4.5.1: an eigenvalue lies within the residual norm of
+//   the Ritz value), the reference the others are measured against; 10-20 times the products.
+// Models of at most 64 dofs take the exact dense eigenvalue in every method (a Krylov space the
+// size of the problem breaks down on the rigid-body modes of one or two cells).
+//
+// A = M^-1/2 K M^-1/2 is applied matrix-free, K x = (f_int(d + e x) - f_int(d)) / e with e scaled
+// to the sizes of d and x (unit-free), so no stiffness matrix is built.
 //
 // Rigid walls (penalty force k = p m / dt^2 on a particle behind the plane) add p / dt^2 to the
 // particle's omega^2; central differences stay stable while dt^2 (omega_K^2 + p / dt^2) <= 4,
@@ -29,6 +39,11 @@
 
 namespace efg {
 
+/// How lambda_max(M^-1 K) is estimated (see above).
+enum class StableStepMethod { sharpened, bound, converged };
+/// The stage key's value ("sharpened", "bound", "converged").
+StableStepMethod stable_step_method(const std::string& name);
+
 class StableTimeStep {
  public:
   /// `wall_penalty`: the largest share P + 2 D of walls and contacts in the stability condition
@@ -38,13 +53,15 @@ class StableTimeStep {
   using StiffnessProduct = std::function<void(const Vector& x, Vector& y)>;
   using ExtraStiffness = std::function<StiffnessProduct(const Vector& d)>;
   StableTimeStep(const ModelOperators& ops, const Vector& mass_owned, double wall_penalty = 0.0,
-                 ExtraStiffness extra = {});
+                 ExtraStiffness extra = {},
+                 StableStepMethod method = StableStepMethod::sharpened);
   /// Any internal force f(d) (owned dofs; e.g. the shells'), its stiffness probed the same way.
   /// `elastic_probe(on)` switches path-dependent points to their elastic response around each
   /// estimate (the stable step of elastic unloading), if given.
   using InternalForce = std::function<void(const Vector& d, Vector& f)>;
   StableTimeStep(InternalForce internal_force, const Vector& mass_owned,
-                 std::function<void(bool)> elastic_probe = {});
+                 std::function<void(bool)> elastic_probe = {},
+                 StableStepMethod method = StableStepMethod::sharpened);
 
   /// dt_crit at displacement d.
   double estimate(const Vector& d_owned);
@@ -52,6 +69,10 @@ class StableTimeStep {
   double largest_frequency() const { return omega_; }
   double ritz_value() const { return ritz_; }
   double residual_norm() const { return residual_; }
+  /// The guaranteed bound of the last estimate (0 where none exists).
+  double guaranteed_bound() const { return guaranteed_; }
+  /// What the last estimate's lambda_max came from: "dense", "bound", "lanczos", "converged".
+  const std::string& source() const { return source_; }
 
  private:
   /// dt_crit of a bound on the largest eigenvalue of M^-1 K (sets omega_; throws when it is 0
@@ -63,13 +84,26 @@ class StableTimeStep {
   /// with `failure` saying why (no convergence, an exception).
   std::optional<double> krylov_bound(const Teuchos::RCP<Tpetra::Operator<>>& A,
                                      std::string& failure);
+  /// The largest Ritz value of kLanczosSteps Lanczos steps (no convergence asked), or empty
+  /// with `failure` saying why.
+  std::optional<double> lanczos_ritz(const Teuchos::RCP<Tpetra::Operator<>>& A,
+                                     std::string& failure);
+  /// max c / m of the row bounds at d (empty where no bound exists).
+  std::optional<double> row_bound(const Vector& d);
+  /// The converged estimate (Krylov-Schur, the dense fallback for small models), or throws.
+  double converged_step(const Teuchos::RCP<Tpetra::Operator<>>& A, const Map& map);
 
   InternalForce internal_force_;
   std::function<void(bool)> elastic_probe_;  ///< plastic points probed elastically while on
   Vector inv_sqrt_mass_, start_;
   double wall_penalty_;
   ExtraStiffness extra_;
-  double omega_ = 0, ritz_ = 0, residual_ = 0;
+  StableStepMethod method_;
+  /// c_owned = the row bounds of K(d); false where none exists (ModelOperators).
+  std::function<bool(const Vector& d, Vector& c)> row_bounds_;
+  Vector mass_;
+  double omega_ = 0, ritz_ = 0, residual_ = 0, guaranteed_ = 0;
+  std::string source_;
 };
 
 /// Throws NumericalError when a stage's given dt exceeds the stable step dt_crit at its start

@@ -61,6 +61,25 @@ void ModelOperators::bulk_viscosity(const Vector& v_owned, double linear, double
   to_owned(f_overlap_, f_owned);
 }
 
+bool ModelOperators::stiffness_row_bound(const Vector& d_owned, Vector& c_owned) const {
+  if (mixed_) return false;
+  to_overlap(d_owned, d_overlap_);
+  f_overlap_.putScalar(0.0);
+  run_collectively(model_.maps.owned_dofs->getComm(),
+                   [&] { solid_.add_stiffness_row_bound(d_overlap_, f_overlap_); });
+  to_owned(f_overlap_, c_owned);
+  return true;
+}
+
+double ModelOperators::largest_strain_change(const Vector& delta_owned) const {
+  to_overlap(delta_owned, d_overlap_);
+  const double mine = solid_.largest_gradient(d_overlap_);
+  double all = 0;
+  Teuchos::reduceAll(*model_.maps.owned_dofs->getComm(), Teuchos::REDUCE_MAX, mine,
+                     Teuchos::outArg(all));
+  return all;
+}
+
 double ModelOperators::strain_energy(const Vector& d_overlap) const {
   return solid_.strain_energy(d_overlap) + (mixed_ ? mixed_->strain_energy(d_overlap) : 0.0);
 }

@@ -46,6 +46,13 @@ class ModelOperators {
   /// f_owned = the bulk viscosity forces at velocities v (owned; zero without mixed parts).
   void bulk_viscosity(const Vector& v_owned, double linear, double quadratic,
                       Vector& f_owned) const;
+  /// c_owned = the row bounds of K(d) (SolidOperator::add_stiffness_row_bound, summed over the
+  /// particles' points on every rank): lambda_max(M^-1 K) <= max c / m. False (c untouched) when
+  /// the model has mixed u-p parts, whose cell pressures the bound does not cover.
+  bool stiffness_row_bound(const Vector& d_owned, Vector& c_owned) const;
+  /// The largest |grad delta| over every rank's points (delta owned): the strain of a change
+  /// delta of the displacements.
+  double largest_strain_change(const Vector& delta_owned) const;
   /// Stored energy of this rank's points and cells (sum over ranks for the total).
   double strain_energy(const Vector& d_overlap) const;
 

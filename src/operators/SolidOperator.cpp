@@ -8,6 +8,7 @@
 
 #include "core/Errors.hpp"
 #include "materials/ElasticConstants.hpp"
+#include "operators/StiffnessBound.hpp"
 #include "parallel/ReproducibleSum.hpp"
 
 namespace efg {
@@ -172,6 +173,52 @@ void SolidOperator::add_tangent(const Vector& d_overlap, FEMatrix& K) const {
         using Kernel = NodalTangentKernel<decltype(dim)::value, decltype(local)>;
         Kokkos::parallel_for("efg::tangent", nodes, Kernel{device(p), p.tangent, local});
       });
+}
+
+void SolidOperator::add_stiffness_row_bound(const Vector& d_overlap, Vector& c_overlap) const {
+  const auto u = column(d_overlap);
+  auto c = column(c_overlap);
+  for_each_part(
+      [&](auto dim, const auto& points, const PartData& p, const auto& inverted) {
+        constexpr int Dim = decltype(dim)::value;
+        if (p.term.extent(0) != p.slot_count)
+          p.term = DeviceView<double**>("efg::force terms", p.slot_count, Dim);
+        Kokkos::parallel_for(
+            "efg::point_stiffness_bound", points,
+            PointStiffnessBoundKernel<Dim, decltype(u)>{device(p), u, p.term, inverted});
+      },
+      [&](auto dim, const auto& nodes, const PartData& p) {
+        using Kernel = NodalStiffnessBoundKernel<decltype(dim)::value, decltype(c)>;
+        Kokkos::parallel_for("efg::stiffness_bound", nodes, Kernel{device(p), p.term, c});
+      });
+}
+
+double SolidOperator::largest_gradient(const Vector& delta_overlap) const {
+  const auto u = column(delta_overlap);
+  double largest = 0;
+  for (const auto& p : parts_) {
+    const auto points = Kokkos::RangePolicy<ExecSpace>(0, static_cast<int>(p.points));
+    const DevicePoints d = p.device;
+    double part_largest = 0;
+    auto reduce = [&](auto dim) {
+      constexpr int Dim = decltype(dim)::value;
+      Kokkos::parallel_reduce(
+          "efg::largest_gradient", points,
+          KOKKOS_LAMBDA(const int q, double& m) {
+            double H[Dim][Dim];
+            displacement_gradient<Dim>(d, u, q, H);
+            for (int i = 0; i < Dim; ++i)
+              for (int j = 0; j < Dim; ++j) m = fabs(H[i][j]) > m ? fabs(H[i][j]) : m;
+          },
+          Kokkos::Max<double>(part_largest));
+    };
+    if (dim_ == 2)
+      reduce(std::integral_constant<int, 2>());
+    else
+      reduce(std::integral_constant<int, 3>());
+    largest = std::max(largest, part_largest);
+  }
+  return largest;
 }
 
 double SolidOperator::check_small_strain(const Vector& d_overlap, double time) const {

@@ -81,6 +81,9 @@ void write_explicit_stages(std::ostream& o, const std::vector<ExplicitStageRepor
     o << (s ? ", " : "") << "{\"stage\": " << quoted(stages[s].stage) << ", \"steps\": " << st.steps
       << ", \"smallest_dt\": " << number(st.smallest_dt)
       << ", \"largest_dt\": " << number(st.largest_dt)
+      << ", \"first_stable_step\": " << number(st.first_dt_crit)
+      << ", \"smallest_stable_step\": " << number(st.smallest_dt_crit)
+      << ", \"stable_step_source\": " << quoted(st.stable_step_source)
       << ", \"stable_step_estimates\": " << st.dt_estimates
       << ", \"worst_energy_balance_error\": " << number(st.worst_balance_error)
       << ", \"kinetic_to_internal_mean\": " << number(st.kinetic_to_internal_mean)

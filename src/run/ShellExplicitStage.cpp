@@ -66,7 +66,8 @@ ShellExplicitSummary run_shell_explicit_stage(const Model& model, const FlatShel
     constraints.weak_resistance(x, r);
     f.update(1.0, r, 1.0);
   };
-  StableTimeStep stable(internal_force, mass, [&op](bool on) { op.set_elastic_probe(on); });
+  StableTimeStep stable(internal_force, mass, [&op](bool on) { op.set_elastic_probe(on); },
+                        stable_step_method(settings["stable_step"].as<std::string>()));
   ShellExplicitSummary summary;
   summary.dt_crit = stable.estimate(d);
   // rigid tools (contact/ShellRigidContact): their penalty springs reduce the step as walls do

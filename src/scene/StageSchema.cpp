@@ -66,6 +66,18 @@ SpecPtr stage_spec() {
           "explicit",
           {optional_key("dt_scale",
                         real("Factor on the stable time step.", "-").above(0).at_most(1), "0.9"),
+           optional_key(
+               "stable_step",
+               choice("How the largest frequency of M^-1 K (the stable time step 2 / omega_max) is "
+                      "estimated: sharpened (1.1 x the largest Ritz value of 24 Lanczos steps, "
+                      "capped by the bound; 0.85-0.95 of the critical step with dt_scale 0.9), "
+                      "bound (a guaranteed upper bound from the integration points, needing no "
+                      "iteration; 0.5-0.8 of the critical step; solid parts without mixed u-p or "
+                      "weak supports, elsewhere sharpened), converged (the Krylov-Schur "
+                      "eigensolver run to convergence: the reference, 10-20 times the cost). "
+                      "Models of at most 64 dofs take the exact eigenvalue.",
+                      {"sharpened", "bound", "converged"}),
+               "sharpened"),
            optional_key("mass_scale",
                         real("Uniform mass scaling of a quasi-static stage (forming): the lumped "
                              "mass of every particle times this factor, so the stable time step "
@@ -144,10 +156,17 @@ SpecPtr stage_spec() {
            optional_key(
                "dt_update_interval",
                integer("Longest interval, in steps, between re-estimates of the stable time step "
-                       "(the interval doubles from 1 while the estimate holds and "
-                       "halves when it falls by more than 5 %).")
+                       "(a backstop: they follow the deformation, dt_update_strain).")
                    .at_least(1),
-               "100")});
+               "1000"),
+           optional_key("dt_update_strain",
+                        real("The stable time step is re-estimated when the strain since the last "
+                             "estimate (the largest component of the displacement gradient of the "
+                             "change, at any integration point) reaches this value. Linear "
+                             "elastic models keep their first estimate.",
+                             "-")
+                            .above(0),
+                        "0.02")});
 }
 
 }  // namespace efg
