@@ -80,6 +80,14 @@ double ModelOperators::largest_strain_change(const Vector& delta_owned) const {
   return all;
 }
 
+long long ModelOperators::eroded_points() const {
+  const long long mine = solid_.eroded_points();
+  long long all = 0;
+  Teuchos::reduceAll(*model_.maps.owned_dofs->getComm(), Teuchos::REDUCE_SUM, mine,
+                     Teuchos::outArg(all));
+  return all;
+}
+
 double ModelOperators::strain_energy(const Vector& d_overlap) const {
   return solid_.strain_energy(d_overlap) + (mixed_ ? mixed_->strain_energy(d_overlap) : 0.0);
 }

@@ -197,6 +197,7 @@ double SolidOperator::largest_gradient(const Vector& delta_overlap) const {
   const auto u = column(delta_overlap);
   double largest = 0;
   for (const auto& p : parts_) {
+    if (p.small_strain) continue;
     const auto points = Kokkos::RangePolicy<ExecSpace>(0, static_cast<int>(p.points));
     const DevicePoints d = p.device;
     double part_largest = 0;
@@ -205,6 +206,9 @@ double SolidOperator::largest_gradient(const Vector& delta_overlap) const {
       Kokkos::parallel_reduce(
           "efg::largest_gradient", points,
           KOKKOS_LAMBDA(const int q, double& m) {
+            // An eroded point is out of the model: its strain changes no stiffness.
+            if (d.material.plastic && d.material.committed(q, physics::j2_state::eroded) > 0.5)
+              return;
             double H[Dim][Dim];
             displacement_gradient<Dim>(d, u, q, H);
             for (int i = 0; i < Dim; ++i)
@@ -273,6 +277,23 @@ std::vector<SolidOperator::HistoryOutput> SolidOperator::history_output(
     result[i].values.assign(host.data(), host.data() + p.points * history_columns);
   }
   return result;
+}
+
+long long SolidOperator::eroded_points() const {
+  long long total = 0;
+  for (const auto& p : parts_) {
+    if (!p.device.material.plastic) continue;
+    const auto committed = p.device.material.committed;
+    long long part = 0;
+    Kokkos::parallel_reduce(
+        "efg::eroded_points", Kokkos::RangePolicy<ExecSpace>(0, p.points),
+        KOKKOS_LAMBDA(const std::size_t q, long long& n) {
+          if (committed(q, physics::j2_state::eroded) > 0.5) ++n;
+        },
+        part);
+    total += part;
+  }
+  return total;
 }
 
 double SolidOperator::eroded_energy() const {

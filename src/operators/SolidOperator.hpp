@@ -35,9 +35,13 @@ class SolidOperator {
   /// c += the row bounds c_I of K(d) on every dof of I (operators/StiffnessBound.hpp):
   /// x^T K x <= sum c_I x_Ii^2 for every x, so lambda_max(M^-1 K) <= max c / m.
   void add_stiffness_row_bound(const Vector& d_overlap, Vector& c_overlap) const;
-  /// The largest |H_ij| over this rank's points of the displacement field `delta` (overlap): the
-  /// strain a change of the displacements by delta makes, for the stable step's re-estimates.
+  /// The largest |H_ij| of the displacement field `delta` (overlap) over this rank's points of
+  /// finite-strain parts (not eroded): the strain a change of the displacements by delta makes,
+  /// for the stable step's re-estimates (a small-strain part's tangent, plastic points probed
+  /// elastically, does not change with strain).
   double largest_gradient(const Vector& delta_overlap) const;
+  /// Eroded points of this rank.
+  long long eroded_points() const;
   /// The small-strain validity check of this rank's small-strain points: throws NumericalError
   /// naming the point when det(I + grad u) <= 0 (particles passed through each other, which a
   /// small-strain formulation cannot represent) at `time`; returns the largest |sym H|.

@@ -57,8 +57,13 @@ elif kind in ("slide", "stick"):
     else:
         history.check_at_rest(col("u_block_all_x"))
         late = t >= 3.0
+        # The tangential force rings about M g sin at 8 % (standard deviation over t >= 3; the
+        # stick holds the block elastically) and is sampled at the records: the mean of 50
+        # samples carries -0.39 to -0.65 % of aliasing depending on the window (t >= 1 to 3.5;
+        # -0.52 % over t >= 3) and moves with the time step; a slip would take the whole
+        # friction reserve (mu cos - sin = 10 % of the weight).
         check("mean tangential contact force vs M g sin (relative)",
-              col("contact_rest_Fx")[late].mean() / (M * g * math.sin(th)) - 1, 5e-3)
+              col("contact_rest_Fx")[late].mean() / (M * g * math.sin(th)) - 1, 1e-2)
         check("mean normal contact force vs -M g cos (relative)",
               col("contact_rest_Fy")[late].mean() / (-M * g * math.cos(th)) - 1, 5e-3)
         weight = (M + M_base) * g

@@ -66,10 +66,10 @@ efg_cli_test(NAME cli.j2_tension_finite_np2 COMMAND "${EFG_MPIRUN2}|${efg}|run|t
 set_tests_properties(cli.j2_tension_finite_np2 PROPERTIES TIMEOUT 120)
 # Erosion: the plastic zone of the wall impact fails at 5 % plastic strain (check_erosion.py;
 # every step recorded: each particle erodes in the step that takes it past the failure strain).
-# The stable step is re-estimated as the plastic tangent and the erosion change it (7 times; the
-# step grows from 2.8e-4 to 6.1e-4 after the bounce), unlike a linear elastic stage's.
+# The stable step is re-estimated as points erode (the stiffness falls; a small-strain part's
+# elastic probe does not change with strain), unlike a linear elastic stage's.
 efg_cli_test(NAME cli.j2_erosion COMMAND "${efg}|run|tests/scenes/plasticity/plastic_wave_erosion.yaml|-o|${EFG_CLI_TMP}/erosion"
-  EXIT 0 TEXT "stage 'impact' done|at its end, 7 stable-step re-estimates" FILE ${EFG_CLI_TMP}/erosion/plastic_wave_erosion.e)
+  EXIT 0 TEXT "stage 'impact' done|stable-step re-estimates" FILE ${EFG_CLI_TMP}/erosion/plastic_wave_erosion.e)
 add_test(NAME cli.j2_erosion_flags COMMAND /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/check_erosion.py
   ${EFG_CLI_TMP}/erosion/plastic_wave_erosion.e ${EFG_CLI_TMP}/erosion/history.csv 0.05 0.02)
 set_tests_properties(cli.j2_erosion_flags PROPERTIES LABELS cli FIXTURES_REQUIRED erosion)
