@@ -106,47 +106,58 @@ Proximity MeshSurface::proximity(const double* y) const {
   // Farther than the capture depth the nearest facet may not be among those tested: no contact.
   if (!(best <= capture_)) return p;
   const double r[3] = {y[0] - nearest.point[0], y[1] - nearest.point[1], y[2] - nearest.point[2]};
-  if (nearest.interior()) {
-    // Facets' interiors as near as the nearest (a point on the bisector of a corner, inside:
-    // equally deep under two facets): their normals summed give the direction, not whichever
-    // came first (that would tilt the force by the corner's half angle: a polygonal punch
-    // centred on a corner pushed sideways).
-    const double tie = 1e-12 * reach_;
-    double sum[3] = {0, 0, 0};
-    int ties = 0;
-    for (const int* f = begin; f != end; ++f) {
-      if (!in_box(*f) || box_distance(*f) > best + tie) continue;
-      const auto c = closest(*f);
-      if (!c.interior() || distance_to(c) > best + tie) continue;
-      const double* n = pseudo_.face(static_cast<std::size_t>(*f));
-      for (int k = 0; k < 3; ++k) sum[k] += n[k];
-      ++ties;
+  // The sign: the facet's plane in its interior, else the edge's or corner's pseudo-normal.
+  const double* n = nearest.interior() ? pseudo_.face(nearest_facet)
+                    : nearest.feature == Closest::Feature::edge
+                        ? pseudo_.edge(nearest_facet, nearest.local)
+                        : pseudo_.corner(nearest_facet, nearest.local);
+  const double sign = dot(r, n) < 0 ? -1.0 : 1.0;
+  // Other closest points as near as the nearest (y on a medial surface, inside: the bisector of
+  // a polygon's corner, equally deep under its two sides; a point under the edge between two
+  // rows of a tube's facets, equally near two sides' rims): the directions to all of them
+  // summed, not whichever came first (that would tilt the force by the corner's half angle: a
+  // polygonal punch centred on a corner, a tube on its side pushed sideways). Each distinct
+  // point once (an edge or corner is found from every facet that has it).
+  const double tie = 1e-12 * reach_;
+  constexpr int most = 16;
+  double seen[most][3];
+  int distinct = 0;
+  double sum[3] = {0, 0, 0};
+  for (const int* f = begin; f != end && distinct < most; ++f) {
+    if (!in_box(*f) || box_distance(*f) > best + tie) continue;
+    const auto c = closest(*f);
+    if (distance_to(c) > best + tie) continue;
+    bool again = false;
+    for (int i = 0; i < distinct && !again; ++i) {
+      const double d[3] = {c.point[0] - seen[i][0], c.point[1] - seen[i][1],
+                           c.point[2] - seen[i][2]};
+      again = dot(d, d) <= tie * tie;
     }
-    const double* n = pseudo_.face(nearest_facet);
-    if (ties <= 1) {  // the facet's plane (gap and normal as an analytic face)
-      const double* a = &s.corners[3 * per * nearest_facet];
-      const double ra[3] = {y[0] - a[0], y[1] - a[1], y[2] - a[2]};
-      p.gap = dot(ra, n);
-      for (int k = 0; k < 3; ++k) p.normal[k] = n[k];
-      return p;
+    if (again) continue;
+    for (int k = 0; k < 3; ++k) {
+      seen[distinct][k] = c.point[k];
+      // inside a face's interior y - p is along its normal: the sum of the normals
+      sum[k] += c.interior() ? pseudo_.face(static_cast<std::size_t>(*f))[k] * sign * best
+                             : y[k] - c.point[k];
     }
-    p.gap = dot(r, n) < 0 ? -best : best;
-    const double size = std::sqrt(dot(sum, sum));
-    for (int k = 0; k < 3; ++k) p.normal[k] = size > 0 ? sum[k] / size : n[k];
+    ++distinct;
+  }
+  if (nearest.interior() && distinct <= 1) {  // the facet's plane (as an analytic face)
+    const double* a = &s.corners[3 * per * nearest_facet];
+    const double ra[3] = {y[0] - a[0], y[1] - a[1], y[2] - a[2]};
+    p.gap = dot(ra, n);
+    for (int k = 0; k < 3; ++k) p.normal[k] = n[k];
     return p;
   }
-  // An edge or a corner: the distance, signed by the feature's pseudo-normal; the force along
-  // y - p (the distance's gradient: continuous across the facets' edges, outside and inside).
-  const double* pseudo = nearest.feature == Closest::Feature::edge
-                             ? pseudo_.edge(nearest_facet, nearest.local)
-                             : pseudo_.corner(nearest_facet, nearest.local);
-  const double sign = dot(r, pseudo) < 0 ? -1.0 : 1.0;
+  // An edge, a corner or a tie: the distance, signed as above; the force along y - p (the
+  // distance's gradient: continuous across the facets' edges, outside and inside).
   p.gap = sign * best;
-  if (best > 0) {
-    for (int k = 0; k < 3; ++k) p.normal[k] = sign * r[k] / best;
+  const double size = std::sqrt(dot(sum, sum));
+  if (best > 0 && size > 0) {
+    for (int k = 0; k < 3; ++k) p.normal[k] = sign * sum[k] / size;
   } else {
-    const double size = std::sqrt(dot(pseudo, pseudo));
-    for (int k = 0; k < 3; ++k) p.normal[k] = size > 0 ? pseudo[k] / size : 0.0;
+    const double length = std::sqrt(dot(n, n));
+    for (int k = 0; k < 3; ++k) p.normal[k] = length > 0 ? n[k] / length : 0.0;
   }
   return p;
 }
