@@ -87,4 +87,40 @@ RigidSurface tessellated_mapped_cylinder(double r, double h, int n, int layers) 
   return s;
 }
 
+RigidSurface tessellated_wedge(double apex, double l, double w, int fan) {
+  auto s = empty_surface();
+  const double t = l * std::tan(apex / 2.0);
+  const Point v{0, 0, 0}, a1{0, w, 0}, b0{l, 0, t}, b1{l, w, t}, c0{l, 0, -t}, c1{l, w, -t};
+  const Point centroid{2.0 * l / 3.0, w / 2.0, 0.0};
+  // Each triangle turned to face away from the centroid (the prism is convex).
+  const auto outward = [&](const Point& p, const Point& q, const Point& r) {
+    const double u[3] = {q[0] - p[0], q[1] - p[1], q[2] - p[2]};
+    const double x[3] = {r[0] - p[0], r[1] - p[1], r[2] - p[2]};
+    const double n[3] = {u[1] * x[2] - u[2] * x[1], u[2] * x[0] - u[0] * x[2],
+                         u[0] * x[1] - u[1] * x[0]};
+    double out = 0;
+    for (int k = 0; k < 3; ++k) out += n[k] * (p[k] - centroid[k]);
+    if (out > 0)
+      add(s, p, q, r);
+    else
+      add(s, p, r, q);
+  };
+  // The upper side (v, b0, b1, a1): a fan at v over fan points along b0-b1, then (v, b1, a1).
+  std::vector<Point> edge;
+  for (int i = 0; i <= fan; ++i) edge.push_back({l, w * i / fan, t});
+  for (int i = 0; i < fan; ++i) outward(v, edge[i], edge[i + 1]);
+  outward(v, b1, a1);
+  // The back (x = l) shares the fan's points on b0-b1 (no T-junctions): a fan from c0, then
+  // (c0, c1, b1).
+  for (int i = 0; i < fan; ++i) outward(c0, edge[i], edge[i + 1]);
+  outward(c0, c1, b1);
+  // The lower side (v, c0, c1, a1) cut along c0-a1: one triangle at v.
+  outward(v, c0, a1);
+  outward(c0, c1, a1);
+  // The ends.
+  outward(v, b0, c0);
+  outward(a1, b1, c1);
+  return s;
+}
+
 }  // namespace efg::test

@@ -20,3 +20,15 @@ RigidSurface tessellated_sphere(double r, int rings, int segments);
 RigidSurface tessellated_mapped_cylinder(double r, double h, int n, int layers);
 
 }  // namespace efg::test
+
+namespace efg::test {
+
+/// A sharp wedge (a triangular prism, convex): its edge along y from the origin to (0, w, 0),
+/// its two sides opening at `apex` radians towards +x to x = l, its ends at y = 0 and y = w.
+/// At the origin the upper side meets it in a fan of `fan` + 1 triangles, the lower side and
+/// the end in one each: a corner whose equal-weight pseudo-normal points the wrong way for
+/// `fan` > 1 / cos(apex) (Baerentzen & Aanaes 2005, sec. 2). Triangles oriented away from the
+/// prism's centroid.
+RigidSurface tessellated_wedge(double apex, double l, double w, int fan);
+
+}  // namespace efg::test

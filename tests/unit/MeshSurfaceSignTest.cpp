@@ -49,7 +49,8 @@ Point corner(const RigidSurface& s, std::size_t f, int a) {
 }
 
 // The largest angle between a facet's normal and the analytic normal at its corners.
-double largest_facet_angle(const RigidSurface& s, const std::function<Analytic(const Point&)>& shape) {
+double largest_facet_angle(const RigidSurface& s,
+                           const std::function<Analytic(const Point&)>& shape) {
   double largest = 0;
   for (std::size_t f = 0; f < s.count(); ++f) {
     const auto a = corner(s, f, 0), b = corner(s, f, 1), c = corner(s, f, 2);
@@ -194,6 +195,36 @@ TEST(MeshSurfaceSign, CylinderWithMappedDiscEndsAgainstTheAnalyticCylinder) {
   EXPECT_EQ(tally.wrong_sign, 0) << tally.points << " points";
   EXPECT_EQ(tally.far_distance, 0);
   EXPECT_EQ(tally.tilted_normal, 0);
+}
+
+TEST(MeshSurfaceSign, SharpCornerSignedByAngleWeights) {
+  // A 30-degree wedge whose corner at the origin has 9 triangles of its upper side (90 degrees
+  // in all), one of its lower side (90) and one of its end (30). Points off that corner along
+  // the lower side's normal, tilted slightly towards the upper side's and the end's normals,
+  // lie in the corner's Voronoi region outside: their closest point is the corner. With equal
+  // weights the pseudo-normal is 9 n_up + n_low + n_end, and (y - p) . it ~ 1 - 9 cos(30) < 0:
+  // judged inside. The angle-weighted one, pi/2 n_up + pi/2 n_low + pi/6 n_end, signs them
+  // outside (Baerentzen & Aanaes 2005, Theorem 1).
+  const double pi = std::acos(-1.0), apex = pi / 6.0;
+  const auto s = efg::test::tessellated_wedge(apex, 1.0, 1.0, 8);
+  const MeshSurface mesh(std::make_shared<const RigidSurface>(s));
+  const Point up{-std::sin(apex / 2), 0, std::cos(apex / 2)};
+  const Point low{-std::sin(apex / 2), 0, -std::cos(apex / 2)};
+  const Point end{0, -1, 0};
+  int points = 0;
+  for (double d : {0.01, 0.05, 0.2})
+    for (double tilt : {0.05, 0.2, 0.5}) {
+      Point y{};
+      for (int k = 0; k < 3; ++k) y[k] = d * (low[k] + tilt * (up[k] + end[k]));
+      const auto p = mesh.proximity(y.data());
+      EXPECT_GT(p.gap, 0.0) << "outside at (" << y[0] << ", " << y[1] << ", " << y[2] << ")";
+      EXPECT_NEAR(p.gap, norm(y), 1e-12);  // the corner is its closest point
+      // and inside, under the lower side near the corner (closest point on that side)
+      for (int k = 0; k < 3; ++k) y[k] = -d * 0.1 * low[k] + d * 0.5 * (Point{1, 0.5, 0}[k]);
+      EXPECT_LT(mesh.proximity(y.data()).gap, 0.0);
+      points += 2;
+    }
+  EXPECT_EQ(points, 18);
 }
 
 }  // namespace
