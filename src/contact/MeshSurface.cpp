@@ -90,18 +90,49 @@ Proximity MeshSurface::proximity(const double* y) const {
     const double r[3] = {y[0] - c.point[0], y[1] - c.point[1], y[2] - c.point[2]};
     return std::sqrt(dot(r, r));
   };
+  // The nearest closest point, and every distinct closest point as near (y on a medial surface,
+  // inside: the bisector of a polygon's corner, equally deep under its two sides; a point under
+  // the edge between two rows of a tube's facets, equally near two sides' rims): the directions
+  // to all of them are summed below, not whichever came first (that would tilt the force by the
+  // corner's half angle: a polygonal punch centred on a corner, a tube on its side pushed
+  // sideways). Each point once (an edge or corner is found from every facet that has it); one
+  // pass, the list kept to those within `tie` of the nearest so far.
+  struct Near {
+    double point[3];
+    double distance;
+    std::size_t facet;
+    bool interior;
+  };
+  constexpr int most = 16;
+  Near listed[most];
+  int distinct = 0;
+  const double tie = 1e-12 * reach_;
   double best = 1e300;
   Closest nearest;
   std::size_t nearest_facet = 0;
   for (const int* f = begin; f != end; ++f) {
-    if (!in_box(*f) || box_distance(*f) >= best) continue;
+    if (!in_box(*f) || box_distance(*f) > best + tie) continue;
     const auto c = closest(*f);
     const double d = distance_to(c);
+    if (d > best + tie) continue;
+    const auto facet = static_cast<std::size_t>(*f);
     if (d < best) {
       best = d;
       nearest = c;
-      nearest_facet = static_cast<std::size_t>(*f);
+      nearest_facet = facet;
+      int kept = 0;
+      for (int i = 0; i < distinct; ++i)
+        if (listed[i].distance <= best + tie) listed[kept++] = listed[i];
+      distinct = kept;
     }
+    bool again = false;
+    for (int i = 0; i < distinct && !again; ++i) {
+      const double e[3] = {c.point[0] - listed[i].point[0], c.point[1] - listed[i].point[1],
+                           c.point[2] - listed[i].point[2]};
+      again = dot(e, e) <= tie * tie;
+    }
+    if (!again && distinct < most)
+      listed[distinct++] = {{c.point[0], c.point[1], c.point[2]}, d, facet, c.interior()};
   }
   // Farther than the capture depth the nearest facet may not be among those tested: no contact.
   if (!(best <= capture_)) return p;
@@ -112,36 +143,11 @@ Proximity MeshSurface::proximity(const double* y) const {
                         ? pseudo_.edge(nearest_facet, nearest.local)
                         : pseudo_.corner(nearest_facet, nearest.local);
   const double sign = dot(r, n) < 0 ? -1.0 : 1.0;
-  // Other closest points as near as the nearest (y on a medial surface, inside: the bisector of
-  // a polygon's corner, equally deep under its two sides; a point under the edge between two
-  // rows of a tube's facets, equally near two sides' rims): the directions to all of them
-  // summed, not whichever came first (that would tilt the force by the corner's half angle: a
-  // polygonal punch centred on a corner, a tube on its side pushed sideways). Each distinct
-  // point once (an edge or corner is found from every facet that has it).
-  const double tie = 1e-12 * reach_;
-  constexpr int most = 16;
-  double seen[most][3];
-  int distinct = 0;
   double sum[3] = {0, 0, 0};
-  for (const int* f = begin; f != end && distinct < most; ++f) {
-    if (!in_box(*f) || box_distance(*f) > best + tie) continue;
-    const auto c = closest(*f);
-    if (distance_to(c) > best + tie) continue;
-    bool again = false;
-    for (int i = 0; i < distinct && !again; ++i) {
-      const double d[3] = {c.point[0] - seen[i][0], c.point[1] - seen[i][1],
-                           c.point[2] - seen[i][2]};
-      again = dot(d, d) <= tie * tie;
-    }
-    if (again) continue;
-    for (int k = 0; k < 3; ++k) {
-      seen[distinct][k] = c.point[k];
-      // inside a face's interior y - p is along its normal: the sum of the normals
-      sum[k] += c.interior() ? pseudo_.face(static_cast<std::size_t>(*f))[k] * sign * best
-                             : y[k] - c.point[k];
-    }
-    ++distinct;
-  }
+  for (int i = 0; i < distinct; ++i)
+    for (int k = 0; k < 3; ++k)  // in a face's interior y - p is along its normal
+      sum[k] += listed[i].interior ? pseudo_.face(listed[i].facet)[k] * sign * best
+                                   : y[k] - listed[i].point[k];
   if (nearest.interior() && distinct <= 1) {  // the facet's plane (as an analytic face)
     const double* a = &s.corners[3 * per * nearest_facet];
     const double ra[3] = {y[0] - a[0], y[1] - a[1], y[2] - a[2]};
