@@ -227,4 +227,34 @@ TEST(MeshSurfaceSign, SharpCornerSignedByAngleWeights) {
   EXPECT_EQ(points, 18);
 }
 
+TEST(MeshSurfaceSign, ForceDirectionContinuousAcrossFacetEdges) {
+  // Around the mapped-disc cylinder's side at 2 outside its radius, mid-height, in 7,200 steps:
+  // the gap is a distance (1-Lipschitz: it changes by at most the step's length (R + d) dtheta)
+  // and the normal turns smoothly - beside a facet its normal, over an edge (y - p) / |y - p|,
+  // which turns at (R + d) / d times the sweep's rate at distance d from the edge. A normal that
+  // jumped at an edge (the nearest facet's own, say) would turn by the edge's angle at once.
+  const double r = 40.0, h = 10.0, d = 2.0, pi = std::acos(-1.0);
+  const auto s = efg::test::tessellated_mapped_cylinder(r, h, 4, 1);
+  const MeshSurface mesh(std::make_shared<const RigidSurface>(s));
+  const int steps = 7200;
+  const double dtheta = 2.0 * pi / steps;
+  double last_gap = 0, largest_turn = 0, largest_change = 0;
+  Point last{};
+  for (int i = 0; i <= steps; ++i) {
+    const double theta = i * dtheta;
+    const Point y{(r + d) * std::cos(theta), (r + d) * std::sin(theta), h / 2};
+    const auto p = mesh.proximity(y.data());
+    ASSERT_GT(p.gap, 0.0);
+    if (i > 0) {
+      largest_turn = std::max(largest_turn, angle(p.normal, last));
+      largest_change = std::max(largest_change, std::abs(p.gap - last_gap));
+    }
+    last = {p.normal[0], p.normal[1], p.normal[2]};
+    last_gap = p.gap;
+  }
+  EXPECT_LE(largest_change, (r + d) * dtheta * (1 + 1e-9));
+  // at distance >= d from every edge (the gap stays >= d: the polygon is inscribed)
+  EXPECT_LE(largest_turn, (r + d) / d * dtheta * (1 + 1e-6));
+}
+
 }  // namespace
