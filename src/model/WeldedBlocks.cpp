@@ -1,7 +1,9 @@
 #include "model/WeldedBlocks.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <map>
 #include <numeric>
 
 namespace efg {
@@ -31,26 +33,41 @@ BackgroundMesh welded_blocks(const BackgroundMesh& mesh, const std::vector<std::
     extent2 += (hi - lo) * (hi - lo);
   }
   const double weld = tolerance * std::sqrt(extent2);
-  // Sorted along x, each node meets only the ones within `weld` of it in x (a sweep: O(n log n)
-  // for a tool's mesh); a node joins the first (lowest index) of those it meets.
-  std::vector<std::size_t> order(nodes.size());
-  std::iota(order.begin(), order.end(), std::size_t{0});
-  std::sort(order.begin(), order.end(),
-            [&](std::size_t a, std::size_t b) { return x(nodes[a], 0) < x(nodes[b], 0); });
+  // A grid of cells `weld` wide: a node meets only the nodes in its own and the neighbouring
+  // cells (O(n); a sweep along x alone would compare every pair in a plane of a structured
+  // tool), and joins the first of them within `weld` (in node order).
   std::vector<std::size_t> into(nodes.size());
   std::iota(into.begin(), into.end(), std::size_t{0});
-  for (std::size_t i = 0; i < order.size(); ++i)
-    for (std::size_t j = i + 1; j < order.size(); ++j) {
-      const auto a = nodes[order[i]], b = nodes[order[j]];
-      if (x(b, 0) - x(a, 0) > weld) break;
-      double d2 = 0;
-      for (std::size_t k = 0; k < dim; ++k) d2 += (x(a, k) - x(b, k)) * (x(a, k) - x(b, k));
-      if (d2 > weld * weld) continue;
-      const auto low = std::min(into[order[i]], into[order[j]]);
-      into[order[i]] = into[order[j]] = low;
-    }
+  const double cell = weld > 0 ? weld : 1.0;
+  const auto key_of = [&](LocalIndex n, const std::array<long long, 3>& shift) {
+    std::array<long long, 3> key{};
+    for (std::size_t k = 0; k < dim; ++k)
+      key[k] = static_cast<long long>(std::floor(x(n, k) / cell)) + shift[k];
+    return key;
+  };
+  std::map<std::array<long long, 3>, std::vector<std::size_t>> grid;
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    const auto a = nodes[i];
+    bool joined = false;
+    for (long long dx = -1; dx <= 1 && !joined; ++dx)
+      for (long long dy = -1; dy <= 1 && !joined; ++dy)
+        for (long long dz = (dim == 3 ? -1 : 0); dz <= (dim == 3 ? 1 : 0) && !joined; ++dz) {
+          const auto found = grid.find(key_of(a, {dx, dy, dz}));
+          if (found == grid.end()) continue;
+          for (auto j : found->second) {
+            double d2 = 0;
+            for (std::size_t k = 0; k < dim; ++k)
+              d2 += (x(a, k) - x(nodes[j], k)) * (x(a, k) - x(nodes[j], k));
+            if (d2 <= weld * weld) {
+              into[i] = into[j];
+              joined = true;
+              break;
+            }
+          }
+        }
+    grid[key_of(a, {0, 0, 0})].push_back(i);
+  }
   // The welded mesh: one node per kept node, the cells on the nodes they were welded into.
-  for (std::size_t i = 0; i < into.size(); ++i) into[i] = into[into[i]];  // chains of welds
   std::vector<LocalIndex> index(mesh.node_count(), -1), kept_index(nodes.size(), -1);
   BackgroundMesh out;
   out.dimension = mesh.dimension;
