@@ -8,6 +8,7 @@
 #include "core/Errors.hpp"
 #include "discretization/OrientedFacets.hpp"
 #include "geometry/FacetNormal.hpp"
+#include "model/WeldedBlocks.hpp"
 #include "scene/SchemaValidator.hpp"
 
 namespace efg {
@@ -59,7 +60,9 @@ RigidSurface surface_of(const BackgroundMesh& mesh, const std::vector<std::strin
   std::vector<std::string> solid;
   for (const auto& name : blocks)
     if (!is_surface_block(mesh, name)) solid.push_back(name);
-  const auto facets = oriented_boundary_facets(mesh, solid);
+  // Nodes at the same place welded (model/WeldedBlocks.hpp: a tube's seam is no boundary).
+  const auto welded = welded_blocks(mesh, solid);
+  const auto facets = oriented_boundary_facets(welded, solid);
   RigidSurface s;
   s.dim = mesh.dimension;
   s.nodes_per_facet = mesh.dimension == 2 ? 2 : 3;
@@ -67,7 +70,8 @@ RigidSurface surface_of(const BackgroundMesh& mesh, const std::vector<std::strin
   const auto dim = static_cast<std::size_t>(mesh.dimension);
   for (auto n : facets.nodes)
     for (std::size_t k = 0; k < 3; ++k)
-      s.corners.push_back(k < dim ? mesh.coordinates[static_cast<std::size_t>(n) * dim + k] : 0.0);
+      s.corners.push_back(k < dim ? welded.coordinates[static_cast<std::size_t>(n) * dim + k]
+                                  : 0.0);
   // The origin's simplex on each facet, signed by the facet's outward order: 2D (a x b) / 2 with
   // centroid (a + b) / 3 and int x_i x_j = A / 12 (a_i a_j + b_i b_j + s_i s_j), s = a + b; 3D
   // a . (b x c) / 6 with centroid (a + b + c) / 4 and int x_i x_j = V / 20 (a_i a_j + b_i b_j +

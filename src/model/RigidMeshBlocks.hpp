@@ -2,7 +2,7 @@
 // barrier meshed with the model. Their blocks are taken out of the background mesh before
 // anything is discretized - their nodes are no particles, they have no stiffness - and kept as
 // each body's surface (mesh/RigidSurface: the blocks' outward boundary facets,
-// discretization/OrientedFacets), with the cells' volume and centroid by the divergence theorem
+// discretization/OrientedFacets, their nodes at the same place welded first: model/WeldedBlocks), with the cells' volume and centroid by the divergence theorem
 // over those facets (exact for straight-sided cells: the origin's triangles (2D) or tetrahedra
 // (3D) on each facet, signed). A block of surface cells (quad4, tri3 in a 3D mesh: a die's
 // skin) is a one-sided tool: its cells are its facets, their node order (right-hand rule) gives
