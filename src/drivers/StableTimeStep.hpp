@@ -11,6 +11,8 @@
 //   safety factor kLanczosSafety, capped by the bound: min(bound, 1.1 theta). theta <= lambda_max
 //   always (a Rayleigh quotient); 24 steps from a start vector with every mode in it reach
 //   0.95-1.0 lambda_max on the explicit scenes of tests/cli/check_stable_step_margin.py.
+//   Re-estimates in between follow the bound, scaled by the last Lanczos estimate's ratio to it,
+//   while the bound moves by less than 10 % (at most 8 in a row).
 // - converged: Krylov-Schur run to convergence, bound theta + ||A y - theta y|| (Parlett, "The
 //   Symmetric Eigenvalue Problem", Thm. 4.5.1: an eigenvalue lies within the residual norm of
 //   the Ritz value), the reference the others are measured against; 10-20 times the products.
@@ -71,7 +73,8 @@ class StableTimeStep {
   double residual_norm() const { return residual_; }
   /// The guaranteed bound of the last estimate (0 where none exists).
   double guaranteed_bound() const { return guaranteed_; }
-  /// What the last estimate's lambda_max came from: "dense", "bound", "lanczos", "converged".
+  /// What the last estimate's lambda_max came from: "dense", "bound", "lanczos", "tracked
+  /// bound" (the bound times the last Lanczos estimate's ratio to it), "converged".
   const std::string& source() const { return source_; }
 
  private:
@@ -103,6 +106,10 @@ class StableTimeStep {
   std::function<bool(const Vector& d, Vector& c)> row_bounds_;
   Vector mass_;
   double omega_ = 0, ritz_ = 0, residual_ = 0, guaranteed_ = 0;
+  /// The bound at the last Lanczos estimate, that estimate over it, and the re-estimates that
+  /// followed the bound since (sharpened).
+  double lanczos_bound_ = 0, lanczos_ratio_ = 1;
+  int tracked_ = 0;
   std::string source_;
 };
 

@@ -192,6 +192,19 @@ void expect_bound(const std::string& text, double amplitude) {
   StableTimeStep bound(*ops, driver.mass(), 0.0, {}, StableStepMethod::bound);
   bound.estimate(d);
   EXPECT_EQ(bound.source(), "bound");
+  // A re-estimate at d after a Lanczos estimate at rest follows the bound (scaled by the rest
+  // state's Lanczos-to-bound ratio) while the bound moved by less than 10 %: still never above
+  // the exact step at d, and within 10 % of it.
+  if (amplitude > 0) {
+    Vector rest(model.maps.owned_dofs);
+    StableTimeStep tracked(*ops, driver.mass());
+    tracked.estimate(rest);
+    EXPECT_EQ(tracked.source(), "lanczos");
+    const double estimate = tracked.estimate(d);
+    EXPECT_EQ(tracked.source(), "tracked bound");
+    EXPECT_LE(estimate, exact * (1 + 1e-9)) << "tracked " << estimate << ", exact " << exact;
+    EXPECT_GE(estimate, 0.9 * exact) << "tracked " << estimate << ", exact " << exact;
+  }
 }
 
 TEST(Explicit, StableTimeStepNeverExceedsTheDenseEigenvalueBound) {
