@@ -59,6 +59,7 @@ ExplicitDriver::ExplicitDriver(const ModelOperators& ops, const StageSpec& stage
               })
                                  : StableTimeStep::ExtraStiffness{},
               stable_step_method(stage.settings["stable_step"].as<std::string>())),
+      cells_(ops.model()),
       f_ext_(mass_.getMap()),
       f_ext_old_(mass_.getMap()),
       f_wall_(mass_.getMap()),
@@ -161,6 +162,39 @@ void ExplicitDriver::report_energy_balance(const EnergyBalanceCheck& check, cons
       state.balance_error(), step, state.time, energies.str(),
       peak.particle >= 0 ? "the largest kinetic energy is at " + particle_label(peak.particle)
                          : ""));
+}
+
+void ExplicitDriver::check_folds(RunState& state, long long step, const StateOutput& output) {
+  const auto folded = cells_.most_inverted(d_overlap_);
+  if (!folded) return;
+  std::ostringstream where;
+  where << "background cell " << folded->cell << " of part '" << folded->part
+        << "' turned inside out at particle " << folded->particle << " (its corner Jacobian "
+        << folded->current_det << ", " << folded->reference_det << " in the reference) at step "
+        << step << ", t = " << state.time;
+  // A corner turned over as far as it stood (mirrored) or more: particles passed each other.
+  if (folded->ratio() <= -kFoldedShare) {
+    // The folded state is written when the record takes it; a small-strain part's own check
+    // refuses it (every rank alike: its check is collective), and the results end before.
+    bool written = true;
+    try {
+      output(state);
+    } catch (const NumericalError&) {
+      written = false;
+    }
+    throw NumericalError("stage '" + stage_.name + "': particles passed each other: " +
+                         where.str() +
+                         ": the material folded through itself (a crush the particles cannot "
+                         "represent, or a contact that let a part through); " +
+                         (written ? "the last state is in the results"
+                                  : "the results end at the last record before"));
+  }
+  if (!fold_warned_)
+    Log::warning("stage '" + stage_.name + "': " + where.str() +
+                 ": a corner slightly turned over (a held or sticking corner's particles "
+                 "overtaking each other; the stage stops when one is mirrored, its Jacobian at "
+                 "minus its reference value; docs/explicit.md, \"Guards\")");
+  fold_warned_ = true;
 }
 
 void ExplicitDriver::refuse_endless(double span, double dt, double dt_crit) const {
@@ -429,8 +463,8 @@ ExplicitSummary ExplicitDriver::run(RunState& state, const StateOutput& output, 
           output(state);
           if (dynamic_cast<const NumericalError*>(&e) == nullptr) throw;  // a peer's: as it is
           std::ostringstream why;
-          why << "stage '" << stage_.name << "' at step " << summary.steps
-              << ", t = " << state.time << ": " << e.what() << "; the last state is in the results";
+          why << "stage '" << stage_.name << "' at step " << summary.steps << ", t = " << state.time
+              << ": " << e.what() << "; the last state is in the results";
           throw NumericalError(why.str());
         }
         ++summary.dt_estimates;
@@ -477,6 +511,8 @@ ExplicitSummary ExplicitDriver::run(RunState& state, const StateOutput& output, 
               << " (energy from an unaccounted force or a nonsymmetric operator, not the step)";
         throw NumericalError(why.str());
       }
+      // energies() left d in d_overlap_: the background cells in the current configuration.
+      check_folds(state, summary.steps, output);
       if (checked && balance.failed(state)) {
         output(state);
         report_energy_balance(balance, state, summary.steps);

@@ -245,8 +245,7 @@ double StableTimeStep::estimate(const Vector& d_owned) {
   return converged_step(A, map);
 }
 
-double StableTimeStep::converged_step(const Teuchos::RCP<Tpetra::Operator<>>& A,
-                                      const Map& map) {
+double StableTimeStep::converged_step(const Teuchos::RCP<Tpetra::Operator<>>& A, const Map& map) {
   const auto dofs = map.getGlobalNumElements();
   std::string failure;
   source_ = "converged";

@@ -55,8 +55,7 @@ class StableTimeStep {
   using StiffnessProduct = std::function<void(const Vector& x, Vector& y)>;
   using ExtraStiffness = std::function<StiffnessProduct(const Vector& d)>;
   StableTimeStep(const ModelOperators& ops, const Vector& mass_owned, double wall_penalty = 0.0,
-                 ExtraStiffness extra = {},
-                 StableStepMethod method = StableStepMethod::sharpened);
+                 ExtraStiffness extra = {}, StableStepMethod method = StableStepMethod::sharpened);
   /// Any internal force f(d) (owned dofs; e.g. the shells'), its stiffness probed the same way.
   /// `elastic_probe(on)` switches path-dependent points to their elastic response around each
   /// estimate (the stable step of elastic unloading), if given.

@@ -156,4 +156,14 @@ CellGeometry cell_geometry(CellType type, const double* x) {
   return g;
 }
 
+std::vector<double> cell_corner_jacobians(CellType type, const double* x) {
+  const auto corners = reference_corners(type);
+  const auto dim = static_cast<std::size_t>(cell_dimension(type));
+  std::vector<double> det(corners.size() / dim);
+  double point[3];
+  for (std::size_t c = 0; c < det.size(); ++c)
+    det[c] = map_to_cell(type, x, &corners[c * dim], point);
+  return det;
+}
+
 }  // namespace efg

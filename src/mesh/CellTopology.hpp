@@ -38,5 +38,7 @@ struct CellGeometry {
   double min_corner_det = 0.0;  ///< smallest Jacobian determinant over the corners
 };
 CellGeometry cell_geometry(CellType type, const double* node_coords);
+/// The Jacobian determinant of the cell's map at each of its corners, in node order.
+std::vector<double> cell_corner_jacobians(CellType type, const double* node_coords);
 
 }  // namespace efg

@@ -66,8 +66,9 @@ ShellExplicitSummary run_shell_explicit_stage(const Model& model, const FlatShel
     constraints.weak_resistance(x, r);
     f.update(1.0, r, 1.0);
   };
-  StableTimeStep stable(internal_force, mass, [&op](bool on) { op.set_elastic_probe(on); },
-                        stable_step_method(settings["stable_step"].as<std::string>()));
+  StableTimeStep stable(
+      internal_force, mass, [&op](bool on) { op.set_elastic_probe(on); },
+      stable_step_method(settings["stable_step"].as<std::string>()));
   ShellExplicitSummary summary;
   summary.dt_crit = stable.estimate(d);
   // rigid tools (contact/ShellRigidContact): their penalty springs reduce the step as walls do
@@ -232,8 +233,8 @@ ShellExplicitSummary run_shell_explicit_stage(const Model& model, const FlatShel
       auto forces = multipliers.mean_support_forces(supports, t - since);
       if (weak) {  // the nitsche and penalty supports' mean forces since the last record
         for (std::size_t k = 0; k < weak_forces.size(); ++k)
-          forces[k] += t > since && k < weak_impulse.size() ? weak_impulse[k] / (t - since)
-                                                            : weak_forces[k];
+          forces[k] +=
+              t > since && k < weak_impulse.size() ? weak_impulse[k] / (t - since) : weak_forces[k];
         weak_impulse.assign(weak_forces.size(), 0.0);
       }
       if (contact) {  // then 3 per scene rigid body: the contact force on it, then its velocity
@@ -246,7 +247,8 @@ ShellExplicitSummary run_shell_explicit_stage(const Model& model, const FlatShel
     }
     if (last) break;
     multipliers.accumulate_impulse(dt_next);
-    for (std::size_t k = 0; k < weak_impulse.size(); ++k) weak_impulse[k] += weak_forces[k] * dt_next;
+    for (std::size_t k = 0; k < weak_impulse.size(); ++k)
+      weak_impulse[k] += weak_forces[k] * dt_next;
     if (contact) contact->accumulate(dt_next);
     Tpetra::deep_copy(d_old, d);
     d.update(dt_next, v_next, 1.0);
