@@ -131,6 +131,47 @@ std::optional<double> dense_largest_eigenvalue(const Tpetra::Operator<>& A, cons
   return w.back();
 }
 
+// One run of Anasazi's block Krylov-Schur for the largest-magnitude eigenvalue of the symmetric
+// A: its last Ritz values and its converged pairs; empty with `failure` saying why when it threw.
+struct KrylovSchurRun {
+  std::vector<Anasazi::Value<double>> ritz;
+  Anasazi::Eigensolution<double, MultiVector> solution;
+};
+std::optional<KrylovSchurRun> krylov_schur(const Teuchos::RCP<Tpetra::Operator<>>& A,
+                                           const Vector& start, int blocks, int restarts,
+                                           double tolerance, std::string& failure) {
+  auto x0 = Teuchos::rcp(new MultiVector(start, Teuchos::Copy));
+  auto problem =
+      Teuchos::rcp(new Anasazi::BasicEigenproblem<double, MultiVector, Tpetra::Operator<>>(
+          A, Teuchos::RCP<MultiVector>(x0)));
+  problem->setHermitian(true);
+  problem->setNEV(1);
+  problem->setProblem();
+  Teuchos::ParameterList settings;
+  settings.set("Which", "LM");
+  settings.set("Block Size", 1);
+  settings.set("Num Blocks", blocks);
+  settings.set("Maximum Restarts", restarts);
+  settings.set("Convergence Tolerance", tolerance);
+  settings.set("Verbosity", 0);
+  Anasazi::BlockKrylovSchurSolMgr<double, MultiVector, Tpetra::Operator<>> solver(problem,
+                                                                                  settings);
+  try {
+    fault_point("stable_step");
+    solver.solve();
+  } catch (const std::exception& e) {
+    // Anasazi's Hermitian Krylov-Schur throws on restart when a nonsymmetric operator gives
+    // complex Ritz values; name the cause instead of passing Tpetra's index message on. Every
+    // rank must know before a fallback's collective products: a failure of this rank alone
+    // (the others still inside the eigensolver) stops at the meeting (the watchdog ends the run
+    // with it; tests/cli/check_fault_injection.py, phase stable_step).
+    meet_with_current_failure();
+    failure = std::string("failed (a nonsymmetric stiffness?): ") + e.what();
+    return std::nullopt;
+  }
+  return KrylovSchurRun{solver.getRitzValues(), problem->getSolution()};
+}
+
 }  // namespace
 
 StableStepMethod stable_step_method(const std::string& name) {
@@ -275,33 +316,12 @@ double StableTimeStep::dense_step(double largest) {
 
 std::optional<double> StableTimeStep::lanczos_ritz(const Teuchos::RCP<Tpetra::Operator<>>& A,
                                                    std::string& failure) {
-  auto x0 = Teuchos::rcp(new MultiVector(start_, Teuchos::Copy));
-  auto problem =
-      Teuchos::rcp(new Anasazi::BasicEigenproblem<double, MultiVector, Tpetra::Operator<>>(
-          A, Teuchos::RCP<MultiVector>(x0)));
-  problem->setHermitian(true);
-  problem->setNEV(1);
-  problem->setProblem();
-  Teuchos::ParameterList settings;
-  settings.set("Which", "LM");
-  settings.set("Block Size", 1);
-  settings.set("Num Blocks", kLanczosSteps);
-  settings.set("Maximum Restarts", 0);
-  settings.set("Convergence Tolerance", 1e-6);
-  settings.set("Verbosity", 0);
-  Anasazi::BlockKrylovSchurSolMgr<double, MultiVector, Tpetra::Operator<>> solver(problem,
-                                                                                  settings);
-  try {
-    fault_point("stable_step");
-    solver.solve();  // Unconverged is the normal outcome: the Ritz values are what is asked
-  } catch (const std::exception& e) {
-    meet_with_current_failure();  // as in krylov_bound: every rank learns before going on
-    failure = std::string("failed (a nonsymmetric stiffness?): ") + e.what();
-    return std::nullopt;
-  }
+  // kLanczosSteps products, no restart: Unconverged is the normal outcome, the Ritz values are
+  // what is asked.
+  const auto run = krylov_schur(A, start_, kLanczosSteps, 0, 1e-6, failure);
+  if (!run) return std::nullopt;
   double largest = 0;
-  for (const auto& value : solver.getRitzValues())
-    largest = std::max(largest, std::abs(value.realpart));
+  for (const auto& value : run->ritz) largest = std::max(largest, std::abs(value.realpart));
   if (!(largest > 0) || !std::isfinite(largest)) {
     failure = "gave no positive Ritz value";
     return std::nullopt;
@@ -311,36 +331,9 @@ std::optional<double> StableTimeStep::lanczos_ritz(const Teuchos::RCP<Tpetra::Op
 
 std::optional<double> StableTimeStep::krylov_bound(const Teuchos::RCP<Tpetra::Operator<>>& A,
                                                    std::string& failure) {
-  auto x0 = Teuchos::rcp(new MultiVector(start_, Teuchos::Copy));
-  auto problem =
-      Teuchos::rcp(new Anasazi::BasicEigenproblem<double, MultiVector, Tpetra::Operator<>>(
-          A, Teuchos::RCP<MultiVector>(x0)));
-  problem->setHermitian(true);
-  problem->setNEV(1);
-  problem->setProblem();
-  Teuchos::ParameterList settings;
-  settings.set("Which", "LM");
-  settings.set("Block Size", 1);
-  settings.set("Num Blocks", 20);
-  settings.set("Maximum Restarts", 20);
-  settings.set("Convergence Tolerance", 1e-4);
-  settings.set("Verbosity", 0);
-  Anasazi::BlockKrylovSchurSolMgr<double, MultiVector, Tpetra::Operator<>> solver(problem,
-                                                                                  settings);
-  try {
-    fault_point("stable_step");
-    solver.solve();
-  } catch (const std::exception& e) {
-    // Anasazi's Hermitian Krylov-Schur throws on restart when a nonsymmetric operator gives
-    // complex Ritz values; name the cause instead of passing Tpetra's index message on. Every
-    // rank must know before the dense fallback's collective products: a failure of this rank
-    // alone (the others still inside the eigensolver) stops at the meeting (the watchdog ends
-    // the run with it; tests/cli/check_fault_injection.py, phase stable_step).
-    meet_with_current_failure();
-    failure = std::string("failed (a nonsymmetric stiffness?): ") + e.what();
-    return std::nullopt;
-  }
-  const auto& solution = problem->getSolution();
+  const auto run = krylov_schur(A, start_, 20, 20, 1e-4, failure);
+  if (!run) return std::nullopt;
+  const auto& solution = run->solution;
   if (solution.numVecs < 1) {
     failure = "did not converge";
     return std::nullopt;
