@@ -7,6 +7,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "contact/ContactStiffness.hpp"
 #include "core/DeviceArrays.hpp"
 #include "core/Errors.hpp"
 #include "core/Log.hpp"
@@ -105,6 +106,19 @@ std::vector<double> ExplicitDriver::acceleration(double time, double wall_dt, co
   return wall_forces;
 }
 
+double ExplicitDriver::stable_step(const Vector& d) {
+  const double dt_crit = stable_.estimate(d);
+  const double w2 = contact_ ? contact_->material_frequency2() : 0.0;
+  if (!(w2 > 0)) return dt_crit;
+  // StableTimeStep has taken the mass rule's share S: 2 / omega sqrt(1 - S / 4). The material
+  // rule's springs (k_K / m up to w2, fixed by the parts, not by dt) add w2 to omega^2 and their
+  // dampers 4 D sqrt(w2) dt: the positive root of ContactStiffness.hpp's quadratic.
+  const double with_springs = contact::contact_stable_step(stable_.largest_frequency(), w2,
+                                                           largest_wall_penalty(ops_.model().scene),
+                                                           contact_->material_damping());
+  return std::min(dt_crit, with_springs);
+}
+
 bool ExplicitDriver::finite(const RunState& state) const {
   const auto d = state.d.getLocalViewDevice(Tpetra::Access::ReadOnly);
   const auto v = state.v.getLocalViewDevice(Tpetra::Access::ReadOnly);
@@ -184,11 +198,14 @@ ExplicitDriver::StepPlan ExplicitDriver::plan_steps(const Vector& d, double star
   const bool fixed = static_cast<bool>(stage_.settings["dt"]);
   const double fixed_dt = fixed ? stage_.settings["dt"].as<double>() : 0.0;
   StepPlan plan;
-  plan.dt_crit = stable_.estimate(d);
+  plan.dt_crit = stable_step(d);
   plan.dt = fixed ? fixed_dt : scale * plan.dt_crit;
   std::ostringstream o;
   o << "stage '" << stage_.name << "': stable time step " << plan.dt_crit << " (largest frequency "
-    << stable_.largest_frequency() << " rad/time), dt = " << plan.dt;
+    << stable_.largest_frequency() << " rad/time";
+  if (contact_ && contact_->material_frequency2() > 0)
+    o << "; contact springs up to " << std::sqrt(contact_->material_frequency2()) << " rad/time";
+  o << "), dt = " << plan.dt;
   Log::info(o.str());
   // Honest about the default's error: generalized values are not the physical ones.
   for (const auto& bc : ops_.model().scene.boundary_conditions)
@@ -371,6 +388,7 @@ ExplicitSummary ExplicitDriver::run(RunState& state, const StateOutput& output, 
       for (std::size_t c = 0; c < weak.size(); ++c)
         for (std::size_t k = 0; k < 3; ++k) state.reactions[c][k] += weak[c][k];
     }
+    if (contact_) state.contact_penetrations = contact_->take_penetrations();
     output(state);
   };
   if (record_start) record();
@@ -400,7 +418,7 @@ ExplicitSummary ExplicitDriver::run(RunState& state, const StateOutput& output, 
     if (reestimate && summary.steps >= next_estimate) {
       const double previous = dt_crit;
       try {
-        dt_crit = stable_.estimate(state.d);
+        dt_crit = stable_step(state.d);
       } catch (const std::exception& e) {
         // Every rank takes this handler (a peer's failure too: a PeerFailure caught only by the
         // stage loop's handler would meet this rank there and then make other collective calls).
@@ -481,6 +499,7 @@ ExplicitSummary ExplicitDriver::run(RunState& state, const StateOutput& output, 
     progress.update(state.time - start_time);
   }
   progress.finish();
+  if (contact_) summary.contact_penetration = contact_->stage_penetrations();
   if (internal_integral > 0)
     summary.kinetic_to_internal_mean = kinetic_integral / internal_integral;
   if (state.internal > 0) summary.kinetic_to_internal_end = state.kinetic / state.internal;

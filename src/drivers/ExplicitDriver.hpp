@@ -35,6 +35,9 @@ struct ExplicitSummary {
   /// kinetic energy over that of the internal energy (trapezoids), and their ratio at the end.
   double kinetic_to_internal_mean = 0, kinetic_to_internal_end = 0;
   bool relaxed = false;  ///< ended early by relaxation_kinetic_ratio (dynamic relaxation)
+  /// Per scene contact: the deepest particle in its rigid body over the stage, as a fraction of
+  /// its spacing (0 for contacts between parts or not in the stage).
+  std::vector<double> contact_penetration;
 };
 
 class ExplicitDriver {
@@ -62,6 +65,9 @@ class ExplicitDriver {
                                    Vector& a);
 
  private:
+  /// dt_crit at d: the solid's (StableTimeStep, with the mass-rule share of walls and contacts)
+  /// lowered for the contacts' material-rule springs (contact/ContactStiffness.hpp).
+  double stable_step(const Vector& d);
   bool finite(const RunState& state) const;  // collective
   /// "particle N (X = (x, y, z))" of a global particle id, for messages.
   std::string particle_label(long long particle) const;
