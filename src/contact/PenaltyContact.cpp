@@ -85,7 +85,7 @@ PenaltyContact::PenaltyContact(const ModelOperators& ops, const Vector& mass_own
     pair.contact = static_cast<long>(ci);
     pair.penalty = spec.penalty;
     pair.warning = spec.penetration_warning;
-    pair.ignore_initial = spec.ignore_initial_penetration;
+    pair.initial = spec.initial_penetration;
     pair.friction = {spec.static_friction, spec.dynamic_friction, spec.decay};
     pair.damping = spec.damping;
     for (std::size_t p = 0; p < model.parts.size(); ++p) {
@@ -146,7 +146,7 @@ void PenaltyContact::start(const Vector& d_overlap, const std::vector<RigidBodyS
   if (!initial) return;  // a later stage: the contact's penetrations are its own work
   // Particles inside a body at the run's start (contacts; rigid walls as they always were).
   for (auto& pair : pairs_) {
-    if (pair.contact < 0) continue;
+    if (pair.contact < 0 || pair.initial == "push") continue;
     const auto& body = bodies[pair.body];
     const Candidate* worst = nullptr;
     double deepest = 0, count = 0;
@@ -156,7 +156,7 @@ void PenaltyContact::start(const Vector& d_overlap, const std::vector<RigidBodyS
                                      body.displacement.data(), body.rotation[2], body.orientation);
       if (!(-near.gap > contact::kInitialDepthTolerance * c.spacing)) continue;
       count += 1;
-      if (pair.ignore_initial) c.allowance = c.allowance_new = -near.gap;
+      if (pair.initial == "ignore") c.allowance = c.allowance_new = -near.gap;
       if (-near.gap / c.spacing > deepest) {
         deepest = -near.gap / c.spacing;
         worst = &c;
@@ -167,7 +167,7 @@ void PenaltyContact::start(const Vector& d_overlap, const std::vector<RigidBodyS
     Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, 1, mine + 1, all + 1);
     if (all[1] == 0) continue;
     const auto& spec = model_.scene.contacts[static_cast<std::size_t>(pair.contact)];
-    if (pair.ignore_initial) {
+    if (pair.initial == "ignore") {
       std::ostringstream o;
       o << "contact '" << spec.name << "': " << static_cast<long long>(all[1])
         << " particles start inside rigid body '" << spec.rigid_body << "' (the deepest "

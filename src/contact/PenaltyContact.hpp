@@ -96,7 +96,8 @@ class PenaltyContact {
     std::size_t body = 0;
     long contact = -1;  ///< index in scene.contacts; -1 for a rigid wall
     double penalty = 0, damping = 0, warning = 0;
-    bool ignore_initial = false, warned = false;
+    std::string initial = "stop";  ///< initial_penetration: stop | ignore | push
+    bool warned = false;
     double peak = 0, stage_peak = 0;  ///< deepest fraction since the last take, over the stage
     contact::Friction friction;
     std::array<double, 3> body_u_old{}, body_rotation_old{};

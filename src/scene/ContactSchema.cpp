@@ -144,8 +144,11 @@ SpecPtr contact_spec() {
                        "run's start. stop: the run stops (exit 3) naming the body, the deepest "
                        "particle and its depth; ignore: each such particle's initial depth is "
                        "taken as its zero, the contact pushes only beyond it and the allowance "
-                       "shrinks as the particle comes out (LS-DYNA's IGNORE = 1).",
-                       {"stop", "ignore"}),
+                       "shrinks as the particle comes out (LS-DYNA's IGNORE = 1); push: the "
+                       "penalty pushes the whole depth out from the first step (a deliberate "
+                       "preload, e.g. a roll set biting into a strip; the spring's energy "
+                       "k depth^2 / 2 enters at once).",
+                       {"stop", "ignore", "push"}),
                 "stop")
       .optional("stages",
                 string_list("Stages the contact acts in (names of stages); every stage when "

@@ -227,8 +227,9 @@ struct ContactSpec {
   /// its spacing.
   double penetration_warning = 0.2;
   /// Explicit stages, rigid bodies: a particle inside the body at the run's start stops it
-  /// (false) or has that overlap ignored (true, LS-DYNA's IGNORE).
-  bool ignore_initial_penetration = false;
+  /// (stop), has that overlap ignored (ignore, LS-DYNA's IGNORE) or pushed out by the penalty
+  /// from the first step (push: a deliberate preload).
+  std::string initial_penetration = "stop";
   double static_friction = 0, dynamic_friction = 0, decay = 0;
   double damping = 0;             ///< normal viscous damping, fraction of critical per particle
   double implicit_penalty = 100;  ///< implicit stages: beta = implicit_penalty x E / h
