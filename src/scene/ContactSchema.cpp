@@ -120,11 +120,13 @@ SpecPtr contact_spec() {
                     .at_most(1),
                 "0.1")
       .optional("penalty_scale",
-                real("Rigid bodies, explicit stages: material rule of the normal stiffness per "
-                     "surface particle, k = penalty_scale x K A^2 / V with V = A h, i.e. "
+                real("Rigid bodies, explicit stages, solid parts (shells keep the mass rule): "
+                     "material rule of the normal stiffness per surface particle, "
+                     "k = penalty_scale x K A^2 / V with V = A h, i.e. "
                      "penalty_scale x K A / h (K = E / (3 (1 - 2 nu)) the bulk modulus of the "
                      "particle's part, E / (2 (1 - nu)) in plane stress; A its share of the "
-                     "part's boundary, x thickness in 2D; h its boundary spacing): LS-DYNA's "
+                     "part's boundary facing the body, x thickness in 2D; h its boundary "
+                     "spacing): LS-DYNA's "
                      "SLSFAC x K A^2 / V. A pressure p then sinks a particle by p h / "
                      "(penalty_scale K), 1/penalty_scale of the strain p / K over one spacing. "
                      "The stable step is lowered to keep it stable (docs/contact.md). 0: the "
