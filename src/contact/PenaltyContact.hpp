@@ -48,8 +48,7 @@ class PenaltyContact {
   /// `initial` (the run's first contact stage: the bodies at their scene places): particles
   /// inside a body stop the run (NumericalError naming body, particle and depth) or, with
   /// initial_penetration: ignore, have their depth taken as zero. Collective.
-  void start(const Vector& d_overlap, const std::vector<RigidBodyState>& bodies, bool initial,
-             double time);
+  void start(const Vector& d_overlap, const std::vector<RigidBodyState>& bodies, bool initial);
   /// Adds the contact forces at d to f_overlap and writes each body's contact force (summed over
   /// ranks) into bodies[b].force. Collective. Throws NumericalError when a free body is too
   /// light for its contact stiffness.
@@ -103,6 +102,9 @@ class PenaltyContact {
     std::array<double, 3> body_u_old{}, body_rotation_old{};
     std::vector<Candidate> candidates;
   };
+  /// At the run's start: particles inside a body stop the run or get their allowance
+  /// (contact/InitialOverlaps.cpp). Collective.
+  void initial_overlaps(const std::vector<RigidBodyState>& bodies);
   /// The slip of candidate c against pair's body over the step (contact/PenaltyForce.hpp).
   void slip(const Pair& pair, const Candidate& c, const std::vector<RigidBodyState>& bodies,
             double* s) const;

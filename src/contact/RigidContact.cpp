@@ -24,7 +24,7 @@ void RigidContact::begin(const std::vector<RigidBodyState>& carried, double time
   states_ = initial ? bodies_.initial_states(time) : carried;
   previous_ = states_;
   step_end_ = time;
-  contact_.start(d_overlap, states_, initial, time);
+  contact_.start(d_overlap, states_, initial);
   if (surfaces_) surfaces_->start(d_overlap);
 }
 
