@@ -19,7 +19,8 @@
 
 namespace efg {
 namespace {
-// The bulk modulus of part p's material (contact/ContactStiffness.hpp).
+// The bulk modulus of part p's material (contact/ContactStiffness.hpp); with a graded Young's
+// modulus its largest value over the part (scene.materials[].constants, set by build_model).
 double part_bulk_modulus(const Model& model, std::size_t p) {
   const auto& part = *model.parts[p].part;
   const auto& k = model.scene.find_material(part.material)->constants;
