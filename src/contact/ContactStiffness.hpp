@@ -10,14 +10,18 @@
 // by delta = p A / k_K = p h / (scale K): delta / h = p / (scale K), independent of the mesh.
 //
 // Stability (central differences, Belytschko, Liu and Moran, "Nonlinear Finite Elements",
-// sec. 6.3): the spring adds k / m to a particle's omega^2 and its damper c = 2 D sqrt(k m)
-// (lagged velocity) 2 c dt / m to omega^2 dt^2, so dt^2 omega_K^2 + P + 4 D sqrt(P) <= 4 with
-// P = k dt^2 / m. With k <= k_K + k_m: P <= w^2 dt^2 + p, w^2 = max_J k_K / m_J, and
-// sqrt(P) <= w dt + sqrt(p), so it suffices that
-//   (omega_K^2 + w^2) dt^2 + 4 D w dt - (4 - S) <= 0,   S = p + 4 D sqrt(p)
-// (S the mass rule's share, contact_stability_share; omega_K^2 + w^2 bounds the largest
-// eigenvalue of the sum by Weyl's inequality): dt_crit is that quadratic's positive root, which
-// is 2 / omega_K sqrt(1 - S / 4) at w = 0. A stiffer contact lowers the step.
+// sec. 6.3): the springs k_K are fixed by the parts, not by dt, so they enter the eigenvalue
+// problem of the stable step itself: omega^2 the largest eigenvalue of M^-1 (K + K_c),
+// K_c = sum_J k_J,max phi_J phi_J^T I (drivers/ExplicitDriver::extra_stiffness; k_J,max with the
+// largest facing area, and isotropic, bound the spring k n n^T along any normal). The mass rule
+// adds P = penalty along with its damper (share S = penalty + 4 D sqrt(penalty)), and the
+// material springs' dampers c = 2 D sqrt(k m) (lagged velocity) add 2 c dt / m <= 4 D w dt,
+// w^2 = max_J k_J,max / m_J, so the step solves
+//   omega^2 dt^2 + 4 D w dt - (4 - S) <= 0,
+// i.e. 2 / omega sqrt(1 - S / 4) without dampers. A stiffer contact lowers the step. (A bound
+// omega_K^2 + w^2 on the eigenvalue, tried first, is no bound: the springs act on overlapping
+// shape-function rows, and the foam block's eigenvalue with them, 6203^2, exceeded
+// 4352^2 + 3356^2.)
 #pragma once
 
 #include <cmath>
@@ -35,14 +39,13 @@ inline double material_stiffness(double scale, double K, double area, double spa
   return area > 0 && spacing > 0 ? scale * K * area / spacing : 0.0;
 }
 
-/// The stable step with contact springs: the positive root of (omega^2 + w2) dt^2 + 4 D sqrt(w2)
-/// dt - (4 - share) = 0 (above); omega the solid's largest frequency, w2 the largest k_K / m,
-/// share the mass rule's S, damping D.
-inline double contact_stable_step(double omega, double w2, double share, double damping) {
-  const double a = omega * omega + w2, b = 4.0 * damping * std::sqrt(w2);
+/// The positive root of omega2 dt^2 + damper dt - (4 - share) = 0: the stable step of a system
+/// whose largest omega^2 is omega2, with a lagged damper adding `damper` dt (4 D w) and the mass
+/// rule's share S.
+inline double damped_stable_step(double omega2, double damper, double share) {
   const double c = 4.0 - share;
-  if (!(a > 0) || !(c > 0)) return 0.0;
-  return (-b + std::sqrt(b * b + 4.0 * a * c)) / (2.0 * a);
+  if (!(omega2 > 0) || !(c > 0)) return 0.0;
+  return (-damper + std::sqrt(damper * damper + 4.0 * omega2 * c)) / (2.0 * omega2);
 }
 
 }  // namespace efg::contact

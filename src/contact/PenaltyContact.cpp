@@ -272,6 +272,21 @@ void PenaltyContact::commit(const std::vector<RigidBodyState>& bodies) {
   }
 }
 
+void PenaltyContact::add_spring_stiffness(const Vector& x_overlap, Vector& y_overlap) const {
+  const auto udim = static_cast<std::size_t>(dim_);
+  const auto x = x_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
+  auto y = y_overlap.getLocalViewHost(Tpetra::Access::ReadWrite);
+  for (const auto& pair : pairs_)
+    for (const auto& c : pair.candidates) {
+      if (!(c.k_per_area > 0)) continue;
+      const double k = c.k_per_area * contact::largest_facing_area(c.sides);
+      const auto at = c.row.position(x, udim);  // X + sum_I phi_I x_I
+      double F[3] = {0, 0, 0};
+      for (std::size_t i = 0; i < udim; ++i) F[i] = k * (at[i] - c.row.X[i]);
+      c.row.spread(F, udim, y);
+    }
+}
+
 std::vector<double> PenaltyContact::take_penetrations() {
   std::vector<double> out(model_.scene.contacts.size(), 0.0);
   for (auto& pair : pairs_)

@@ -69,6 +69,11 @@ class PenaltyContact {
   /// and the damping of that contact; equal on every rank.
   double material_frequency2() const { return material_w2_; }
   double material_damping() const { return material_damping_; }
+  /// y += K_c x: the material rule's springs as a stiffness on the generalized dofs (overlap
+  /// vectors), each k_K,max I on its particle's position sum_I phi_I x_I (k n n^T is bounded by
+  /// it along any normal): the stable step's eigenvalue problem takes them exactly
+  /// (drivers/ExplicitDriver). Local; no communication.
+  void add_spring_stiffness(const Vector& x_overlap, Vector& y_overlap) const;
   /// Per scene contact (scene order; 0 for contacts between parts or not in this stage): the
   /// deepest particle as a fraction of its spacing since the last call (then reset), and over the
   /// stage.

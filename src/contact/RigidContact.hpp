@@ -45,6 +45,10 @@ class RigidContact {
   /// The material rule's largest k / m and its contact's damping (ContactStiffness.hpp).
   double material_frequency2() const { return contact_.material_frequency2(); }
   double material_damping() const { return contact_.material_damping(); }
+  /// y += K_c x of the material rule's springs (overlap vectors; PenaltyContact).
+  void add_spring_stiffness(const Vector& x_overlap, Vector& y_overlap) const {
+    contact_.add_spring_stiffness(x_overlap, y_overlap);
+  }
   /// Per scene contact: the deepest particle over its spacing since the last call, over the stage.
   std::vector<double> take_penetrations() { return contact_.take_penetrations(); }
   std::vector<double> stage_penetrations() const { return contact_.stage_penetrations(); }

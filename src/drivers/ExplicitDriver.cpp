@@ -54,11 +54,7 @@ ExplicitDriver::ExplicitDriver(const ModelOperators& ops, const StageSpec& stage
                    : nullptr),
       motion_(ops.model(), stage.name),
       supports_(ops, stage.name, stage.settings["transformation_traction"].as<bool>()),
-      stable_(ops, mass_, largest_wall_penalty(ops.model().scene),
-              supports_.active() ? StableTimeStep::ExtraStiffness([this](const Vector& d) {
-                return supports_.stiffness_at(d);
-              })
-                                 : StableTimeStep::ExtraStiffness{}),
+      stable_(ops, mass_, largest_wall_penalty(ops.model().scene), extra_stiffness()),
       f_ext_(mass_.getMap()),
       f_ext_old_(mass_.getMap()),
       f_wall_(mass_.getMap()),
@@ -75,7 +71,10 @@ ExplicitDriver::ExplicitDriver(const ModelOperators& ops, const StageSpec& stage
       previous_d_(mass_.getMap()),
       previous_v_(mass_.getMap()),
       previous_a_(mass_.getMap()),
-      damping_(mass_damping_of(ops, stage), mass_) {
+      damping_(mass_damping_of(ops, stage), mass_),
+      spring_x_(ops.model().maps.overlap_dofs),
+      spring_y_(ops.model().maps.overlap_dofs),
+      spring_owned_(mass_.getMap()) {
   inverse_mass_.reciprocal(mass_);
   viscosity_linear_ = stage_.settings["bulk_viscosity_linear"].as<double>();
   viscosity_quadratic_ = stage_.settings["bulk_viscosity_quadratic"].as<double>();
@@ -106,17 +105,35 @@ std::vector<double> ExplicitDriver::acceleration(double time, double wall_dt, co
   return wall_forces;
 }
 
+StableTimeStep::ExtraStiffness ExplicitDriver::extra_stiffness() {
+  const bool springs = contact_ && contact_->material_frequency2() > 0;
+  if (!supports_.active() && !springs) return {};
+  return [this, springs](const Vector& d) {
+    auto weak = supports_.active() ? supports_.stiffness_at(d) : StableTimeStep::StiffnessProduct{};
+    return StableTimeStep::StiffnessProduct([this, weak, springs](const Vector& x, Vector& y) {
+      if (weak) weak(x, y);
+      if (!springs) return;
+      ops_.to_overlap(x, spring_x_);
+      spring_y_.putScalar(0.0);
+      contact_->add_spring_stiffness(spring_x_, spring_y_);
+      ops_.to_owned(spring_y_, spring_owned_);
+      y.update(1.0, spring_owned_, 1.0);
+    });
+  };
+}
+
 double ExplicitDriver::stable_step(const Vector& d) {
+  // StableTimeStep's eigenvalue has the material rule's springs in it (extra_stiffness: k_K
+  // fixed by the parts, not by dt) and it takes the mass rule's share S: 2 / omega sqrt(1 -
+  // S / 4). The springs' dampers add 4 D w dt (w^2 the largest k_K / m): the positive root of
+  // omega^2 dt^2 + 4 D w dt = 4 - S (contact/ContactStiffness.hpp).
   const double dt_crit = stable_.estimate(d);
   const double w2 = contact_ ? contact_->material_frequency2() : 0.0;
-  if (!(w2 > 0)) return dt_crit;
-  // StableTimeStep has taken the mass rule's share S: 2 / omega sqrt(1 - S / 4). The material
-  // rule's springs (k_K / m up to w2, fixed by the parts, not by dt) add w2 to omega^2 and their
-  // dampers 4 D sqrt(w2) dt: the positive root of ContactStiffness.hpp's quadratic.
-  const double with_springs = contact::contact_stable_step(stable_.largest_frequency(), w2,
-                                                           largest_wall_penalty(ops_.model().scene),
-                                                           contact_->material_damping());
-  return std::min(dt_crit, with_springs);
+  const double damping = contact_ ? contact_->material_damping() : 0.0;
+  if (!(w2 > 0) || !(damping > 0)) return dt_crit;
+  const double omega = stable_.largest_frequency();
+  return std::min(dt_crit, contact::damped_stable_step(omega * omega, 4.0 * damping * std::sqrt(w2),
+                                                       largest_wall_penalty(ops_.model().scene)));
 }
 
 bool ExplicitDriver::finite(const RunState& state) const {
@@ -204,7 +221,8 @@ ExplicitDriver::StepPlan ExplicitDriver::plan_steps(const Vector& d, double star
   o << "stage '" << stage_.name << "': stable time step " << plan.dt_crit << " (largest frequency "
     << stable_.largest_frequency() << " rad/time";
   if (contact_ && contact_->material_frequency2() > 0)
-    o << "; contact springs up to " << std::sqrt(contact_->material_frequency2()) << " rad/time";
+    o << ", contact springs included: alone up to " << std::sqrt(contact_->material_frequency2())
+      << " rad/time";
   o << "), dt = " << plan.dt;
   Log::info(o.str());
   // Honest about the default's error: generalized values are not the physical ones.

@@ -65,9 +65,13 @@ class ExplicitDriver {
                                    Vector& a);
 
  private:
-  /// dt_crit at d: the solid's (StableTimeStep, with the mass-rule share of walls and contacts)
-  /// lowered for the contacts' material-rule springs (contact/ContactStiffness.hpp).
+  /// dt_crit at d: StableTimeStep's, the eigenvalue of M^-1 (K + K_c) with the contacts'
+  /// material-rule springs K_c in it and the mass-rule share of walls and contacts, lowered for
+  /// the springs' dampers (contact/ContactStiffness.hpp).
   double stable_step(const Vector& d);
+  /// The stiffness besides the solid's for StableTimeStep: the weak supports' and the contact
+  /// springs' (empty without either).
+  StableTimeStep::ExtraStiffness extra_stiffness();
   bool finite(const RunState& state) const;  // collective
   /// "particle N (X = (x, y, z))" of a global particle id, for messages.
   std::string particle_label(long long particle) const;
@@ -100,7 +104,8 @@ class ExplicitDriver {
   double viscosity_linear_ = 0, viscosity_quadratic_ = 0;  ///< the stage's Q2, Q1
   Vector f_support_, f_support_old_;  ///< forces of the prescribed motions (their work is external)
   Vector delta_, v_half_, previous_d_, previous_v_, previous_a_;  ///< one step's scratch
-  MassDamping damping_;  ///< the stage's mass-proportional damping (off: 0)
+  MassDamping damping_;                        ///< the stage's mass-proportional damping (off: 0)
+  Vector spring_x_, spring_y_, spring_owned_;  ///< scratch of the contact springs' product
 };
 
 }  // namespace efg

@@ -1,8 +1,8 @@
 // The explicit contact's material-rule stiffness (contact/ContactStiffness.hpp,
 // contact/FacingArea.hpp): the bulk moduli by hand, the stable step with contact springs against
 // central differences run on a spring (the step it gives is the edge of stability: 1 % below
-// stays bounded, 1 % above grows), its reduction to 2 / omega sqrt(1 - S / 4) without the
-// material springs, and the facing area of a block's corner particle.
+// stays bounded, 1 % above grows, with and without the lagged damper), its reduction to
+// 2 / omega sqrt(1 - S / 4) without dampers, and the facing area of a block's corner particle.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -12,7 +12,7 @@
 
 namespace {
 
-using efg::contact::contact_stable_step;
+using efg::contact::damped_stable_step;
 
 TEST(ContactStiffness, BulkModulusByHand) {
   EXPECT_NEAR(efg::contact::bulk_modulus(1.0, 0.3, false), 1.0 / 1.2, 1e-15);
@@ -46,21 +46,21 @@ double largest_amplitude(double omega2, double w2, double damping, double dt, in
 TEST(ContactStiffness, StableStepIsTheEdgeOfStability) {
   // A solid mode omega^2 = 9 and a contact spring k / m = 16 on the same mass: undamped, the
   // sum's frequency is 5 and central differences hold up to dt = 2 / 5 exactly.
-  const double dt = contact_stable_step(3.0, 16.0, 0.0, 0.0);
+  const double dt = damped_stable_step(9.0 + 16.0, 0.0, 0.0);
   EXPECT_NEAR(dt, 0.4, 1e-14);
   EXPECT_LT(largest_amplitude(9.0, 16.0, 0.0, 0.99 * dt, 2000), 1.5);
   EXPECT_GT(largest_amplitude(9.0, 16.0, 0.0, 1.01 * dt, 2000), 1e3);
   // With a damper the root of (omega^2 + w^2) dt^2 + 4 D w dt = 4 is smaller and still stable.
-  const double damped = contact_stable_step(3.0, 16.0, 0.0, 0.2);
+  const double damped = damped_stable_step(25.0, 4.0 * 0.2 * 4.0, 0.0);
   EXPECT_LT(damped, dt);
   EXPECT_NEAR(25.0 * damped * damped + 4.0 * 0.2 * 4.0 * damped, 4.0, 1e-12);
   EXPECT_LT(largest_amplitude(9.0, 16.0, 0.2, 0.99 * damped, 2000), 1.5);
 }
 
 TEST(ContactStiffness, WithoutMaterialSpringsTheMassRuleAlone) {
-  // w = 0: 2 / omega sqrt(1 - S / 4), the walls' and the mass rule's reduction.
+  // No damper: 2 / omega sqrt(1 - S / 4), the walls' and the mass rule's reduction.
   const double S = 0.1 + 4.0 * 0.3 * std::sqrt(0.1);
-  EXPECT_NEAR(contact_stable_step(7.0, 0.0, S, 0.3), 2.0 / 7.0 * std::sqrt(1.0 - S / 4.0), 1e-15);
+  EXPECT_NEAR(damped_stable_step(49.0, 0.0, S), 2.0 / 7.0 * std::sqrt(1.0 - S / 4.0), 1e-15);
 }
 
 TEST(ContactStiffness, FacingAreaOfACornerParticle) {
