@@ -112,9 +112,9 @@ int main(int argc, char** argv) {
                  [&] { return surfaces.candidate_count(); },
                  [&] { return surfaces.active_count(); }};
     } else {
-      rigid.start(d_overlap, states);
+      rigid.start(d_overlap, states, false);
       contact = {[&](const efg::Vector& x, efg::Vector& y) {
-                   rigid.add_forces(x, 1e-3, states, y);
+                   rigid.add_forces(x, 1e-3, 0.0, states, y);
                    rigid.commit(states);
                  },
                  [&] { return rigid.candidate_count(); }, [&] { return rigid.active_count(); }};

@@ -4,10 +4,11 @@
 // node set. A candidate is an owned particle J on the boundary of a named part; its physical
 // position is x_J = X_J + sum_I phi_I(X_J) d_I (shape functions do not interpolate). When x_J is
 // inside the body (gap g < 0 along the outward normal n):
-//   normal force    F_n = max(0, k (-g) - c v_n) n,   k = penalty x m_J / dt^2 (m_J the lumped
-//                   mass), c = 2 damping sqrt(k m_J) a viscous damping on the normal approach
-//                   speed v_n over the last step (never pulling); the stable step is reduced by
-//                   sqrt(1 - (penalty + 4 damping sqrt(penalty)) / 4) (scene/ContactInput.hpp);
+//   normal force    F_n = max(0, k (-g) - c v_n) n,   k the larger of penalty x m_J / dt^2 (m_J
+//                   the lumped mass) and, with a rigid body, penalty_scale x K A_J / h_J (the
+//                   part's bulk modulus; contact/ContactStiffness.hpp), c = 2 damping sqrt(k m_J)
+//                   a viscous damping on the normal approach speed v_n over the last step (never
+//                   pulling); the stable step is lowered for both (ContactStiffness.hpp);
 //   friction        the elastic-slip return map of contact/CoulombFriction.hpp on the slip
 //                   increment of the particle relative to the body over the step.
 // The force F = F_n + F_t acts on the particle through its shape-function row (ParticleRow)
@@ -15,6 +16,11 @@
 // momentum of particles plus free bodies is conserved to round-off. The friction state is
 // committed when the step is accepted. Search: with analytic bodies, every candidate is tested
 // each step, O(1) per particle (contact between deformable parts will need bins).
+// Watched (contacts with rigid bodies; contact/PenetrationChecks.hpp): the deepest particle as a
+// fraction of its spacing (history, report, a warning once above penetration_warning); a body
+// that moves more than half a spacing against a part it is near in one step stops the run
+// (tunnelling: the penalty cannot catch it); particles inside the body at the run's start stop
+// it, or with initial_penetration: ignore their initial depth is their zero.
 #pragma once
 
 #include <array>
@@ -22,6 +28,7 @@
 #include <vector>
 
 #include "contact/CoulombFriction.hpp"
+#include "contact/FacingArea.hpp"
 #include "contact/ParticleRow.hpp"
 #include "contact/RigidBodies.hpp"
 #include "operators/ModelOperators.hpp"
@@ -38,12 +45,18 @@ class PenaltyContact {
   static double largest_share(const Scene& scene);
 
   /// Sets the friction reference (positions, body displacements) to the state at a stage start.
-  void start(const Vector& d_overlap, const std::vector<RigidBodyState>& bodies);
+  /// `initial` (the run's first contact stage: the bodies at their scene places): particles
+  /// inside a body stop the run (NumericalError naming body, particle and depth) or, with
+  /// initial_penetration: ignore, have their depth taken as zero. Collective.
+  void start(const Vector& d_overlap, const std::vector<RigidBodyState>& bodies, bool initial);
   /// Adds the contact forces at d to f_overlap and writes each body's contact force (summed over
   /// ranks) into bodies[b].force. Collective. Throws NumericalError when a free body is too
   /// light for its contact stiffness.
-  void add_forces(const Vector& d_overlap, double dt, std::vector<RigidBodyState>& bodies,
-                  Vector& f_overlap);
+  /// Throws NumericalError when a body passes more than half a spacing against a part it is
+  /// near in one step (tunnelling); warns once per stage when a contact's deepest particle
+  /// passes penetration_warning (`time`: the evaluation's, for the message).
+  void add_forces(const Vector& d_overlap, double dt, double time,
+                  std::vector<RigidBodyState>& bodies, Vector& f_overlap);
   /// The step is accepted: the friction state of the last evaluation becomes the reference.
   void commit(const std::vector<RigidBodyState>& bodies);
   /// Particles in contact at the last evaluation, summed over ranks (collective).
@@ -52,27 +65,66 @@ class PenaltyContact {
   long long candidate_count() const;
   /// The normal force on each rigid wall at the last evaluation (summed over ranks).
   const std::vector<double>& wall_forces() const { return wall_forces_; }
+  /// The largest k_K / m_J of the material rule over the candidates (w^2 of ContactStiffness.hpp)
+  /// and the damping of that contact; equal on every rank.
+  double material_frequency2() const { return material_w2_; }
+  double material_damping() const { return material_damping_; }
+  /// y += K_c x: the material rule's springs as a stiffness on the generalized dofs (overlap
+  /// vectors), each k_K,max I on its particle's position sum_I phi_I x_I (k n n^T is bounded by
+  /// it along any normal): the stable step's eigenvalue problem takes them exactly
+  /// (drivers/ExplicitDriver). Local; no communication.
+  void add_spring_stiffness(const Vector& x_overlap, Vector& y_overlap) const;
+  /// Per scene contact (scene order; 0 for contacts between parts or not in this stage): the
+  /// deepest particle as a fraction of its spacing since the last call (then reset), and over the
+  /// stage.
+  std::vector<double> take_penetrations();
+  std::vector<double> stage_penetrations() const;
 
  private:
   struct Candidate {
     ParticleRow row;
     double mass = 0;
+    /// the material rule's stiffness per facing area, scale K / h_J (0: the mass rule alone),
+    /// and the particle's sides (contact/FacingArea.hpp)
+    double k_per_area = 0;
+    SideShares sides;
+    double spacing = 0;      ///< its boundary spacing h_J
+    std::size_t part = 0;    ///< index of its part in the model
+    long long particle = 0;  ///< global particle id (messages)
+    /// initial_penetration: ignore: the depth not pushed out (shrinks as the particle leaves)
+    double allowance = 0, allowance_new = 0;
     std::array<double, 3> x_old{}, ft_old{}, x_new{}, ft_new{};
     bool active = false;
   };
   struct Pair {
     std::size_t body = 0;
-    double penalty = 0, damping = 0;
+    long contact = -1;  ///< index in scene.contacts; -1 for a rigid wall
+    double penalty = 0, damping = 0, warning = 0;
+    std::string initial = "stop";  ///< initial_penetration: stop | ignore | push
+    bool warned = false;
+    double peak = 0, stage_peak = 0;  ///< deepest fraction since the last take, over the stage
     contact::Friction friction;
     std::array<double, 3> body_u_old{}, body_rotation_old{};
     std::vector<Candidate> candidates;
   };
+  /// At the run's start: particles inside a body stop the run or get their allowance
+  /// (contact/InitialOverlaps.cpp). Collective.
+  void initial_overlaps(const std::vector<RigidBodyState>& bodies);
+  /// The slip of candidate c against pair's body over the step (contact/PenaltyForce.hpp).
+  void slip(const Pair& pair, const Candidate& c, const std::vector<RigidBodyState>& bodies,
+            double* s) const;
+  /// After the step's forces: the deepest fractions (reduced) into the peaks, a warning once
+  /// above the threshold, and the tunnelling check. Collective.
+  void watch(std::vector<double>& deepest, std::vector<double>& travel, double time);
 
   int dim_;
   const RigidBodies& bodies_;
   Teuchos::RCP<const Teuchos::Comm<int>> comm_;
   std::vector<Pair> pairs_;
   std::vector<double> wall_forces_;
+  const Model& model_;
+  std::vector<double> part_spacing_;  ///< the smallest boundary spacing of each part (all ranks)
+  double material_w2_ = 0, material_damping_ = 0;
 };
 
 }  // namespace efg

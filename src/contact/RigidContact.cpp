@@ -20,21 +20,24 @@ std::vector<double> RigidContact::wall_forces() const {
 
 void RigidContact::begin(const std::vector<RigidBodyState>& carried, double time,
                          const Vector& d_overlap) {
-  states_ = carried.size() == bodies_.count() ? carried : bodies_.initial_states(time);
+  const bool initial = carried.size() != bodies_.count();
+  states_ = initial ? bodies_.initial_states(time) : carried;
   previous_ = states_;
-  contact_.start(d_overlap, states_);
+  step_end_ = time;
+  contact_.start(d_overlap, states_, initial);
   if (surfaces_) surfaces_->start(d_overlap);
 }
 
 void RigidContact::move(double time, double dt) {
   previous_ = states_;
   step_start_ = time;
+  step_end_ = time + dt;
   bodies_.move(states_, time, dt);
 }
 
 void RigidContact::add_forces(const Vector& d_overlap, double dt, Vector& f_overlap) {
   fault_point("contact");
-  contact_.add_forces(d_overlap, dt, states_, f_overlap);
+  contact_.add_forces(d_overlap, dt, step_end_, states_, f_overlap);
   if (surfaces_) surfaces_->add_forces(d_overlap, dt, f_overlap);
 }
 

@@ -23,7 +23,8 @@ class RigidContact {
     return !scene.rigid_bodies.empty() || !scene.contacts.empty() || !scene.rigid_walls.empty();
   }
 
-  /// Stage start at `time`: the states carried over from an earlier stage, or the initial ones.
+  /// Stage start at `time`: the states carried over from an earlier stage, or the initial ones
+  /// (then particles inside a body stop the run or have their depth ignored, per contact).
   void begin(const std::vector<RigidBodyState>& carried, double time, const Vector& d_overlap);
   /// First half of a step: the bodies move to t + dt.
   void move(double time, double dt);
@@ -41,6 +42,17 @@ class RigidContact {
   /// Back to the state before the last move (a failed step).
   void restore();
 
+  /// The material rule's largest k / m and its contact's damping (ContactStiffness.hpp).
+  double material_frequency2() const { return contact_.material_frequency2(); }
+  double material_damping() const { return contact_.material_damping(); }
+  /// y += K_c x of the material rule's springs (overlap vectors; PenaltyContact).
+  void add_spring_stiffness(const Vector& x_overlap, Vector& y_overlap) const {
+    contact_.add_spring_stiffness(x_overlap, y_overlap);
+  }
+  /// Per scene contact: the deepest particle over its spacing since the last call, over the stage.
+  std::vector<double> take_penetrations() { return contact_.take_penetrations(); }
+  std::vector<double> stage_penetrations() const { return contact_.stage_penetrations(); }
+
   const std::vector<RigidBodyState>& states() const { return states_; }
   const RigidBodies& bodies() const { return bodies_; }
   double kinetic_energy() const { return bodies_.kinetic_energy(states_); }
@@ -57,6 +69,7 @@ class RigidContact {
   std::unique_ptr<SurfaceContact> surfaces_;
   std::vector<RigidBodyState> states_, previous_;
   double step_start_ = 0.0;  // time of the step under way (applied forces of free bodies)
+  double step_end_ = 0.0;    // the time the forces are evaluated at (messages)
 };
 
 }  // namespace efg

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "contact/ContactStiffness.hpp"
 #include "core/DeviceArrays.hpp"
 #include "core/Errors.hpp"
 #include "core/Log.hpp"
@@ -54,10 +55,7 @@ ExplicitDriver::ExplicitDriver(const ModelOperators& ops, const StageSpec& stage
       motion_(ops.model(), stage.name),
       supports_(ops, stage.name, stage.settings["transformation_traction"].as<bool>()),
       stable_(ops, mass_, largest_wall_penalty(ops.model().scene),
-              supports_.active() ? StableTimeStep::ExtraStiffness([this](const Vector& d) {
-                return supports_.stiffness_at(d);
-              })
-                                 : StableTimeStep::ExtraStiffness{},
+              extra_stiffness(),
               stable_step_method(stage.settings["stable_step"].as<std::string>())),
       cells_(ops.model()),
       f_ext_(mass_.getMap()),
@@ -76,7 +74,10 @@ ExplicitDriver::ExplicitDriver(const ModelOperators& ops, const StageSpec& stage
       previous_d_(mass_.getMap()),
       previous_v_(mass_.getMap()),
       previous_a_(mass_.getMap()),
-      damping_(mass_damping_of(ops, stage), mass_) {
+      damping_(mass_damping_of(ops, stage), mass_),
+      spring_x_(ops.model().maps.overlap_dofs),
+      spring_y_(ops.model().maps.overlap_dofs),
+      spring_owned_(mass_.getMap()) {
   inverse_mass_.reciprocal(mass_);
   viscosity_linear_ = stage_.settings["bulk_viscosity_linear"].as<double>();
   viscosity_quadratic_ = stage_.settings["bulk_viscosity_quadratic"].as<double>();
@@ -105,6 +106,37 @@ std::vector<double> ExplicitDriver::acceleration(double time, double wall_dt, co
   if (ops_.mixed()) a.update(-1.0, f_viscous_, 1.0);
   a.elementWiseMultiply(1.0, inverse_mass_, a, 0.0);
   return wall_forces;
+}
+
+StableTimeStep::ExtraStiffness ExplicitDriver::extra_stiffness() {
+  const bool springs = contact_ && contact_->material_frequency2() > 0;
+  if (!supports_.active() && !springs) return {};
+  return [this, springs](const Vector& d) {
+    auto weak = supports_.active() ? supports_.stiffness_at(d) : StableTimeStep::StiffnessProduct{};
+    return StableTimeStep::StiffnessProduct([this, weak, springs](const Vector& x, Vector& y) {
+      if (weak) weak(x, y);
+      if (!springs) return;
+      ops_.to_overlap(x, spring_x_);
+      spring_y_.putScalar(0.0);
+      contact_->add_spring_stiffness(spring_x_, spring_y_);
+      ops_.to_owned(spring_y_, spring_owned_);
+      y.update(1.0, spring_owned_, 1.0);
+    });
+  };
+}
+
+double ExplicitDriver::stable_step(const Vector& d) {
+  // StableTimeStep's eigenvalue has the material rule's springs in it (extra_stiffness: k_K
+  // fixed by the parts, not by dt) and it takes the mass rule's share S: 2 / omega sqrt(1 -
+  // S / 4). The springs' dampers add 4 D w dt (w^2 the largest k_K / m): the positive root of
+  // omega^2 dt^2 + 4 D w dt = 4 - S (contact/ContactStiffness.hpp).
+  const double dt_crit = stable_.estimate(d);
+  const double w2 = contact_ ? contact_->material_frequency2() : 0.0;
+  const double damping = contact_ ? contact_->material_damping() : 0.0;
+  if (!(w2 > 0) || !(damping > 0)) return dt_crit;
+  const double omega = stable_.largest_frequency();
+  return std::min(dt_crit, contact::damped_stable_step(omega * omega, 4.0 * damping * std::sqrt(w2),
+                                                       largest_wall_penalty(ops_.model().scene)));
 }
 
 bool ExplicitDriver::finite(const RunState& state) const {
@@ -219,11 +251,15 @@ ExplicitDriver::StepPlan ExplicitDriver::plan_steps(const Vector& d, double star
   const bool fixed = static_cast<bool>(stage_.settings["dt"]);
   const double fixed_dt = fixed ? stage_.settings["dt"].as<double>() : 0.0;
   StepPlan plan;
-  plan.dt_crit = stable_.estimate(d);
+  plan.dt_crit = stable_step(d);
   plan.dt = fixed ? fixed_dt : scale * plan.dt_crit;
   std::ostringstream o;
   o << "stage '" << stage_.name << "': stable time step " << plan.dt_crit << " (largest frequency "
-    << stable_.largest_frequency() << " rad/time, " << stable_.source() << "), dt = " << plan.dt;
+    << stable_.largest_frequency() << " rad/time, " << stable_.source();
+  if (contact_ && contact_->material_frequency2() > 0)
+    o << ", contact springs included: alone up to " << std::sqrt(contact_->material_frequency2())
+      << " rad/time";
+  o << "), dt = " << plan.dt;
   Log::info(o.str());
   // Honest about the default's error: generalized values are not the physical ones.
   for (const auto& bc : ops_.model().scene.boundary_conditions)
@@ -406,6 +442,7 @@ ExplicitSummary ExplicitDriver::run(RunState& state, const StateOutput& output, 
       for (std::size_t c = 0; c < weak.size(); ++c)
         for (std::size_t k = 0; k < 3; ++k) state.reactions[c][k] += weak[c][k];
     }
+    if (contact_) state.contact_penetrations = contact_->take_penetrations();
     output(state);
   };
   if (record_start) record();
@@ -454,7 +491,7 @@ ExplicitSummary ExplicitDriver::run(RunState& state, const StateOutput& output, 
                                                 1LL, refresh - since);
       } else {
         try {
-          dt_crit = stable_.estimate(state.d);
+          dt_crit = stable_step(state.d);
         } catch (const std::exception& e) {
           // Every rank takes this handler (a peer's failure too: a PeerFailure caught only by
           // the stage loop's handler would meet this rank there and then make other collective
@@ -548,6 +585,7 @@ ExplicitSummary ExplicitDriver::run(RunState& state, const StateOutput& output, 
     progress.update(state.time - start_time);
   }
   progress.finish();
+  if (contact_) summary.contact_penetration = contact_->stage_penetrations();
   if (internal_integral > 0)
     summary.kinetic_to_internal_mean = kinetic_integral / internal_integral;
   if (state.internal > 0) summary.kinetic_to_internal_end = state.kinetic / state.internal;

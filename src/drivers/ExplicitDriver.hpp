@@ -40,6 +40,9 @@ struct ExplicitSummary {
   /// (StableTimeStep::source: dense, bound, lanczos, converged).
   double first_dt_crit = 0, smallest_dt_crit = 0;
   std::string stable_step_source;
+  /// Per scene contact: the deepest particle in its rigid body over the stage, as a fraction of
+  /// its spacing (0 for contacts between parts or not in the stage).
+  std::vector<double> contact_penetration;
 };
 
 class ExplicitDriver {
@@ -67,6 +70,13 @@ class ExplicitDriver {
                                    Vector& a);
 
  private:
+  /// dt_crit at d: StableTimeStep's, the eigenvalue of M^-1 (K + K_c) with the contacts'
+  /// material-rule springs K_c in it and the mass-rule share of walls and contacts, lowered for
+  /// the springs' dampers (contact/ContactStiffness.hpp).
+  double stable_step(const Vector& d);
+  /// The stiffness besides the solid's for StableTimeStep: the weak supports' and the contact
+  /// springs' (empty without either).
+  StableTimeStep::ExtraStiffness extra_stiffness();
   bool finite(const RunState& state) const;  // collective
   /// "particle N (X = (x, y, z))" of a global particle id, for messages.
   std::string particle_label(long long particle) const;
@@ -107,7 +117,8 @@ class ExplicitDriver {
   double viscosity_linear_ = 0, viscosity_quadratic_ = 0;  ///< the stage's Q2, Q1
   Vector f_support_, f_support_old_;  ///< forces of the prescribed motions (their work is external)
   Vector delta_, v_half_, previous_d_, previous_v_, previous_a_;  ///< one step's scratch
-  MassDamping damping_;  ///< the stage's mass-proportional damping (off: 0)
+  MassDamping damping_;                        ///< the stage's mass-proportional damping (off: 0)
+  Vector spring_x_, spring_y_, spring_owned_;  ///< scratch of the contact springs' product
 };
 
 }  // namespace efg

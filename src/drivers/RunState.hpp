@@ -34,6 +34,9 @@ struct RunState {
   std::vector<double> wall_forces;
   /// Rigid bodies (scene order): displacement, velocity and contact force, carried across stages.
   std::vector<RigidBodyState> bodies;
+  /// Per scene contact (explicit stages, rigid bodies): the deepest particle as a fraction of
+  /// its spacing since the previous record (contact/PenetrationChecks.hpp); empty otherwise.
+  std::vector<double> contact_penetrations;
   /// Linear momentum of the particles (sum M_I v_I, lumped mass) and the free rigid bodies
   /// (explicit stages; the contact pair forces cancel in it).
   std::array<double, 3> momentum{};

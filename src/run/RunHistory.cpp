@@ -70,6 +70,9 @@ std::vector<std::string> history_names(const Scene& scene, int dimension) {
       for (std::size_t d = dim == 2 ? 2 : 0; d < 3; ++d)
         names.push_back(short_name("rb_", b.name, std::string(what) + axes[d]));
   }
+  // Contacts with rigid bodies: the deepest particle over its spacing since the last record.
+  for (const auto& c : scene.contacts)
+    if (!c.rigid_body.empty()) names.push_back(short_name("contact_", c.name, "_pen"));
   for (const auto& bc : scene.boundary_conditions)
     for (std::size_t d = 0; d < dim; ++d)
       names.push_back(short_name("R_", bc.name, std::string("_") + axes[d]));
@@ -136,6 +139,9 @@ std::vector<double> RunHistory::values(const ModelOperators& ops, const RunState
     for (const auto* v : {&s.moment, &s.angular_velocity})
       for (std::size_t d = dim == 2 ? 2 : 0; d < 3; ++d) out.push_back((*v)[d]);
   }
+  const auto& pen = state.contact_penetrations;
+  for (std::size_t c = 0; c < model_.scene.contacts.size(); ++c)
+    if (!model_.scene.contacts[c].rigid_body.empty()) out.push_back(c < pen.size() ? pen[c] : 0.0);
   for (std::size_t c = 0; c < model_.scene.boundary_conditions.size(); ++c)
     for (std::size_t d = 0; d < dim; ++d)
       out.push_back(c < reactions.size() ? reactions[c][d] : 0.0);

@@ -73,8 +73,10 @@ void write_implicit_stages(std::ostream& o, const std::vector<ImplicitStageRepor
 
 // Per explicit stage: its steps, the step sizes, the stable-step estimates, the worst energy
 // balance error, the quasi-static indicator (kinetic over internal energy: time integrals over
-// the stage and at its end) and whether dynamic relaxation ended it.
-void write_explicit_stages(std::ostream& o, const std::vector<ExplicitStageReport>& stages) {
+// the stage and at its end), whether dynamic relaxation ended it, and per contact with a rigid
+// body the deepest particle over the stage as a fraction of its spacing (contact_penetration).
+void write_explicit_stages(std::ostream& o, const Scene& scene,
+                           const std::vector<ExplicitStageReport>& stages) {
   o << ",\n  \"explicit_stages\": [";
   for (std::size_t s = 0; s < stages.size(); ++s) {
     const auto& st = stages[s].summary;
@@ -88,7 +90,17 @@ void write_explicit_stages(std::ostream& o, const std::vector<ExplicitStageRepor
       << ", \"worst_energy_balance_error\": " << number(st.worst_balance_error)
       << ", \"kinetic_to_internal_mean\": " << number(st.kinetic_to_internal_mean)
       << ", \"kinetic_to_internal_end\": " << number(st.kinetic_to_internal_end)
-      << ", \"relaxed\": " << (st.relaxed ? "true" : "false") << "}";
+      << ", \"relaxed\": " << (st.relaxed ? "true" : "false");
+    o << ", \"contact_penetration\": {";
+    bool first = true;
+    for (std::size_t c = 0; c < scene.contacts.size(); ++c) {
+      if (scene.contacts[c].rigid_body.empty()) continue;
+      const auto& pen = st.contact_penetration;
+      o << (first ? "" : ", ") << quoted(scene.contacts[c].name) << ": "
+        << number(c < pen.size() ? pen[c] : 0.0);
+      first = false;
+    }
+    o << "}}";
   }
   o << "]";
 }
@@ -235,7 +247,7 @@ void write_run_report(const CommPtr& comm, const Model& model, const std::string
                   : std::string())
           << "}";
       write_implicit_stages(o, implicit);
-      write_explicit_stages(o, explicit_stages);
+      write_explicit_stages(o, model.scene, explicit_stages);
       auto write_probes = [&](const ProbeValues& values) {
         o << "{";
         for (std::size_t i = 0; i < values.size(); ++i)

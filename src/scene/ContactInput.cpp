@@ -145,6 +145,9 @@ ContactSpec read_contact(const Scene& s, const YAML::Node& r, const YAML::Node& 
   c.decay = r["decay"].as<double>();
   c.damping = r["damping"].as<double>();
   c.implicit_penalty = r["implicit_penalty"].as<double>();
+  c.penalty_scale = r["penalty_scale"].as<double>();
+  c.penetration_warning = r["penetration_warning"].as<double>();
+  c.initial_penetration = r["initial_penetration"].as<std::string>();
   for (const auto& name : r["stages"]) c.stages.names.push_back(name.as<std::string>());
   auto is_body = [&](const std::string& n) {
     return std::any_of(s.rigid_bodies.begin(), s.rigid_bodies.end(),

@@ -111,12 +111,47 @@ SpecPtr contact_spec() {
                         "stable step then counts twice the penalty)."),
                 "true")
       .optional("penalty",
-                real("Normal stiffness per particle as a fraction of its mass / dt^2 (stable "
-                     "up to about 1; the stable step is reduced by sqrt(1 - penalty / 4)).",
+                real("Mass rule of the normal stiffness per particle, k = penalty x m / dt^2 "
+                     "(stable up to about 1; the stable step is reduced by sqrt(1 - penalty / "
+                     "4)). With a rigid body in explicit stages the larger of this and the "
+                     "material rule (penalty_scale) acts.",
                      "-")
                     .above(0)
                     .at_most(1),
                 "0.1")
+      .optional("penalty_scale",
+                real("Rigid bodies, explicit stages, solid parts (shells keep the mass rule): "
+                     "material rule of the normal stiffness per surface particle, "
+                     "k = penalty_scale x K A^2 / V with V = A h, i.e. "
+                     "penalty_scale x K A / h (K = E / (3 (1 - 2 nu)) the bulk modulus of the "
+                     "particle's part, E / (2 (1 - nu)) in plane stress; A its share of the "
+                     "part's boundary facing the body, x thickness in 2D; h its boundary "
+                     "spacing): LS-DYNA's "
+                     "SLSFAC x K A^2 / V. A pressure p then sinks a particle by p h / "
+                     "(penalty_scale K), 1/penalty_scale of the strain p / K over one spacing. "
+                     "The stable step is lowered to keep it stable (docs/contact.md). 0: the "
+                     "mass rule alone.",
+                     "-")
+                    .at_least(0),
+                "1")
+      .optional("penetration_warning",
+                real("Rigid bodies, explicit stages: warn once when a particle is deeper in the "
+                     "body than this fraction of its spacing (the history column "
+                     "contact_<name>_pen and the run report hold the largest fraction).",
+                     "-")
+                    .above(0),
+                "0.2")
+      .optional("initial_penetration",
+                choice("Rigid bodies, explicit stages: surface particles inside the body at the "
+                       "run's start. stop: the run stops (exit 3) naming the body, the deepest "
+                       "particle and its depth; ignore: each such particle's initial depth is "
+                       "taken as its zero, the contact pushes only beyond it and the allowance "
+                       "shrinks as the particle comes out (LS-DYNA's IGNORE = 1); push: the "
+                       "penalty pushes the whole depth out from the first step (a deliberate "
+                       "preload, e.g. a roll set biting into a strip; the spring's energy "
+                       "k depth^2 / 2 enters at once).",
+                       {"stop", "ignore", "push"}),
+                "stop")
       .optional("stages",
                 string_list("Stages the contact acts in (names of stages); every stage when "
                             "omitted. A springback stage leaves out the tools' contacts.")

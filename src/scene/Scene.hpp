@@ -219,7 +219,17 @@ struct ContactSpec {
   std::vector<std::string> target_parts;  ///< deformable surfaces touched (rigid_body empty)
   bool two_way = true;                    ///< target_parts: the other way round too
   std::vector<std::string> parts;
-  double penalty = 0.1;  ///< normal stiffness k = penalty x m / dt^2 per particle
+  double penalty = 0.1;  ///< mass rule: k = penalty x m / dt^2 per particle
+  /// Explicit stages, rigid bodies: the material rule k = penalty_scale x K A / h (the larger
+  /// of the two acts; contact/ContactStiffness.hpp). 0: the mass rule alone.
+  double penalty_scale = 1.0;
+  /// Explicit stages, rigid bodies: warn once when a particle is deeper than this fraction of
+  /// its spacing.
+  double penetration_warning = 0.2;
+  /// Explicit stages, rigid bodies: a particle inside the body at the run's start stops it
+  /// (stop), has that overlap ignored (ignore, LS-DYNA's IGNORE) or pushed out by the penalty
+  /// from the first step (push: a deliberate preload).
+  std::string initial_penetration = "stop";
   double static_friction = 0, dynamic_friction = 0, decay = 0;
   double damping = 0;             ///< normal viscous damping, fraction of critical per particle
   double implicit_penalty = 100;  ///< implicit stages: beta = implicit_penalty x E / h

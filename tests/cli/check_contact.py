@@ -79,6 +79,17 @@ usage: check_contact.py impact|punch|slide|stick HISTORY.csv
           up (t in (0.5, 0.75)); F_x = mu |F_y| within 5e-3 for t >= 1.2 (all slipping; measured
           3.1e-3: the dragged block rocks, its leading edge bears more, and the contact normals
           tilt by about 1e-3 rad, F_x / |F_y| = mu + tilt (1 + mu^2)); the clamp's reactions equal the contact force to 1e-8
+  foam    a foam block (E = 1, nu = 0.3: K = 0.8333) 600 x 600 x 240 on a fixed floor, a free
+          1 t plate dropped on by its weight W = 9810 at default contact settings: the plate's
+          peak contact force 2 W (a suddenly applied load, the block's mass negligible) within
+          5 %; the largest penetration of each contact (contact_top_pen, contact_bottom_pen)
+          <= 0.10 of the spacing and within 10 % of 2 W / (K L^2) = 0.0654 (every top particle
+          sinks alike into the flat plate, k_J = K A_J / h, sum A_J = L^2); energy balance < 1 %;
+          the run report's contact_penetration equals the history's largest
+  ignore  a free disc starting 0.05 deep in a free block, initial_penetration: ignore: energy
+          balance < 1 % at every record, momentum of particles + disc constant to 1e-8
+          relative, the disc turned back by the block (its velocity > 0 at the end), the depth
+          beyond the initial one < 0.5 of the spacing
 usage: check_contact.py KIND HISTORY.csv [TWIN_HISTORY.csv] [...]
 """
 import math
@@ -317,6 +328,34 @@ elif kind == "drag_parts":
           5e-3)
     check("|R_clamp_x + F_x| / max |F_y|", np.abs(col("R_clamp_x") + Fx).max() / scale, 1e-8)
     check("|R_clamp_y + F_y| / max |F_y|", np.abs(col("R_clamp_y") + Fy).max() / scale, 1e-8)
+elif kind == "foam":
+    W, K, L = 9810.0, 1.0 / (3 * (1 - 2 * 0.3)), 600.0
+    exact = 2 * W / (K * L * L)
+    check("peak plate force / 2 W - 1", col("rb_plate_Fz").max() / (2 * W) - 1, 0.05)
+    for name in ("contact_top_pen", "contact_bottom_pen"):
+        largest = col(name).max()
+        print("%s largest %.4f, by hand %.4f" % (name, largest, exact))
+        check(name + " largest (fraction of the spacing)", largest, 0.10)
+        check(name + " largest / by hand - 1", largest / exact - 1, 0.10)
+    check("energy balance", col("energy_balance_error").max(), 1e-2)
+    # The run report's explicit_stages[].contact_penetration: the largest over the stage, which
+    # the history's per-record peaks (the largest since the previous record) hold as well.
+    import glob
+    import json
+    import os
+    report = json.load(open(glob.glob(os.path.join(os.path.dirname(path), "*.report.json"))[0]))
+    stage = report["explicit_stages"][0]["contact_penetration"]
+    for name in ("top", "bottom"):
+        check("report contact_penetration." + name + " vs the history's largest",
+              stage[name] - col("contact_%s_pen" % name).max(), 1e-9)
+elif kind == "ignore":
+    p = col("momentum_y")
+    check("momentum drift (relative)", np.abs(p - p[0]).max() / abs(p[0]), 1e-8)
+    check("energy balance", col("energy_balance_error").max(), 1e-2)
+    v_end = col("rb_disc_vy")[-1]
+    print("disc velocity at the end %.4f" % v_end)
+    check("disc not turned back (v_end <= 0)", 0.0 if v_end > 0 else 1.0, 0.0)
+    check("depth beyond the initial one", col("contact_hit_pen").max(), 0.5)
 elif kind in ("slide", "stick"):
     tan, mu, g, M = (0.5 if kind == "slide" else 0.2), 0.3, 1.0, 0.5
     th = math.atan(tan)

@@ -4,7 +4,11 @@ fields of the last record, agree to TOL relative to each column's (field's) larg
 (history columns of quantities that vanish by symmetry, below 1e-4 of the largest column - the
 cross components of a symmetry plane's reaction, the sideways force on a centered impactor -
 hold only the round-off of sums of terms of order 1 and are compared against that floor; the
-energy balance error, a fraction, against 1).
+energy balance error, a fraction, against 1; a rigid body's contact moment rb_<body>_M*, a sum
+of terms r x F_J with arms r up to the model's size L, against its largest force column x L
+(L the largest extent of ONE.e's coordinates), the scale of those terms: a moment that vanishes
+by symmetry holds their round-off (1.5e-13 F L on the flat punch; against 1e-4 of the largest
+force column, a floor in the wrong units, that was 1.5e-9).
 usage: check_same_on_ranks.py TOL ONE/history.csv TWO/history.csv ONE.e TWO.e FIELD [FIELD ...]
 A results file written one file per rank (output.files: per_rank, as a distributed read writes)
 is named by its base, TWO.e: its pieces TWO.e.<ranks>.<rank> are joined here by their node id maps
@@ -26,10 +30,27 @@ worst, where = 0.0, ""
 if len(a) != len(b):
     sys.exit("records: %d on 1 rank, %d on 2" % (len(a), len(b)))
 floor = 1e-4 * max(abs(float(r[n])) for r in a for n in a[0])
+
+
+def model_size(path):
+    pieces = [path] if os.path.exists(path) else sorted(glob.glob(path + ".*.*"))
+    d = netCDF4.Dataset(pieces[0])
+    return max(float(np.ptp(d[c][:])) for c in ("coordx", "coordy", "coordz") if c in d.variables)
+
+
+def moment_floor(name):
+    m = re.fullmatch(r"(rb_.*)_M[xyz]", name)
+    if not m:
+        return 0.0
+    forces = [n for n in a[0] if re.fullmatch(re.escape(m.group(1)) + r"_F[xyz]", n)]
+    largest = max((abs(float(r[n])) for r in a for n in forces), default=0.0)
+    return largest * model_size(sys.argv[4])
+
+
 for name in a[0]:
     x = np.array([float(r[name]) for r in a])
     y = np.array([float(r[name]) for r in b])
-    scale = max(np.abs(x).max(), np.abs(y).max(), floor, 1e-300,
+    scale = max(np.abs(x).max(), np.abs(y).max(), floor, moment_floor(name), 1e-300,
                 1.0 if name == "energy_balance_error" else 0.0)
     diff = np.abs(x - y).max() / scale
     if diff > worst:
