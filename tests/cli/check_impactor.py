@@ -7,9 +7,10 @@
   less the impactor's m v) is the opposite within 1 % (the block's reaction);
 - the impactor came off the block (it moves up at the end, no contact force);
 - the block's top corner outside the impactor's footprint (probe `corner`) moves with the
-  block: its displacement within 4 mm (a tenth of the impactor's radius) of the block's
+  block: its displacement within 10 mm (a quarter of the impactor's radius) of the block's
   centre-of-mass travel (its velocity from momentum, integrated); the reported defect moved such
-  a particle 131 mm.
+  a particle 131 mm. The block rings elastically: 1.6 mm under the mass-rule contact penalty,
+  6.7 mm under the stiffer material rule (the default since issue 56: a shorter, harder impact).
 usage: check_impactor.py history.csv [m M]  (the scene's 0.314 and 1.0 by default)"""
 import csv
 import sys
@@ -46,7 +47,7 @@ if not abs((block[-1] - block[0]) + dp) <= 1e-2 * abs(dp):
     failures.append("block's momentum change %.6g against %.6g" % (block[-1] - block[0], -dp))
 if not (v[-1] > 0 and F[-1] == 0):
     failures.append("the impactor did not come off the block (v %.4g, F %.4g)" % (v[-1], F[-1]))
-if not corner <= 4.0:
+if not corner <= 10.0:
     failures.append("the corner moved %.3g off the block's travel" % corner)
 for f in failures:
     print("FAIL:", f)
