@@ -12,6 +12,7 @@
 #include "core/Errors.hpp"
 #include "core/Log.hpp"
 #include "core/Progress.hpp"
+#include "drivers/StableStepSchedule.hpp"
 #include "parallel/Collective.hpp"
 #include "parallel/ExitReport.hpp"
 #include "parallel/LargestParticle.hpp"
@@ -54,10 +55,9 @@ ExplicitDriver::ExplicitDriver(const ModelOperators& ops, const StageSpec& stage
                    : nullptr),
       motion_(ops.model(), stage.name),
       supports_(ops, stage.name, stage.settings["transformation_traction"].as<bool>()),
-      stable_(ops, mass_, largest_wall_penalty(ops.model().scene),
-              extra_stiffness(),
+      stable_(ops, mass_, largest_wall_penalty(ops.model().scene), extra_stiffness(),
               stable_step_method(stage.settings["stable_step"].as<std::string>())),
-      cells_(ops.model()),
+      folds_(ops.model(), stage.name),
       f_ext_(mass_.getMap()),
       f_ext_old_(mass_.getMap()),
       f_wall_(mass_.getMap()),
@@ -194,39 +194,6 @@ void ExplicitDriver::report_energy_balance(const EnergyBalanceCheck& check, cons
       state.balance_error(), step, state.time, energies.str(),
       peak.particle >= 0 ? "the largest kinetic energy is at " + particle_label(peak.particle)
                          : ""));
-}
-
-void ExplicitDriver::check_folds(RunState& state, long long step, const StateOutput& output) {
-  const auto folded = cells_.most_inverted(d_overlap_);
-  if (!folded) return;
-  std::ostringstream where;
-  where << "background cell " << folded->cell << " of part '" << folded->part
-        << "' turned inside out at particle " << folded->particle << " (its corner Jacobian "
-        << folded->current_det << ", " << folded->reference_det << " in the reference) at step "
-        << step << ", t = " << state.time;
-  // A corner turned over as far as it stood (mirrored) or more: particles passed each other.
-  if (folded->ratio() <= -kFoldedShare) {
-    // The folded state is written when the record takes it; a small-strain part's own check
-    // refuses it (every rank alike: its check is collective), and the results end before.
-    bool written = true;
-    try {
-      output(state);
-    } catch (const NumericalError&) {
-      written = false;
-    }
-    throw NumericalError("stage '" + stage_.name + "': particles passed each other: " +
-                         where.str() +
-                         ": the material folded through itself (a crush the particles cannot "
-                         "represent, or a contact that let a part through); " +
-                         (written ? "the last state is in the results"
-                                  : "the results end at the last record before"));
-  }
-  if (!fold_warned_)
-    Log::warning("stage '" + stage_.name + "': " + where.str() +
-                 ": a corner slightly turned over (a held or sticking corner's particles "
-                 "overtaking each other; the stage stops when one is mirrored, its Jacobian at "
-                 "minus its reference value; docs/explicit.md, \"Guards\")");
-  fold_warned_ = true;
 }
 
 void ExplicitDriver::refuse_endless(double span, double dt, double dt_crit) const {
@@ -425,7 +392,6 @@ ExplicitSummary ExplicitDriver::run(RunState& state, const StateOutput& output, 
   const double scale = stage_.settings["dt_scale"].as<double>();
   const bool fixed = static_cast<bool>(stage_.settings["dt"]);
   const bool allow_unstable = stage_.settings["allow_unstable_dt"].as<bool>();
-  const long long refresh = stage_.settings["dt_update_interval"].as<long long>();
 
   const auto plan = plan_steps(state.d, start_time);
   double dt_crit = plan.dt_crit, dt = plan.dt;
@@ -457,62 +423,34 @@ ExplicitSummary ExplicitDriver::run(RunState& state, const StateOutput& output, 
   EnergyBalanceCheck balance(stage_.name, stage_.settings["energy_balance_limit"].as<double>());
   const double relaxed_ratio = stage_.settings["relaxation_kinetic_ratio"].as<double>();
   int relaxed_checks = 0;  // checks in a row at or below the ratio (dynamic relaxation)
-  // The stable step follows the deformation: it is re-estimated when the strain since the last
-  // estimate, max |grad (d - d_est)| over the finite-strain parts' points, reaches
-  // dt_update_strain (their stiffness, and so omega_max, changes with strain; a small-strain
-  // part's does not: elastic probes take plasticity out, contact and walls enter by constant
-  // terms), when points have eroded since (the stiffness falls: the step may grow, and with
-  // every point eroded the stage stops), or after dt_update_interval steps. The strain is measured at steps
-  // predicted from its growth so far (half the remaining way, linearly, at most doubling the
-  // distance to the last estimate): a few gradient passes per estimate, not one per step. An impact that shrinks the stable step tenfold within a few
-  // dozen steps (the Taylor bar) is followed at once; a steady run pays for a few estimates.
-  // Linear elastic parts keep the plan's estimate: their K is constant, so is omega_max of
-  // M^-1 K; at 1e6 particles each re-estimate took 9 s, some 16 steps' worth (docs/explicit.md).
-  const bool reestimate = !fixed && !ops_.model().scene.every_part_linear_elastic();
-  const double update_strain = stage_.settings["dt_update_strain"].as<double>();
-  Vector d_estimated(state.d, Teuchos::Copy), change(state.d.getMap());
-  long long estimated_at = 0, next_check = 1, eroded_at_estimate = ops_.eroded_points();
+  // Re-estimates follow the strain and erosion (drivers/StableStepSchedule); linear elastic
+  // parts keep the plan's estimate.
+  StableStepSchedule schedule(ops_, stage_,
+                              !fixed && !ops_.model().scene.every_part_linear_elastic(), state.d);
   // Trapezoids of the kinetic and internal energies over the records (quasi-static indicator).
   double kinetic_integral = 0, internal_integral = 0, last_record_time = start_time,
          last_kinetic = state.kinetic, last_internal = state.internal;
   Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewCounter("efg: explicit time steps"));
   while (state.time < end - 1e-12 * span) {
-    if (reestimate && summary.steps >= next_check) {
-      change.update(1.0, state.d, -1.0, d_estimated, 0.0);
-      const double strain = ops_.largest_strain_change(change);
-      const long long since = summary.steps - estimated_at, eroded = ops_.eroded_points();
-      if (strain < update_strain && eroded == eroded_at_estimate && since < refresh) {
-        // Half the remaining way at the strain's rate so far, and at most as far ahead as the
-        // last estimate is behind (an impact's strain accelerates from nothing).
-        const double remaining =
-            strain > 0 ? 0.5 * static_cast<double>(since) * (update_strain / strain - 1.0)
-                       : static_cast<double>(since);
-        next_check = summary.steps + std::clamp(std::min(static_cast<long long>(remaining), since),
-                                                1LL, refresh - since);
-      } else {
-        try {
-          dt_crit = stable_step(state.d);
-        } catch (const std::exception& e) {
-          // Every rank takes this handler (a peer's failure too: a PeerFailure caught only by
-          // the stage loop's handler would meet this rank there and then make other collective
-          // calls).
-          meet_with_current_failure();  // before the collective write (a rank-local failure)
-          output(state);
-          if (dynamic_cast<const NumericalError*>(&e) == nullptr) throw;  // a peer's: as it is
-          std::ostringstream why;
-          why << "stage '" << stage_.name << "' at step " << summary.steps << ", t = " << state.time
-              << ": " << e.what() << "; the last state is in the results";
-          throw NumericalError(why.str());
-        }
-        ++summary.dt_estimates;
-        dt = scale * dt_crit;
-        summary.smallest_dt_crit = std::min(summary.smallest_dt_crit, dt_crit);
-        wall_dt_ = dt;
-        Tpetra::deep_copy(d_estimated, state.d);
-        estimated_at = summary.steps;
-        eroded_at_estimate = eroded;
-        next_check = summary.steps + 1;
+    if (schedule.due(summary.steps, state.d)) {
+      try {
+        dt_crit = stable_step(state.d);
+      } catch (const std::exception& e) {
+        // Every rank takes this handler (a peer's failure too: a PeerFailure caught only by the
+        // stage loop's handler would meet this rank there and then make other collective calls).
+        meet_with_current_failure();  // before the collective write (a rank-local failure ends)
+        output(state);
+        if (dynamic_cast<const NumericalError*>(&e) == nullptr) throw;  // a peer's: as it is
+        std::ostringstream why;
+        why << "stage '" << stage_.name << "' at step " << summary.steps << ", t = " << state.time
+            << ": " << e.what() << "; the last state is in the results";
+        throw NumericalError(why.str());
       }
+      ++summary.dt_estimates;
+      dt = scale * dt_crit;
+      summary.smallest_dt_crit = std::min(summary.smallest_dt_crit, dt_crit);
+      wall_dt_ = dt;
+      schedule.estimated(summary.steps, state.d);
     }
     const double step_dt = std::min(dt, end - state.time);
     advance(state, step_dt, summary.steps + 1, output);
@@ -549,7 +487,7 @@ ExplicitSummary ExplicitDriver::run(RunState& state, const StateOutput& output, 
         throw NumericalError(why.str());
       }
       // energies() left d in d_overlap_: the background cells in the current configuration.
-      check_folds(state, summary.steps, output);
+      folds_.check(d_overlap_, state, summary.steps, output);
       if (checked && balance.failed(state)) {
         output(state);
         report_energy_balance(balance, state, summary.steps);

@@ -16,12 +16,12 @@
 
 #include "contact/RigidContact.hpp"
 #include "drivers/EnergyBalanceCheck.hpp"
+#include "drivers/FoldGuard.hpp"
 #include "drivers/MassDamping.hpp"
 #include "drivers/PrescribedMotion.hpp"
 #include "drivers/RunState.hpp"
 #include "drivers/StableTimeStep.hpp"
 #include "drivers/WeakSupports.hpp"
-#include "operators/CellInversion.hpp"
 #include "operators/LumpedMass.hpp"
 
 namespace efg {
@@ -103,14 +103,7 @@ class ExplicitDriver {
   PrescribedMotion motion_;
   WeakSupports supports_;  ///< weak conditions, transformation traction (before stable_)
   StableTimeStep stable_;
-  CellInversion cells_;  ///< the guard against folded material (checked with the energies)
-  bool fold_warned_ = false;
-  /// A corner of a background cell turned over by this share of its reference Jacobian (1: as
-  /// far over as it stood, a mirrored corner) stops the stage (exit 3); a smaller one is warned
-  /// about once (operators/CellInversion.hpp).
-  static constexpr double kFoldedShare = 1.0;
-  /// The folded-material guard at the current displacements (in d_overlap_).
-  void check_folds(RunState& state, long long step, const StateOutput& output);
+  FoldGuard folds_;  ///< the guard against folded material (checked with the energies)
   Vector f_ext_, f_ext_old_, f_wall_, f_wall_old_, f_int_, wall_overlap_, d_overlap_;
   void refuse_endless(double span, double dt, double dt_crit) const;
   Vector f_viscous_, f_viscous_old_;  ///< bulk viscosity of mixed u-p cells (at v_n+1/2)

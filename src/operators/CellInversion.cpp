@@ -6,15 +6,6 @@
 #include <limits>
 
 namespace efg {
-namespace {
-
-// The Jacobian determinant at every corner (in node order) of a cell at coordinates x.
-std::vector<double> corner_jacobians(CellType type, const std::vector<double>& x) {
-  return cell_corner_jacobians(type, x.data());
-}
-
-}  // namespace
-
 CellInversion::CellInversion(const Model& model)
     : dim_(model.mesh.dimension), comm_(model.maps.overlap_nodes->getComm()) {
   const auto& scene = model.scene;
@@ -34,9 +25,9 @@ CellInversion::CellInversion(const Model& model)
           std::find(spec.blocks.begin(), spec.blocks.end(), block.name) == spec.blocks.end())
         continue;
       const auto* material = scene.find_material(spec.material);
-      const auto failure = material ? material->constants.find("failure_strain")
-                                    : std::map<std::string, double>::const_iterator{};
-      if (material && failure != material->constants.end() && failure->second > 0) continue;
+      if (material && material->constants.count("failure_strain") &&
+          material->constants.at("failure_strain") > 0)
+        continue;  // eroding: its points leave the model
       part = p;
     }
     if (part && cell_dimension(block.type) == dim_)
@@ -65,23 +56,25 @@ CellInversion::CellInversion(const Model& model)
                                    static_cast<std::size_t>(i)];
           }
         }
-        if (here)
-          cells_.push_back(std::move(cell));
-        else
-          continue;
+        if (!here) continue;
         // Each corner's reference Jacobian (the ratio's denominator; every corner of a valid
         // cell is positive, MeshValidation).
-        auto& added = cells_.back();
-        std::vector<double> x;
-        for (int k = 0; k < nodes; ++k)
-          for (int i = 0; i < dim_; ++i)
-            x.push_back(reference_[static_cast<std::size_t>(
-                added.overlap[static_cast<std::size_t>(k)] * dim_ + i)]);
-        added.corner_det = corner_jacobians(block.type, x);
+        cell.corner_det = cell_corner_jacobians(cell.type, corners(cell, nullptr).data());
+        cells_.push_back(std::move(cell));
       }
     first_cell += cells;
   }
   for (const auto& spec : scene.parts) part_names_.push_back(spec.name);
+}
+
+std::vector<double> CellInversion::corners(const Cell& cell, const double* d) const {
+  std::vector<double> x;
+  for (const int node : cell.overlap)
+    for (int i = 0; i < dim_; ++i) {
+      const auto r = static_cast<std::size_t>(node * dim_ + i);
+      x.push_back(reference_[r] + (d ? d[r] : 0.0));
+    }
+  return x;
 }
 
 std::optional<CellInversion::Inverted> CellInversion::most_inverted(
@@ -89,18 +82,8 @@ std::optional<CellInversion::Inverted> CellInversion::most_inverted(
   const auto d = d_overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
   Inverted mine;
   double worst = 0;  // the smallest ratio found, <= 0
-  std::vector<double> x;
   for (const auto& cell : cells_) {
-    const auto n = cell.overlap.size();
-    x.assign(n * static_cast<std::size_t>(dim_), 0.0);
-    for (std::size_t k = 0; k < n; ++k)
-      for (int i = 0; i < dim_; ++i) {
-        const auto r = static_cast<std::size_t>(cell.overlap[k] * dim_ + i);
-        x[k * static_cast<std::size_t>(dim_) + static_cast<std::size_t>(i)] =
-            reference_[r] + d(r, 0);
-      }
-    if (cell_geometry(cell.type, x.data()).min_corner_det > 0) continue;  // the common case
-    const auto now = corner_jacobians(cell.type, x);
+    const auto now = cell_corner_jacobians(cell.type, corners(cell, d.data()).data());
     for (std::size_t c = 0; c < now.size(); ++c) {
       const double ratio = now[c] / cell.corner_det[c];
       if (ratio > worst || (ratio == worst && mine.cell >= 0 && cell.number + 1 >= mine.cell))

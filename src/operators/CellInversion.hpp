@@ -56,6 +56,8 @@ class CellInversion {
     std::size_t part;
     std::vector<double> corner_det;  ///< every corner's reference Jacobian
   };
+  /// The node coordinates of a cell, displaced by d (overlap dofs; the reference without).
+  std::vector<double> corners(const Cell& cell, const double* d) const;
   std::vector<Cell> cells_;
   std::vector<std::string> part_names_;
   std::vector<double> reference_;  ///< overlap node coordinates, dimension each

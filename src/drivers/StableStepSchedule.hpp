@@ -1,0 +1,43 @@
+// When an explicit stage re-estimates its stable time step (docs/explicit.md, "Time step").
+//
+// The stable step follows the deformation: it is re-estimated when the strain since the last
+// estimate, max |grad (d - d_est)| over the finite-strain parts' points, reaches
+// dt_update_strain (their stiffness, and so omega_max, changes with strain; a small-strain part's
+// does not: elastic probes take plasticity out, contact and walls enter by constant terms), when
+// points have eroded since (the stiffness falls: the step may grow, and with every point eroded
+// the stage stops), or after dt_update_interval steps. The strain is measured at steps predicted
+// from its growth so far (half the remaining way, linearly, at most doubling the distance to the
+// last estimate): a few gradient passes per estimate, not one per step. An impact that shrinks
+// the stable step tenfold within a few dozen steps (the Taylor bar) is followed at once; a steady
+// run pays for a few estimates. Linear elastic parts keep the plan's estimate: their K is
+// constant, so is omega_max of M^-1 K; at 1e6 particles each re-estimate took 9 s, some 16 steps'
+// worth.
+#pragma once
+
+#include "operators/ModelOperators.hpp"
+#include "scene/Scene.hpp"
+
+namespace efg {
+
+class StableStepSchedule {
+ public:
+  /// `active`: re-estimates at all (not with a fixed dt, nor when every part is linear elastic);
+  /// d: the displacements of the plan's estimate.
+  StableStepSchedule(const ModelOperators& ops, const StageSpec& stage, bool active,
+                     const Vector& d);
+  /// Whether the stable step is to be re-estimated after `steps` steps at displacements d
+  /// (collective).
+  bool due(long long steps, const Vector& d);
+  /// A re-estimate was made after `steps` steps at d.
+  void estimated(long long steps, const Vector& d);
+
+ private:
+  const ModelOperators& ops_;
+  bool active_;
+  double update_strain_;
+  long long refresh_;
+  Vector d_estimated_, change_;
+  long long estimated_at_ = 0, next_check_ = 1, eroded_at_estimate_ = 0, eroded_ = 0;
+};
+
+}  // namespace efg
