@@ -418,6 +418,7 @@ ExplicitSummary ExplicitDriver::run(RunState& state, const StateOutput& output, 
   summary.smallest_dt = summary.largest_dt = dt;
   summary.first_dt_crit = summary.smallest_dt_crit = dt_crit;
   summary.stable_step_source = stable_.source();
+  const long long lanczos_at_start = stable_.lanczos_runs();
   double next_output = std::min(end, start_time + interval);
   double reference_energy = std::max(state.initial_energy, 1e-300);
   EnergyBalanceCheck balance(stage_.name, stage_.settings["energy_balance_limit"].as<double>());
@@ -426,7 +427,8 @@ ExplicitSummary ExplicitDriver::run(RunState& state, const StateOutput& output, 
   // Re-estimates follow the strain and erosion (drivers/StableStepSchedule); linear elastic
   // parts keep the plan's estimate.
   StableStepSchedule schedule(ops_, stage_,
-                              !fixed && !ops_.model().scene.every_part_linear_elastic(), state.d);
+                              !fixed && !ops_.model().scene.every_part_linear_elastic(), state.d,
+                              dt_crit);
   // Trapezoids of the kinetic and internal energies over the records (quasi-static indicator).
   double kinetic_integral = 0, internal_integral = 0, last_record_time = start_time,
          last_kinetic = state.kinetic, last_internal = state.internal;
@@ -450,7 +452,8 @@ ExplicitSummary ExplicitDriver::run(RunState& state, const StateOutput& output, 
       dt = scale * dt_crit;
       summary.smallest_dt_crit = std::min(summary.smallest_dt_crit, dt_crit);
       wall_dt_ = dt;
-      schedule.estimated(summary.steps, state.d);
+      schedule.estimated(summary.steps, state.d, dt_crit);
+      summary.lanczos_estimates = stable_.lanczos_runs() - lanczos_at_start;
     }
     const double step_dt = std::min(dt, end - state.time);
     advance(state, step_dt, summary.steps + 1, output);

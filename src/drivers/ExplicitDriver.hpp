@@ -31,6 +31,9 @@ using StateOutput = std::function<void(const RunState&)>;
 struct ExplicitSummary {
   long long steps = 0;
   long long dt_estimates = 0;  ///< stable-step estimates during the stage (the plan's not counted)
+  /// Of those, the ones that ran Lanczos steps (the others followed the rows' bounds, or were
+  /// the bound, dense or converged: StableTimeStep::source).
+  long long lanczos_estimates = 0;
   double smallest_dt = 0, largest_dt = 0, worst_balance_error = 0;
   /// Quasi-static indicator of a forming stage, from the records: the time integral of the
   /// kinetic energy over that of the internal energy (trapezoids), and their ratio at the end.

@@ -11,8 +11,9 @@
 //   safety factor kLanczosSafety, capped by the bound: min(bound, 1.1 theta). theta <= lambda_max
 //   always (a Rayleigh quotient); 24 steps from a start vector with every mode in it reach
 //   0.95-1.0 lambda_max on the explicit scenes of tests/cli/check_stable_step_margin.py.
-//   Re-estimates in between follow the bound, scaled by the last Lanczos estimate's ratio to it,
-//   while the bound moves by less than 10 % (at most 8 in a row).
+//   Re-estimates in between scale the last Lanczos estimate by the largest growth of the rows'
+//   bounds since (a stiffness that grew nowhere by more than g moved lambda_max by at most g),
+//   while that growth is at most 10 % (at most 8 in a row).
 // - converged: Krylov-Schur run to convergence, bound theta + ||A y - theta y|| (Parlett, "The
 //   Symmetric Eigenvalue Problem", Thm. 4.5.1: an eigenvalue lies within the residual norm of
 //   the Ritz value), the reference the others are measured against; 10-20 times the products.
@@ -75,6 +76,8 @@ class StableTimeStep {
   /// What the last estimate's lambda_max came from: "dense", "bound", "lanczos", "tracked
   /// bound" (the bound times the last Lanczos estimate's ratio to it), "converged".
   const std::string& source() const { return source_; }
+  /// How many estimates so far ran the Lanczos steps (the costly ones: kLanczosSteps products).
+  long long lanczos_runs() const { return lanczos_runs_; }
 
  private:
   /// dt_crit of a bound on the largest eigenvalue of M^-1 K (sets omega_; throws when it is 0
@@ -92,12 +95,17 @@ class StableTimeStep {
                                      std::string& failure);
   /// max c / m of the row bounds at d (empty where no bound exists).
   std::optional<double> row_bound(const Vector& d);
+  /// The largest ratio of a row's bound (rows_) to its value at the last Lanczos estimate
+  /// (infinite where that was 0 and now is not).
+  double row_growth() const;
   /// The converged estimate (Krylov-Schur, the dense fallback for small models), or throws.
   double converged_step(const Teuchos::RCP<Tpetra::Operator<>>& A, const Map& map);
 
   InternalForce internal_force_;
   std::function<void(bool)> elastic_probe_;  ///< plastic points probed elastically while on
   Vector inv_sqrt_mass_, start_;
+  /// The rows' bounds c of the last bound pass, and of the last Lanczos estimate.
+  Vector rows_, lanczos_rows_;
   double wall_penalty_;
   ExtraStiffness extra_;
   StableStepMethod method_;
@@ -105,10 +113,11 @@ class StableTimeStep {
   std::function<bool(const Vector& d, Vector& c)> row_bounds_;
   Vector mass_;
   double omega_ = 0, ritz_ = 0, residual_ = 0, guaranteed_ = 0;
-  /// The bound at the last Lanczos estimate, that estimate over it, and the re-estimates that
-  /// followed the bound since (sharpened).
-  double lanczos_bound_ = 0, lanczos_ratio_ = 1;
+  /// The last Lanczos estimate of lambda_max, and the re-estimates that followed the rows'
+  /// bounds since (sharpened).
+  double lanczos_estimate_ = 0;
   int tracked_ = 0;
+  long long lanczos_runs_ = 0;
   std::string source_;
 };
 

@@ -87,6 +87,7 @@ void write_explicit_stages(std::ostream& o, const Scene& scene,
       << ", \"smallest_stable_step\": " << number(st.smallest_dt_crit)
       << ", \"stable_step_source\": " << quoted(st.stable_step_source)
       << ", \"stable_step_estimates\": " << st.dt_estimates
+      << ", \"stable_step_lanczos_estimates\": " << st.lanczos_estimates
       << ", \"worst_energy_balance_error\": " << number(st.worst_balance_error)
       << ", \"kinetic_to_internal_mean\": " << number(st.kinetic_to_internal_mean)
       << ", \"kinetic_to_internal_end\": " << number(st.kinetic_to_internal_end)

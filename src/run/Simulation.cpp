@@ -203,7 +203,7 @@ RunOutcome run_stages(const CommPtr& comm, const Model& model, const std::string
           << 100 * s.worst_balance_error << " %, kinetic / internal energy "
           << s.kinetic_to_internal_mean << " (time integrals over the stage), "
           << s.kinetic_to_internal_end << " at its end, " << s.dt_estimates
-          << " stable-step re-estimates";
+          << " stable-step re-estimates (" << s.lanczos_estimates << " with Lanczos steps)";
         Log::info(o.str());
       }
     });
