@@ -192,9 +192,10 @@ void expect_bound(const std::string& text, double amplitude) {
   StableTimeStep bound(*ops, driver.mass(), 0.0, {}, StableStepMethod::bound);
   bound.estimate(d);
   EXPECT_EQ(bound.source(), "bound");
-  // A re-estimate at d after a Lanczos estimate at rest follows the bound (scaled by the rest
-  // state's Lanczos-to-bound ratio) while the bound moved by less than 10 %: still never above
-  // the exact step at d, and within 10 % of it.
+  // A re-estimate at d after a Lanczos estimate at rest follows the rows' bounds (the rest
+  // state's estimate times their largest growth g, while g <= 1.25): never above the exact step
+  // at d, and not far below it (g is at least lambda_max's growth, and the step falls as
+  // 1 / sqrt(g): measured 0.88 of the exact step).
   if (amplitude > 0) {
     Vector rest(model.maps.owned_dofs);
     StableTimeStep tracked(*ops, driver.mass());
@@ -203,7 +204,7 @@ void expect_bound(const std::string& text, double amplitude) {
     const double estimate = tracked.estimate(d);
     EXPECT_EQ(tracked.source(), "tracked bound");
     EXPECT_LE(estimate, exact * (1 + 1e-9)) << "tracked " << estimate << ", exact " << exact;
-    EXPECT_GE(estimate, 0.9 * exact) << "tracked " << estimate << ", exact " << exact;
+    EXPECT_GE(estimate, 0.85 * exact) << "tracked " << estimate << ", exact " << exact;
   }
 }
 
@@ -220,6 +221,50 @@ stages:
 )",
                0.0);
   expect_bound(rubber_block("0.45"), 0.05);
+}
+
+// Re-estimates after a Lanczos estimate at rest, at states where one corner of the block is
+// squeezed (the corner x < 1, y < 0.5, z < 0.5 compressed by A in each direction, the rest at
+// rest): the estimate must stay below the exact step there. Squeezed by 3 % it is the rest
+// state's estimate scaled by the largest growth of the rows' bounds ("tracked bound"); by 10 %
+// the rows grew beyond 1.25 and Lanczos steps are run again. Without the growth (the rest
+// state's estimate kept) the 10 % squeeze is 0.8 % above its exact step; tracking the largest
+// bound instead, as before, missed such stiffenings on the steel block of bench/stable_step.sh
+// (lambda_max +41 % while the largest bound moved 10.6 %).
+Vector squeezed_corner(const Model& model, double amount) {
+  Vector squeezed(model.maps.owned_dofs);
+  auto d = squeezed.getLocalViewHost(Tpetra::Access::OverwriteAll);
+  const auto& x = model.mesh.coordinates;
+  for (std::size_t node = 0; node < model.mesh.node_count(); ++node) {
+    const double px = x[3 * node], py = x[3 * node + 1], pz = x[3 * node + 2];
+    const double inside = px < 1.0 && py < 0.5 && pz < 0.5 ? 1.0 : 0.0;
+    d(3 * node, 0) = amount * (1.0 - px) * inside;
+    d(3 * node + 1, 0) = amount * (0.5 - py) * inside;
+    d(3 * node + 2, 0) = amount * (0.5 - pz) * inside;
+  }
+  return squeezed;
+}
+
+TEST(Explicit, StableTimeStepTracksALocalStiffening) {
+  const auto comm = Tpetra::getDefaultComm();
+  if (comm->getSize() > 1) GTEST_SKIP() << "a dense eigenvalue problem on one rank";
+  const auto model = build_model(comm, parse_scene(rubber_block("0.45"), "corner.yaml"));
+  auto ops = std::make_shared<ModelOperators>(model);
+  ExplicitDriver driver(*ops, model.scene.stages.front());
+  StableTimeStep stable(*ops, driver.mass());
+  stable.estimate(Vector(model.maps.owned_dofs));
+  ASSERT_EQ(stable.source(), "lanczos");
+  for (const auto& [amount, source] : {std::pair<double, const char*>{0.03, "tracked bound"},
+                                       std::pair<double, const char*>{0.1, "lanczos"}}) {
+    const auto squeezed = squeezed_corner(model, amount);
+    const double exact = dense_critical_step(model, ops, squeezed, driver.mass());
+    const double estimate = stable.estimate(squeezed);
+    EXPECT_EQ(stable.source(), source) << "squeezed by " << amount;
+    EXPECT_LE(estimate, exact * (1 + 1e-9)) << amount << ": " << estimate << ", exact " << exact;
+    EXPECT_GE(estimate, 0.8 * exact) << amount << ": " << estimate << ", exact " << exact;
+    std::cout << "corner squeezed by " << amount << ": " << stable.source() << " step " << estimate
+              << ", exact " << exact << "\n";
+  }
 }
 
 // The estimate at rest against the exact dt_crit of the implicit path's K: never above it, and
