@@ -48,6 +48,9 @@ h, wp, rp, rd, c, stroke, v = (float(P[k]) for k in ("h", "wp", "rp", "rd", "c",
 E, nu, K, e0, n = (float(P[k]) for k in ("E", "nu", "K", "e0", "n"))
 wd = wp + c
 Ep = E / (1 - nu**2)
+# the scene's damping, 2 omega_1 of the free blank (its comment says why), for the log
+alpha_scene = 2 * 22.373 / (2 * float(P["Lh"])) ** 2 * math.sqrt(
+    Ep * h**2 / 12 / (float(P["rho"]) * float(P["s"])))
 failures = []
 
 
@@ -95,7 +98,8 @@ def run(tag, speed, alpha=None):
                   + row["rb_counter_pad_Fy"] for row in formed_rows if 2 * stroke / 3 < -row["rb_punch_corner_uy"] < stroke - 0.5]
     result["tool_force"] = float(np.mean(tool_force))
     result.update(angles(os.path.join(folder, "strip_draw.e"), T))
-    print(f"{tag}: v = {speed:g} mm/s, damping {variant['parameters']['alpha']}, {result['steps']} steps, "
+    damping = alpha_scene if alpha is None else alpha
+    print(f"{tag}: v = {speed:g} mm/s, damping {damping:.1f} /s, {result['steps']} steps, "
           f"{seconds:.1f} s; K/I end {result['ki_end']:.3g}, mean {result['ki_mean']:.3g}; E_int "
           f"{result['E_int']:.1f}, tools' work {result['W_tools']:.1f}, damping work {result['W_damp']:.1f}; "
           f"dE_int/ds {result['draw_force']:.2f} ({result['window']} records), mean tool force "
