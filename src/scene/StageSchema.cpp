@@ -69,7 +69,7 @@ SpecPtr stage_spec() {
            optional_key(
                "stable_step",
                choice("How the largest frequency of M^-1 K (the stable time step 2 / omega_max) is "
-                      "estimated: sharpened (1.1 x the largest Ritz value of 24 Lanczos steps, "
+                      "estimated: sharpened (1.1 x the largest Ritz value of 12 Lanczos steps, "
                       "capped by the bound; 0.85-0.95 of the critical step with dt_scale 0.9), "
                       "bound (a guaranteed upper bound from the integration points, needing no "
                       "iteration; 0.5-0.8 of the critical step; solid parts without mixed u-p or "
