@@ -70,8 +70,9 @@ void PrescribedMotion::constrain_end(const LoadFactor& end, const Vector& v_half
   }
 }
 
-void PrescribedMotion::support_force(const Vector& mass, const Vector& a_free, Vector& R) const {
-  R.putScalar(0.0);
+void PrescribedMotion::support_force(const Vector& mass, const Vector& a_free, Vector& R,
+                                     bool rows_only) const {
+  if (!rows_only) R.putScalar(0.0);
   auto r = R.getLocalViewHost(Tpetra::Access::ReadWrite);
   const auto m = mass.getLocalViewHost(Tpetra::Access::ReadOnly);
   const auto a = a_free.getLocalViewHost(Tpetra::Access::ReadOnly);

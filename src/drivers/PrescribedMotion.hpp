@@ -34,7 +34,10 @@ class PrescribedMotion {
   /// The force the supports apply to hold the prescribed motion, R = -M a_free on the
   /// constrained entries (a_free: the acceleration before constrain_end), 0 elsewhere. Its work
   /// R . dd is external work: a crush driven by prescribed motion puts its energy in that way.
-  void support_force(const Vector& mass, const Vector& a_free, Vector& R) const;
+  /// `rows_only`: R's other entries are already zero (a vector only this has written) and are
+  /// left alone, sparing a pass over every dof per explicit step.
+  void support_force(const Vector& mass, const Vector& a_free, Vector& R,
+                     bool rows_only = false) const;
   /// sum over the constrained dofs of m (v_end^2 - v_start^2) / 2, over all ranks (collective):
   /// the kinetic energy the supports give those dofs beyond the free forces' work, which
   /// R = -M a_free accounts. A prescribed velocity that changes (v_x = a t) puts energy in with
