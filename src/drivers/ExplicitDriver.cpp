@@ -90,10 +90,16 @@ ExplicitDriver::ExplicitDriver(const ModelOperators& ops, const StageSpec& stage
       spring_owned_(mass_.getMap()),
       mass_v_(mass_.getMap()) {
   inverse_mass_.reciprocal(mass_);
-  // The trapezoids' forces, old and new (account_energy); swapped, not copied, each step, so
-  // these addresses hold. Walls and the bulk viscosity only where they exist: without them their
-  // forces stay zero and so does their work.
-  work_forces_ = {&f_ext_old_, &f_ext_, &f_support_old_, &f_support_};
+  // The trapezoids' forces, old and new, dotted in one pass (account_energy); swapped, not
+  // copied, each step, so these addresses hold. Loads constant in the stage are assembled once:
+  // old and new are the same bits, one dot serves both. The support forces of prescribed
+  // motions alone are nonzero on their rows only (PrescribedMotion::support_work). Walls and
+  // the bulk viscosity only where they exist: without them their forces stay zero, their work
+  // too.
+  constant_loads_ = ops_.loads().constant_in(stage_.name);
+  if (!constant_loads_) work_forces_.push_back(&f_ext_old_);
+  work_forces_.push_back(&f_ext_);
+  if (supports_.active()) work_forces_.insert(work_forces_.end(), {&f_support_old_, &f_support_});
   if (contact_) work_forces_.insert(work_forces_.end(), {&f_wall_old_, &f_wall_});
   if (ops_.mixed()) work_forces_.insert(work_forces_.end(), {&f_viscous_old_, &f_viscous_});
   viscosity_linear_ = stage_.settings["bulk_viscosity_linear"].as<double>();
@@ -102,7 +108,9 @@ ExplicitDriver::ExplicitDriver(const ModelOperators& ops, const StageSpec& stage
 
 std::vector<double> ExplicitDriver::acceleration(double time, double wall_dt, const Vector& d,
                                                  const Vector& v, Vector& a) {
-  ops_.loads().assemble(curve_factor(ops_.model().scene, time, 1.0, stage_.name), f_ext_);
+  if (!constant_loads_ || !loads_assembled_)
+    ops_.loads().assemble(curve_factor(ops_.model().scene, time, 1.0, stage_.name), f_ext_);
+  loads_assembled_ = true;
   ops_.internal_force(d, f_int_);
   if (ops_.mixed()) ops_.bulk_viscosity(v, viscosity_linear_, viscosity_quadratic_, f_viscous_);
   if (supports_.active()) {  // f_int_ carries the weak supports' resistance from here on
@@ -204,8 +212,18 @@ bool ExplicitDriver::account_energy(RunState& state, const Vector& delta_d) cons
   // prescribed motions are external forces too): the dots of work_forces_ with delta_d.
   const auto sums = step_sums(work_forces_, delta_d, state.d, state.v);
   const auto& w = sums.work;
-  state.external_work += 0.5 * (w[0] + w[1]) + 0.5 * (w[2] + w[3]);
-  std::size_t next = 4;
+  std::size_t next = 0;
+  const double ext_old = w[next];
+  if (!constant_loads_) ++next;
+  const double ext = w[next++];
+  std::array<double, 2> support{};
+  if (supports_.active()) {
+    support = {w[next], w[next + 1]};
+    next += 2;
+  } else {
+    support = motion_.support_work(f_support_old_, f_support_, delta_d);
+  }
+  state.external_work += 0.5 * (ext_old + ext) + 0.5 * (support[0] + support[1]);
   if (contact_) {
     state.wall_work += 0.5 * (w[next] + w[next + 1]);
     next += 2;
@@ -330,7 +348,7 @@ void ExplicitDriver::advance(RunState& state, double step_dt, long long step,
   motion_.constrain_velocity(begin, mid, at_end, step_dt, v_half_);
   delta_.update(step_dt, v_half_, 0.0);
   state.d.update(1.0, previous_d_, 1.0, delta_, 0.0);
-  f_ext_old_.swap(f_ext_);
+  if (!constant_loads_) f_ext_old_.swap(f_ext_);
   f_wall_old_.swap(f_wall_);
   f_support_old_.swap(f_support_);
   f_viscous_old_.swap(f_viscous_);

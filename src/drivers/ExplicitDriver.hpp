@@ -115,6 +115,8 @@ class ExplicitDriver {
   Vector spring_x_, spring_y_, spring_owned_;  ///< scratch of the contact springs' product
   Vector mass_v_;                              ///< M v (energies)
   std::vector<const Vector*> work_forces_;     ///< the forces whose work is accounted, old, new
+  bool constant_loads_ = false;  ///< the stage's loads constant in time: f_ext_ assembled once
+  bool loads_assembled_ = false;
 };
 
 }  // namespace efg

@@ -44,6 +44,13 @@ class PrescribedMotion {
   /// a_free = 0; without this share a bar driven that way ended at a 26 % balance error.
   double kinetic_energy_change(const Vector& mass, const Vector& v_start,
                                const Vector& v_end) const;
+  /// {R_old . delta, R_new . delta} over the constrained rows alone (collective), each bit for bit
+  /// reproducible_dot over every row when R is zero elsewhere (support_force with rows_only
+  /// wrote it): the skipped terms are zeros, and the constrained rows' terms are added in the same
+  /// blocks in the same order (parallel/ReproducibleSum.hpp). A per-step energy account that
+  /// read two whole vectors for a few rows.
+  std::array<double, 2> support_work(const Vector& R_old, const Vector& R_new,
+                                     const Vector& delta) const;
   /// The support force summed per boundary condition and direction (collective): the reaction
   /// columns R_<condition>_<axis> of an explicit run, with the implicit drivers' sign (the force
   /// the support applies to the body). A dof named by several conditions counts for the first.
@@ -65,6 +72,7 @@ class PrescribedMotion {
     }
   };
   std::vector<Dof> dofs_;
+  std::vector<int> rows_;  ///< the constrained rows, ascending
   std::size_t conditions_ = 0;
 };
 
