@@ -22,13 +22,19 @@
 
 namespace efg {
 namespace {
-// Stops a running timer for its scope (and restarts it, also when an exception leaves it).
+// Stops a running timer for its scope (and restarts it, also when an exception leaves it); a
+// stopped one stays stopped.
 struct PausedTimer {
-  explicit PausedTimer(Teuchos::Time& t) : timer(t) { timer.stop(); }
-  ~PausedTimer() { timer.start(); }
+  explicit PausedTimer(Teuchos::Time& t) : timer(t), running(t.isRunning()) {
+    if (running) timer.stop();
+  }
+  ~PausedTimer() {
+    if (running) timer.start();
+  }
   PausedTimer(const PausedTimer&) = delete;
   PausedTimer& operator=(const PausedTimer&) = delete;
   Teuchos::Time& timer;
+  const bool running;
 };
 
 // The stage's lumped mass: the row-sum mass times its mass_scale (uniform mass scaling).
@@ -419,6 +425,9 @@ ExplicitSummary ExplicitDriver::run(RunState& state, const StateOutput& output, 
   double dt_crit = plan.dt_crit, dt = plan.dt;
   wall_dt_ = dt;
   start(state, dt);
+  // The steps' phase holds the steps and their guards alone: the stable-step estimates and the
+  // records are phases of their own (`stable time step`, `output`).
+  auto& steps_timer = *Teuchos::TimeMonitor::getNewCounter("efg: explicit time steps");
   auto record = [&] {
     // Constrained rows: the constraint's share R = -M a_free; the boundary terms (of every
     // condition, on every row they reach) are counted by their own condition's totals.
@@ -431,6 +440,7 @@ ExplicitSummary ExplicitDriver::run(RunState& state, const StateOutput& output, 
         for (std::size_t k = 0; k < 3; ++k) state.reactions[c][k] += weak[c][k];
     }
     if (contact_) state.contact_penetrations = contact_->take_penetrations();
+    const PausedTimer paused(steps_timer);
     output(state);
   };
   if (record_start) record();
@@ -452,12 +462,10 @@ ExplicitSummary ExplicitDriver::run(RunState& state, const StateOutput& output, 
   // Trapezoids of the kinetic and internal energies over the records (quasi-static indicator).
   double kinetic_integral = 0, internal_integral = 0, last_record_time = start_time,
          last_kinetic = state.kinetic, last_internal = state.internal;
-  auto& steps_timer = *Teuchos::TimeMonitor::getNewCounter("efg: explicit time steps");
   Teuchos::TimeMonitor timer(steps_timer);
   while (state.time < end - 1e-12 * span) {
     if (schedule.due(summary.steps, state.d)) {
-      // The estimate is the `stable time step` phase: the steps' phase holds the steps alone.
-      const PausedTimer paused(steps_timer);
+      const PausedTimer paused(steps_timer);  // the estimate: its own phase
       try {
         dt_crit = stable_step(state.d);
       } catch (const std::exception& e) {
