@@ -346,14 +346,14 @@ void ExplicitDriver::advance(RunState& state, double step_dt, long long step,
   // The step's start is kept for a failed step (restore_previous) and the trapezoids' old forces
   // for the account by swapping, not copying: the state's vectors are all written anew below
   // (d, v from the kept start; a and the forces by acceleration, the support forces on the rows
-  // they use), with the bits of the copy-then-update this replaced (d + delta = 1 d + 1 delta).
+  // they use), with the bits of the copies and updates this replaced (d + delta = 1 d + 1 delta).
   previous_d_.swap(state.d);
   previous_v_.swap(state.v);
   previous_a_.swap(state.a);
-  v_half_.update(1.0, previous_v_, 0.5 * step_dt, previous_a_, 0.0);
+  // The predictor in one pass, then again on the rows whose v_half the motions prescribe.
+  predict(step_dt, previous_d_, previous_v_, previous_a_, v_half_, delta_, state.d);
   motion_.constrain_velocity(begin, mid, at_end, step_dt, v_half_);
-  delta_.update(step_dt, v_half_, 0.0);
-  state.d.update(1.0, previous_d_, 1.0, delta_, 0.0);
+  predict_rows(motion_.rows(), step_dt, previous_d_, v_half_, delta_, state.d);
   if (!constant_loads_) f_ext_old_.swap(f_ext_);
   f_wall_old_.swap(f_wall_);
   f_support_old_.swap(f_support_);

@@ -56,6 +56,39 @@ DeviceView<double**> block_sums_of(std::index_sequence<N...>,
 
 }  // namespace
 
+void predict(double dt, const Vector& d_start, const Vector& v, const Vector& a, Vector& v_half,
+             Vector& delta, Vector& d) {
+  const auto d0 = d_start.getLocalViewDevice(Tpetra::Access::ReadOnly);
+  const auto v0 = v.getLocalViewDevice(Tpetra::Access::ReadOnly);
+  const auto a0 = a.getLocalViewDevice(Tpetra::Access::ReadOnly);
+  auto vh = v_half.getLocalViewDevice(Tpetra::Access::OverwriteAll);
+  auto dd = delta.getLocalViewDevice(Tpetra::Access::OverwriteAll);
+  auto d1 = d.getLocalViewDevice(Tpetra::Access::OverwriteAll);
+  const double half = 0.5 * dt;
+  Kokkos::parallel_for(
+      "efg::predict", Kokkos::RangePolicy<ExecSpace>(0, d1.extent(0)),
+      KOKKOS_LAMBDA(const std::size_t k) {
+        const double w = v0(k, 0) + half * a0(k, 0);
+        const double step = dt * w;
+        vh(k, 0) = w;
+        dd(k, 0) = step;
+        d1(k, 0) = d0(k, 0) + step;
+      });
+}
+
+void predict_rows(const std::vector<int>& rows, double dt, const Vector& d_start,
+                  const Vector& v_half, Vector& delta, Vector& d) {
+  const auto d0 = d_start.getLocalViewHost(Tpetra::Access::ReadOnly);
+  const auto vh = v_half.getLocalViewHost(Tpetra::Access::ReadOnly);
+  auto dd = delta.getLocalViewHost(Tpetra::Access::ReadWrite);
+  auto d1 = d.getLocalViewHost(Tpetra::Access::ReadWrite);
+  for (const int row : rows) {
+    const auto k = static_cast<std::size_t>(row);
+    dd(k, 0) = dt * vh(k, 0);
+    d1(k, 0) = d0(k, 0) + dd(k, 0);
+  }
+}
+
 void acceleration_from_forces(const Vector& f_ext, const Vector& f_int, const Vector* f_wall,
                               const Vector* f_viscous, const Vector& inverse_mass, Vector& a) {
   const auto fe = f_ext.getLocalViewDevice(Tpetra::Access::ReadOnly);

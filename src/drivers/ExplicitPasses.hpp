@@ -13,6 +13,14 @@
 
 namespace efg {
 
+/// The step's predictor in one pass: v_half = v + dt/2 a, delta = dt v_half, d = d_start + delta.
+void predict(double dt, const Vector& d_start, const Vector& v, const Vector& a, Vector& v_half,
+             Vector& delta, Vector& d);
+/// delta and d again on `rows` alone, after their v_half was overwritten there (prescribed
+/// motions: PrescribedMotion::constrain_velocity).
+void predict_rows(const std::vector<int>& rows, double dt, const Vector& d_start,
+                  const Vector& v_half, Vector& delta, Vector& d);
+
 /// a = M^-1 (f_ext - f_int [+ f_wall] [- f_viscous]) in one pass (the terms in that order: the
 /// separate updates' rounding). Null `f_wall` or `f_viscous`: no such term.
 void acceleration_from_forces(const Vector& f_ext, const Vector& f_int, const Vector* f_wall,

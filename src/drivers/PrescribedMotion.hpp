@@ -49,6 +49,8 @@ class PrescribedMotion {
   /// wrote it): the skipped terms are zeros, and the constrained rows' terms are added in the same
   /// blocks in the same order (parallel/ReproducibleSum.hpp). A per-step energy account that
   /// read two whole vectors for a few rows.
+  /// The constrained rows (owned dofs), ascending.
+  const std::vector<int>& rows() const { return rows_; }
   std::array<double, 2> support_work(const Vector& R_old, const Vector& R_new,
                                      const Vector& delta) const;
   /// The support force summed per boundary condition and direction (collective): the reaction
