@@ -9,7 +9,8 @@
 # the kernel's, their ratio (issue 56's target: <= 1.2), and setup (scene and mesh, partition,
 # neighbour search, shape functions and integration: the phases of bench/scale.sh) in the
 # driver's steps (target: <= 20), with the setup phases one by one. Not part of the test suite.
-#   bench/driver_step.sh [--cells NX] [--rounds R]
+#   bench/driver_step.sh [--cells NX] [--rounds R] [--driver EFG]   (EFG: another build's efg,
+#                                                                      e.g. an older one)
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${EFG_BUILD_DIR:-$here/build}"
@@ -21,6 +22,7 @@ while [ $# -gt 0 ]; do
   case "$1" in
     --cells) nx="$2"; shift 2 ;;
     --rounds) rounds="$2"; shift 2 ;;
+    --driver) efg="$2"; shift 2 ;;
     *) echo "bench/driver_step.sh: unknown option $1" >&2; exit 2 ;;
   esac
 done
