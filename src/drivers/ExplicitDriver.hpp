@@ -67,8 +67,9 @@ class ExplicitDriver {
   /// boundary terms; returns the wall forces. Exposed for tests. `wall_dt` sets the walls' penalty
   /// stiffness p m / wall_dt^2 (contact/PenaltyContact): the stage's step, not a shortened last
   /// step.
+  /// With `v_end`, also v_end = v + half_dt a in the same pass (the step's corrector).
   std::vector<double> acceleration(double time, double wall_dt, const Vector& d, const Vector& v,
-                                   Vector& a);
+                                   Vector& a, Vector* v_end = nullptr, double half_dt = 0);
 
  private:
   /// dt_crit at d: StableTimeStep's, the eigenvalue of M^-1 (K + K_c) with the contacts'

@@ -20,7 +20,8 @@ template <std::size_t N>
 DeviceView<double**> block_sums(const std::vector<const Vector*>& forces, const ConstView& delta,
                                 const ConstView& d, const ConstView& v) {
   Kokkos::Array<ConstView, N == 0 ? 1 : N> f;
-  for (std::size_t i = 0; i < N; ++i) f[i] = forces[i]->getLocalViewDevice(Tpetra::Access::ReadOnly);
+  for (std::size_t i = 0; i < N; ++i)
+    f[i] = forces[i]->getLocalViewDevice(Tpetra::Access::ReadOnly);
   const std::size_t n = delta.extent(0);
   const std::size_t blocks = (n + block_size - 1) / block_size;
   DeviceView<double**> partial(Kokkos::view_alloc(Kokkos::WithoutInitializing, "efg::step sums"),
@@ -34,8 +35,8 @@ DeviceView<double**> block_sums(const std::vector<const Vector*>& forces, const 
         for (std::size_t k = b * block_size; k < end; ++k) {
           const double dk = delta(k, 0);
           for (std::size_t i = 0; i < N; ++i) s[i] += f[i](k, 0) * dk;
-          bad |= !(Kokkos::Experimental::isfinite(d(k, 0)) &&
-                   Kokkos::Experimental::isfinite(v(k, 0)));
+          bad |=
+              !(Kokkos::Experimental::isfinite(d(k, 0)) && Kokkos::Experimental::isfinite(v(k, 0)));
         }
         for (std::size_t i = 0; i < N; ++i) partial(b, i) = s[i];
         partial(b, N) = bad;
@@ -45,9 +46,8 @@ DeviceView<double**> block_sums(const std::vector<const Vector*>& forces, const 
 
 template <std::size_t... N>
 DeviceView<double**> block_sums_of(std::index_sequence<N...>,
-                                   const std::vector<const Vector*>& forces,
-                                   const ConstView& delta, const ConstView& d,
-                                   const ConstView& v) {
+                                   const std::vector<const Vector*>& forces, const ConstView& delta,
+                                   const ConstView& d, const ConstView& v) {
   DeviceView<double**> partial;
   // The one instantiation for forces.size() (0 .. max_forces).
   ((forces.size() == N ? (partial = block_sums<N>(forces, delta, d, v), 0) : 0), ...);
@@ -90,7 +90,8 @@ void predict_rows(const std::vector<int>& rows, double dt, const Vector& d_start
 }
 
 void acceleration_from_forces(const Vector& f_ext, const Vector& f_int, const Vector* f_wall,
-                              const Vector* f_viscous, const Vector& inverse_mass, Vector& a) {
+                              const Vector* f_viscous, const Vector& inverse_mass, Vector& a,
+                              const Vector* v_half, double half_dt, Vector* v_end) {
   const auto fe = f_ext.getLocalViewDevice(Tpetra::Access::ReadOnly);
   const auto fi = f_int.getLocalViewDevice(Tpetra::Access::ReadOnly);
   const auto im = inverse_mass.getLocalViewDevice(Tpetra::Access::ReadOnly);
@@ -98,13 +99,19 @@ void acceleration_from_forces(const Vector& f_ext, const Vector& f_int, const Ve
   const auto fw = (wall ? *f_wall : f_ext).getLocalViewDevice(Tpetra::Access::ReadOnly);
   const auto fv = (viscous ? *f_viscous : f_ext).getLocalViewDevice(Tpetra::Access::ReadOnly);
   auto out = a.getLocalViewDevice(Tpetra::Access::OverwriteAll);
+  const bool corrector = v_end != nullptr && v_half != nullptr;
+  const auto vh = (corrector ? *v_half : f_ext).getLocalViewDevice(Tpetra::Access::ReadOnly);
+  // (an unused stand-in view when there is no corrector: the lambda needs one of its type)
+  auto ve = corrector ? v_end->getLocalViewDevice(Tpetra::Access::OverwriteAll) : decltype(out)();
   Kokkos::parallel_for(
       "efg::acceleration", Kokkos::RangePolicy<ExecSpace>(0, out.extent(0)),
       KOKKOS_LAMBDA(const std::size_t k) {
         double t = fe(k, 0) - fi(k, 0);
         if (wall) t = t + fw(k, 0);
         if (viscous) t = t - fv(k, 0);
-        out(k, 0) = im(k, 0) * t;
+        const double acc = im(k, 0) * t;
+        out(k, 0) = acc;
+        if (corrector) ve(k, 0) = vh(k, 0) + half_dt * acc;
       });
 }
 

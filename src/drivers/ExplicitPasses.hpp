@@ -22,9 +22,12 @@ void predict_rows(const std::vector<int>& rows, double dt, const Vector& d_start
                   const Vector& v_half, Vector& delta, Vector& d);
 
 /// a = M^-1 (f_ext - f_int [+ f_wall] [- f_viscous]) in one pass (the terms in that order: the
-/// separate updates' rounding). Null `f_wall` or `f_viscous`: no such term.
+/// separate updates' rounding). Null `f_wall` or `f_viscous`: no such term. With `v_end` also
+/// v_end = v_half + half_dt a (the step's corrector) in the same pass.
 void acceleration_from_forces(const Vector& f_ext, const Vector& f_int, const Vector* f_wall,
-                              const Vector* f_viscous, const Vector& inverse_mass, Vector& a);
+                              const Vector* f_viscous, const Vector& inverse_mass, Vector& a,
+                              const Vector* v_half = nullptr, double half_dt = 0,
+                              Vector* v_end = nullptr);
 
 /// What the end of a step needs summed over the owned dofs (collective).
 struct StepSums {

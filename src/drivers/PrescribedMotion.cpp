@@ -100,7 +100,7 @@ double PrescribedMotion::kinetic_energy_change(const Vector& mass, const Vector&
 }
 
 std::array<double, 2> PrescribedMotion::support_work(const Vector& R_old, const Vector& R_new,
-                                                    const Vector& delta) const {
+                                                     const Vector& delta) const {
   const auto r0 = R_old.getLocalViewHost(Tpetra::Access::ReadOnly);
   const auto r1 = R_new.getLocalViewHost(Tpetra::Access::ReadOnly);
   const auto dd = delta.getLocalViewHost(Tpetra::Access::ReadOnly);
