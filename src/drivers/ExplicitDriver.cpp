@@ -12,6 +12,7 @@
 #include "core/Errors.hpp"
 #include "core/Log.hpp"
 #include "core/Progress.hpp"
+#include "drivers/ExplicitPasses.hpp"
 #include "drivers/StableStepSchedule.hpp"
 #include "parallel/Collective.hpp"
 #include "parallel/ExitReport.hpp"
@@ -21,6 +22,21 @@
 
 namespace efg {
 namespace {
+// Stops a running timer for its scope (and restarts it, also when an exception leaves it); a
+// stopped one stays stopped.
+struct PausedTimer {
+  explicit PausedTimer(Teuchos::Time& t) : timer(t), running(t.isRunning()) {
+    if (running) timer.stop();
+  }
+  ~PausedTimer() {
+    if (running) timer.start();
+  }
+  PausedTimer(const PausedTimer&) = delete;
+  PausedTimer& operator=(const PausedTimer&) = delete;
+  Teuchos::Time& timer;
+  const bool running;
+};
+
 // The stage's lumped mass: the row-sum mass times its mass_scale (uniform mass scaling).
 Vector stage_mass(const ModelOperators& ops, const StageSpec& stage) {
   Vector mass = lumped_mass(ops);
@@ -77,15 +93,31 @@ ExplicitDriver::ExplicitDriver(const ModelOperators& ops, const StageSpec& stage
       damping_(mass_damping_of(ops, stage), mass_),
       spring_x_(ops.model().maps.overlap_dofs),
       spring_y_(ops.model().maps.overlap_dofs),
-      spring_owned_(mass_.getMap()) {
+      spring_owned_(mass_.getMap()),
+      mass_v_(mass_.getMap()) {
   inverse_mass_.reciprocal(mass_);
+  // The trapezoids' forces, old and new, dotted in one pass (account_energy); swapped, not
+  // copied, each step, so these addresses hold. Loads constant in the stage are assembled once:
+  // old and new are the same bits, one dot serves both. The support forces of prescribed
+  // motions alone are nonzero on their rows only (PrescribedMotion::support_work). Walls and
+  // the bulk viscosity only where they exist: without them their forces stay zero, their work
+  // too.
+  constant_loads_ = ops_.loads().constant_in(stage_.name);
+  if (!constant_loads_) work_forces_.push_back(&f_ext_old_);
+  work_forces_.push_back(&f_ext_);
+  if (supports_.active()) work_forces_.insert(work_forces_.end(), {&f_support_old_, &f_support_});
+  if (contact_) work_forces_.insert(work_forces_.end(), {&f_wall_old_, &f_wall_});
+  if (ops_.mixed()) work_forces_.insert(work_forces_.end(), {&f_viscous_old_, &f_viscous_});
   viscosity_linear_ = stage_.settings["bulk_viscosity_linear"].as<double>();
   viscosity_quadratic_ = stage_.settings["bulk_viscosity_quadratic"].as<double>();
 }
 
 std::vector<double> ExplicitDriver::acceleration(double time, double wall_dt, const Vector& d,
-                                                 const Vector& v, Vector& a) {
-  ops_.loads().assemble(curve_factor(ops_.model().scene, time, 1.0, stage_.name), f_ext_);
+                                                 const Vector& v, Vector& a, Vector* v_end,
+                                                 double half_dt) {
+  if (!constant_loads_ || !loads_assembled_)
+    ops_.loads().assemble(curve_factor(ops_.model().scene, time, 1.0, stage_.name), f_ext_);
+  loads_assembled_ = true;
   ops_.internal_force(d, f_int_);
   if (ops_.mixed()) ops_.bulk_viscosity(v, viscosity_linear_, viscosity_quadratic_, f_viscous_);
   if (supports_.active()) {  // f_int_ carries the weak supports' resistance from here on
@@ -93,18 +125,17 @@ std::vector<double> ExplicitDriver::acceleration(double time, double wall_dt, co
     f_int_.update(1.0, supports_.resistance(d), 1.0);
   }
   std::vector<double> wall_forces;
-  f_wall_.putScalar(0.0);
-  if (contact_) {  // rigid walls and contacts: forces on the particles
+  if (contact_) {  // rigid walls and contacts: forces on the particles (else f_wall_ stays 0)
+    f_wall_.putScalar(0.0);
     ops_.to_overlap(d, d_overlap_);
     wall_overlap_.putScalar(0.0);
     contact_->add_forces(d_overlap_, wall_dt, wall_overlap_);
     wall_forces = contact_->wall_forces();
     ops_.to_owned(wall_overlap_, f_wall_);
   }
-  a.update(1.0, f_ext_, -1.0, f_int_, 0.0);
-  a.update(1.0, f_wall_, 1.0);
-  if (ops_.mixed()) a.update(-1.0, f_viscous_, 1.0);
-  a.elementWiseMultiply(1.0, inverse_mass_, a, 0.0);
+  acceleration_from_forces(f_ext_, f_int_, contact_ ? &f_wall_ : nullptr,
+                           ops_.mixed() ? &f_viscous_ : nullptr, inverse_mass_, a,
+                           v_end ? &v : nullptr, half_dt, v_end);
   return wall_forces;
 }
 
@@ -137,22 +168,6 @@ double ExplicitDriver::stable_step(const Vector& d) {
   const double omega = stable_.largest_frequency();
   return std::min(dt_crit, contact::damped_stable_step(omega * omega, 4.0 * damping * std::sqrt(w2),
                                                        largest_wall_penalty(ops_.model().scene)));
-}
-
-bool ExplicitDriver::finite(const RunState& state) const {
-  const auto d = state.d.getLocalViewDevice(Tpetra::Access::ReadOnly);
-  const auto v = state.v.getLocalViewDevice(Tpetra::Access::ReadOnly);
-  int ok = 1;
-  Kokkos::parallel_reduce(
-      "efg::finite_state", Kokkos::RangePolicy<ExecSpace>(0, d.extent(0)),
-      KOKKOS_LAMBDA(const std::size_t k, int& good) {
-        good = good && Kokkos::Experimental::isfinite(d(k, 0)) &&
-               Kokkos::Experimental::isfinite(v(k, 0));
-      },
-      Kokkos::Min<int>(ok));
-  int all = 0;
-  Teuchos::reduceAll(*state.d.getMap()->getComm(), Teuchos::REDUCE_MIN, ok, Teuchos::outArg(all));
-  return all == 1;
 }
 
 std::string ExplicitDriver::particle_label(long long particle) const {
@@ -200,17 +215,29 @@ void ExplicitDriver::refuse_endless(double span, double dt, double dt_crit) cons
   refuse_endless_stage(ops_.model().scene.file, stage_.name, span, dt, dt_crit);
 }
 
-void ExplicitDriver::account_energy(RunState& state, const Vector& delta_d) const {
+bool ExplicitDriver::account_energy(RunState& state, const Vector& delta_d) const {
   // Trapezoidal work of the external, support and wall forces over the step (the supports of
-  // prescribed motions are external forces too).
-  state.external_work +=
-      0.5 * (reproducible_dot(f_ext_old_, delta_d) + reproducible_dot(f_ext_, delta_d)) +
-      0.5 * (reproducible_dot(f_support_old_, delta_d) + reproducible_dot(f_support_, delta_d));
-  state.wall_work +=
-      0.5 * (reproducible_dot(f_wall_old_, delta_d) + reproducible_dot(f_wall_, delta_d));
-  if (ops_.mixed())
-    state.damping_work +=
-        0.5 * (reproducible_dot(f_viscous_old_, delta_d) + reproducible_dot(f_viscous_, delta_d));
+  // prescribed motions are external forces too): the dots of work_forces_ with delta_d.
+  const auto sums = step_sums(work_forces_, delta_d, state.d, state.v);
+  const auto& w = sums.work;
+  std::size_t next = 0;
+  const double ext_old = w[next];
+  if (!constant_loads_) ++next;
+  const double ext = w[next++];
+  std::array<double, 2> support{};
+  if (supports_.active()) {
+    support = {w[next], w[next + 1]};
+    next += 2;
+  } else {
+    support = motion_.support_work(f_support_old_, f_support_, delta_d);
+  }
+  state.external_work += 0.5 * (ext_old + ext) + 0.5 * (support[0] + support[1]);
+  if (contact_) {
+    state.wall_work += 0.5 * (w[next] + w[next + 1]);
+    next += 2;
+  }
+  if (ops_.mixed()) state.damping_work += 0.5 * (w[next] + w[next + 1]);
+  return sums.finite;
 }
 
 ExplicitDriver::StepPlan ExplicitDriver::plan_steps(const Vector& d, double start) {
@@ -257,12 +284,11 @@ std::array<double, 3> ExplicitDriver::momentum(const Vector& mass_times_v) const
 }
 
 void ExplicitDriver::energies(RunState& state) {
-  Vector mv(mass_.getMap());
-  mv.elementWiseMultiply(1.0, mass_, state.v, 0.0);
-  state.kinetic = 0.5 * reproducible_dot(mv, state.v);
+  mass_v_.elementWiseMultiply(1.0, mass_, state.v, 0.0);
+  state.kinetic = 0.5 * reproducible_dot(mass_v_, state.v);
   if (contact_) {
     state.kinetic += contact_->kinetic_energy();
-    state.momentum = momentum(mv);
+    state.momentum = momentum(mass_v_);
   }
   ops_.to_overlap(state.d, d_overlap_);
   const double mine = ops_.strain_energy(d_overlap_);
@@ -271,7 +297,9 @@ void ExplicitDriver::energies(RunState& state) {
 }
 
 void ExplicitDriver::support_forces(const Vector& a_free) {
-  motion_.support_force(mass_, a_free, f_support_);
+  // Without weak supports f_support_ and f_support_old_ (swapped each step) are only ever
+  // written on the constrained rows: the rest stay zero and need no pass.
+  motion_.support_force(mass_, a_free, f_support_, !supports_.active());
   if (supports_.active()) f_support_.update(-1.0, supports_.last(), 1.0);
 }
 
@@ -317,18 +345,21 @@ void ExplicitDriver::advance(RunState& state, double step_dt, long long step,
   const auto begin = curve_factor(scene, state.time, 1.0);
   const auto mid = curve_factor(scene, state.time + 0.5 * step_dt, 1.0);
   const auto at_end = curve_factor(scene, state.time + step_dt, 1.0);
-  Tpetra::deep_copy(previous_d_, state.d);
-  Tpetra::deep_copy(previous_v_, state.v);
-  Tpetra::deep_copy(previous_a_, state.a);
-  Tpetra::deep_copy(v_half_, state.v);
-  v_half_.update(0.5 * step_dt, state.a, 1.0);
+  // The step's start is kept for a failed step (restore_previous) and the trapezoids' old forces
+  // for the account by swapping, not copying: the state's vectors are all written anew below
+  // (d, v from the kept start; a and the forces by acceleration, the support forces on the rows
+  // they use), with the bits of the copies and updates this replaced (d + delta = 1 d + 1 delta).
+  previous_d_.swap(state.d);
+  previous_v_.swap(state.v);
+  previous_a_.swap(state.a);
+  // The predictor in one pass, then again on the rows whose v_half the motions prescribe.
+  predict(step_dt, previous_d_, previous_v_, previous_a_, v_half_, delta_, state.d);
   motion_.constrain_velocity(begin, mid, at_end, step_dt, v_half_);
-  delta_.update(step_dt, v_half_, 0.0);
-  state.d.update(1.0, delta_, 1.0);
-  Tpetra::deep_copy(f_ext_old_, f_ext_);
-  Tpetra::deep_copy(f_wall_old_, f_wall_);
-  Tpetra::deep_copy(f_support_old_, f_support_);
-  Tpetra::deep_copy(f_viscous_old_, f_viscous_);
+  predict_rows(motion_.rows(), step_dt, previous_d_, v_half_, delta_, state.d);
+  if (!constant_loads_) f_ext_old_.swap(f_ext_);
+  f_wall_old_.swap(f_wall_);
+  f_support_old_.swap(f_support_);
+  f_viscous_old_.swap(f_viscous_);
   ops_.solid().history().set_step_time(step_dt);
   if (contact_) contact_->move(state.time, step_dt);
   // An inverted point (det F <= 0) may show on one rank only: agree on it collectively, write
@@ -337,7 +368,8 @@ void ExplicitDriver::advance(RunState& state, double step_dt, long long step,
     run_collectively(mass_.getMap()->getComm(), [&] {
       // The walls keep the stage's stiffness on a shortened last step: p m / step_dt^2 would
       // multiply the contact force of the same penetration (4.7x measured on the bar impact).
-      state.wall_forces = acceleration(state.time + step_dt, wall_dt_, state.d, v_half_, state.a);
+      state.wall_forces = acceleration(state.time + step_dt, wall_dt_, state.d, v_half_, state.a,
+                                       &state.v, 0.5 * step_dt);
     });
   } catch (const std::exception& e) {
     const bool here = dynamic_cast<const NumericalError*>(&e) != nullptr;
@@ -351,8 +383,6 @@ void ExplicitDriver::advance(RunState& state, double step_dt, long long step,
         << ", t = " << state.time + step_dt << "; the last good state is in the results";
     throw NumericalError(why.str());
   }
-  Tpetra::deep_copy(state.v, v_half_);
-  state.v.update(0.5 * step_dt, state.a, 1.0);
   damping_.end_step(step_dt, state.v, state.a);
   if (contact_) {
     const auto work = contact_->finish(step_dt);
@@ -363,10 +393,10 @@ void ExplicitDriver::advance(RunState& state, double step_dt, long long step,
   motion_.constrain_end(at_end, v_half_, state.v, state.a);
   state.time += step_dt;
   state.dt = step_dt;
-  account_energy(state, delta_);
+  const bool finite = account_energy(state, delta_);
   state.external_work += motion_.kinetic_energy_change(mass_, previous_v_, state.v);
   state.mass_damping_work += damping_.work(step_dt, previous_v_, state.v);
-  if (!finite(state)) {
+  if (!finite) {
     // Write the last good state, then name the particle, step and time.
     RunState failed(state.d.getMap());
     Tpetra::deep_copy(failed.d, state.d);
@@ -397,6 +427,9 @@ ExplicitSummary ExplicitDriver::run(RunState& state, const StateOutput& output, 
   double dt_crit = plan.dt_crit, dt = plan.dt;
   wall_dt_ = dt;
   start(state, dt);
+  // The steps' phase holds the steps and their guards alone: the stable-step estimates and the
+  // records are phases of their own (`stable time step`, `output`).
+  auto& steps_timer = *Teuchos::TimeMonitor::getNewCounter("efg: explicit time steps");
   auto record = [&] {
     // Constrained rows: the constraint's share R = -M a_free; the boundary terms (of every
     // condition, on every row they reach) are counted by their own condition's totals.
@@ -409,6 +442,7 @@ ExplicitSummary ExplicitDriver::run(RunState& state, const StateOutput& output, 
         for (std::size_t k = 0; k < 3; ++k) state.reactions[c][k] += weak[c][k];
     }
     if (contact_) state.contact_penetrations = contact_->take_penetrations();
+    const PausedTimer paused(steps_timer);
     output(state);
   };
   if (record_start) record();
@@ -432,9 +466,10 @@ ExplicitSummary ExplicitDriver::run(RunState& state, const StateOutput& output, 
   // Trapezoids of the kinetic and internal energies over the records (quasi-static indicator).
   double kinetic_integral = 0, internal_integral = 0, last_record_time = start_time,
          last_kinetic = state.kinetic, last_internal = state.internal;
-  Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewCounter("efg: explicit time steps"));
+  Teuchos::TimeMonitor timer(steps_timer);
   while (state.time < end - 1e-12 * span) {
     if (schedule.due(summary.steps, state.d)) {
+      const PausedTimer paused(steps_timer);  // the estimate: its own phase
       try {
         dt_crit = stable_step(state.d);
       } catch (const std::exception& e) {

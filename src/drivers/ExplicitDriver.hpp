@@ -13,6 +13,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "contact/RigidContact.hpp"
 #include "drivers/EnergyBalanceCheck.hpp"
@@ -69,8 +70,9 @@ class ExplicitDriver {
   /// boundary terms; returns the wall forces. Exposed for tests. `wall_dt` sets the walls' penalty
   /// stiffness p m / wall_dt^2 (contact/PenaltyContact): the stage's step, not a shortened last
   /// step.
+  /// With `v_end`, also v_end = v + half_dt a in the same pass (the step's corrector).
   std::vector<double> acceleration(double time, double wall_dt, const Vector& d, const Vector& v,
-                                   Vector& a);
+                                   Vector& a, Vector* v_end = nullptr, double half_dt = 0);
 
  private:
   /// dt_crit at d: StableTimeStep's, the eigenvalue of M^-1 (K + K_c) with the contacts'
@@ -80,13 +82,13 @@ class ExplicitDriver {
   /// The stiffness besides the solid's for StableTimeStep: the weak supports' and the contact
   /// springs' (empty without either).
   StableTimeStep::ExtraStiffness extra_stiffness();
-  bool finite(const RunState& state) const;  // collective
   /// "particle N (X = (x, y, z))" of a global particle id, for messages.
   std::string particle_label(long long particle) const;
   [[noreturn]] void report_non_finite(const RunState& state, long long step) const;
   [[noreturn]] void report_energy_balance(const EnergyBalanceCheck& check, const RunState& state,
                                           long long step) const;  // collective
-  void account_energy(RunState& state, const Vector& delta_d) const;
+  /// Adds the step's work to the account; returns whether every d and v is finite (collective).
+  bool account_energy(RunState& state, const Vector& delta_d) const;
   /// E_kin and E_int of the state (and the momentum, with rigid bodies).
   void energies(RunState& state);
   std::array<double, 3> momentum(const Vector& mass_times_v) const;
@@ -115,6 +117,10 @@ class ExplicitDriver {
   Vector delta_, v_half_, previous_d_, previous_v_, previous_a_;  ///< one step's scratch
   MassDamping damping_;                        ///< the stage's mass-proportional damping (off: 0)
   Vector spring_x_, spring_y_, spring_owned_;  ///< scratch of the contact springs' product
+  Vector mass_v_;                              ///< M v (energies)
+  std::vector<const Vector*> work_forces_;     ///< the forces whose work is accounted, old, new
+  bool constant_loads_ = false;  ///< the stage's loads constant in time: f_ext_ assembled once
+  bool loads_assembled_ = false;
 };
 
 }  // namespace efg

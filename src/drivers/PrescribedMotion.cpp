@@ -4,6 +4,8 @@
 
 #include <set>
 
+#include "parallel/ReproducibleSum.hpp"
+
 namespace efg {
 
 PrescribedMotion::PrescribedMotion(const Model& model, const std::string& stage)
@@ -32,6 +34,7 @@ PrescribedMotion::PrescribedMotion(const Model& model, const std::string& stage)
       }
     }
   }
+  rows_.assign(taken.begin(), taken.end());
 }
 
 std::vector<std::array<double, 3>> PrescribedMotion::reactions(const Vector& R) const {
@@ -70,8 +73,9 @@ void PrescribedMotion::constrain_end(const LoadFactor& end, const Vector& v_half
   }
 }
 
-void PrescribedMotion::support_force(const Vector& mass, const Vector& a_free, Vector& R) const {
-  R.putScalar(0.0);
+void PrescribedMotion::support_force(const Vector& mass, const Vector& a_free, Vector& R,
+                                     bool rows_only) const {
+  if (!rows_only) R.putScalar(0.0);
   auto r = R.getLocalViewHost(Tpetra::Access::ReadWrite);
   const auto m = mass.getLocalViewHost(Tpetra::Access::ReadOnly);
   const auto a = a_free.getLocalViewHost(Tpetra::Access::ReadOnly);
@@ -92,6 +96,34 @@ double PrescribedMotion::kinetic_energy_change(const Vector& mass, const Vector&
     mine += 0.5 * m(k, 0) * (v1(k, 0) * v1(k, 0) - v0(k, 0) * v0(k, 0));
   }
   Teuchos::reduceAll(*mass.getMap()->getComm(), Teuchos::REDUCE_SUM, mine, Teuchos::outArg(all));
+  return all;
+}
+
+std::array<double, 2> PrescribedMotion::support_work(const Vector& R_old, const Vector& R_new,
+                                                     const Vector& delta) const {
+  const auto r0 = R_old.getLocalViewHost(Tpetra::Access::ReadOnly);
+  const auto r1 = R_new.getLocalViewHost(Tpetra::Access::ReadOnly);
+  const auto dd = delta.getLocalViewHost(Tpetra::Access::ReadOnly);
+  // reproducible_dot's order: a block's terms in index order from +0 (the zeros between leave
+  // a partial sum as it is: it is never -0), then the block sums in order (a block without
+  // constrained rows adds +0).
+  std::array<double, 2> mine{}, block{}, all{};
+  std::size_t current = 0;
+  bool open = false;
+  for (const int row : rows_) {
+    const auto k = static_cast<std::size_t>(row);
+    if (open && k / block_size != current) {
+      for (std::size_t i = 0; i < 2; ++i) mine[i] += block[i];
+      block = {};
+    }
+    current = k / block_size;
+    open = true;
+    block[0] += r0(k, 0) * dd(k, 0);
+    block[1] += r1(k, 0) * dd(k, 0);
+  }
+  if (open)
+    for (std::size_t i = 0; i < 2; ++i) mine[i] += block[i];
+  Teuchos::reduceAll(*delta.getMap()->getComm(), Teuchos::REDUCE_SUM, 2, mine.data(), all.data());
   return all;
 }
 

@@ -34,13 +34,25 @@ class PrescribedMotion {
   /// The force the supports apply to hold the prescribed motion, R = -M a_free on the
   /// constrained entries (a_free: the acceleration before constrain_end), 0 elsewhere. Its work
   /// R . dd is external work: a crush driven by prescribed motion puts its energy in that way.
-  void support_force(const Vector& mass, const Vector& a_free, Vector& R) const;
+  /// `rows_only`: R's other entries are already zero (a vector only this has written) and are
+  /// left alone, sparing a pass over every dof per explicit step.
+  void support_force(const Vector& mass, const Vector& a_free, Vector& R,
+                     bool rows_only = false) const;
   /// sum over the constrained dofs of m (v_end^2 - v_start^2) / 2, over all ranks (collective):
   /// the kinetic energy the supports give those dofs beyond the free forces' work, which
   /// R = -M a_free accounts. A prescribed velocity that changes (v_x = a t) puts energy in with
   /// a_free = 0; without this share a bar driven that way ended at a 26 % balance error.
   double kinetic_energy_change(const Vector& mass, const Vector& v_start,
                                const Vector& v_end) const;
+  /// {R_old . delta, R_new . delta} over the constrained rows alone (collective), each bit for bit
+  /// reproducible_dot over every row when R is zero elsewhere (support_force with rows_only
+  /// wrote it): the skipped terms are zeros, and the constrained rows' terms are added in the same
+  /// blocks in the same order (parallel/ReproducibleSum.hpp). A per-step energy account that
+  /// read two whole vectors for a few rows.
+  /// The constrained rows (owned dofs), ascending.
+  const std::vector<int>& rows() const { return rows_; }
+  std::array<double, 2> support_work(const Vector& R_old, const Vector& R_new,
+                                     const Vector& delta) const;
   /// The support force summed per boundary condition and direction (collective): the reaction
   /// columns R_<condition>_<axis> of an explicit run, with the implicit drivers' sign (the force
   /// the support applies to the body). A dof named by several conditions counts for the first.
@@ -62,6 +74,7 @@ class PrescribedMotion {
     }
   };
   std::vector<Dof> dofs_;
+  std::vector<int> rows_;  ///< the constrained rows, ascending
   std::size_t conditions_ = 0;
 };
 

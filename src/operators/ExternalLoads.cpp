@@ -235,6 +235,13 @@ void ExternalLoads::assemble(const LoadFactor& factor, Vector& f_owned) const {
   }
 }
 
+bool ExternalLoads::constant_in(const std::string& stage) const {
+  for (const auto& l : loads_)
+    if (l.spec->stages.includes(stage) && (l.force.is_null() || !l.spec->curve.empty()))
+      return false;
+  return true;
+}
+
 std::size_t ExternalLoads::timed_point_count() const {
   std::size_t n = 0;
   for (const auto& l : loads_) n += l.points.weight.size();

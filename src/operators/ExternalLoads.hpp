@@ -26,6 +26,10 @@ class ExternalLoads {
   /// f_owned = sum over the loads acting in factor.stage() of factor(curve) * F_load(t =
   /// factor.time()).
   void assemble(const LoadFactor& factor, Vector& f_owned) const;
+  /// Whether every load acting in `stage` is constant in time there (no curve, no expression of
+  /// t): assemble then gives the same bits at every time of the stage (for a factor whose value
+  /// without a curve is fixed, as the explicit driver's), and one assembly serves its steps.
+  bool constant_in(const std::string& stage) const;
 
   /// Points of loads whose values vary in time (evaluated at every assembly); for bench/.
   std::size_t timed_point_count() const;
