@@ -53,6 +53,25 @@ physics::J2Parameters j2_parameters(const Scene& scene, const MaterialSpec& mate
   return p;
 }
 
+// The scene reader has checked the curve (exists, starts at volumetric strain 0, strains
+// increasing below 1, stresses > 0, at most max_curve_points points) and the formulation
+// (total_lagrangian, displacement, not plane stress).
+physics::CrushableFoamParameters foam_parameters(const Scene& scene, const MaterialSpec& material) {
+  const auto& k = material.constants;
+  const auto c = physics::elastic_constants(k.at("youngs_modulus"), k.at("poissons_ratio"));
+  physics::CrushableFoamParameters p;
+  p.lambda = c.lambda, p.mu = c.mu;
+  const CurveSpec* curve = scene.find_curve(material.yield_curve);
+  if (!curve) throw std::logic_error("unchecked yield curve " + material.yield_curve);
+  for (std::size_t i = 0; i < curve->time.size(); ++i) {
+    p.curve_strain[p.curve_points] = curve->time[i];
+    p.curve_stress[p.curve_points] = curve->value[i];
+    ++p.curve_points;
+  }
+  if (k.count("tension_cutoff")) p.tension_cutoff = k.at("tension_cutoff");
+  return p;
+}
+
 }  // namespace
 
 MaterialLaw material_law(const Scene& scene, const PartSpec& part, int dimension) {
@@ -62,6 +81,10 @@ MaterialLaw material_law(const Scene& scene, const PartSpec& part, int dimension
   if (material.model == "j2_plasticity") {
     law.plastic = true;
     law.j2 = j2_parameters(scene, material, part, dimension);
+  }
+  if (material.model == "crushable_foam") {
+    law.plastic = law.foam = true;
+    law.foam_params = foam_parameters(scene, material);
   }
   if (part.formulation == PartFormulation::mixed_up) {
     // scene/PartFormulationCheck: linear elastic, neo-Hookean or J2, one modulus, plane strain

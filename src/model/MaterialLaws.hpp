@@ -3,6 +3,7 @@
 // with its hardening curve and history state. Read from the scene's material and part.
 #pragma once
 
+#include "materials/CrushableFoam.hpp"
 #include "materials/J2Plasticity.hpp"
 #include "materials/SolidMaterial.hpp"
 #include "scene/Scene.hpp"
@@ -25,6 +26,10 @@ struct MaterialLaw {
   double bulk_modulus = 0.0;
   bool mixed() const { return bulk_modulus > 0; }
   physics::J2Parameters j2;
+  /// The crushable foam (model crushable_foam): plastic is true too (a history row of
+  /// foam_state::count doubles, the same count as J2's), foam_params its law.
+  bool foam = false;
+  physics::CrushableFoamParameters foam_params;
   /// Doubles of history per integration point (0: the law keeps none).
   int state_count() const { return plastic ? physics::j2_state::count : 0; }
 };

@@ -53,6 +53,12 @@ bool EssentialConditions::boundary_stress(const BoundaryPoint& p, const double (
   const auto& old_state = *reinterpret_cast<const State*>(&committed_[p.history]);
   auto& new_state = *reinterpret_cast<State*>(&trial_[p.history]);
   double cauchy[3][3];
+  if (p.law.foam) {
+    const auto foam =
+        states_->elastic_probe() ? physics::without_yield(p.law.foam_params) : p.law.foam_params;
+    if (!A) return physics::foam_update<Dim>(foam, H, old_state, P, new_state, cauchy);
+    return foam_stress_and_elastic_tangent<Dim>(foam, H, old_state, P, *A, new_state, cauchy);
+  }
   // Elastic probes (the explicit stable-step estimate) see the elastic predictor here too, as
   // the solid's points do (MaterialStates::elastic_probe).
   const auto law = states_->elastic_probe() ? physics::without_yield(p.law.j2) : p.law.j2;

@@ -7,6 +7,7 @@
 
 #include <Sacado.hpp>
 
+#include "materials/CrushableFoam.hpp"
 #include "materials/J2Plasticity.hpp"
 
 namespace efg {
@@ -30,6 +31,30 @@ KOKKOS_INLINE_FUNCTION bool j2_stress_and_tangent(
       for (int k = 0; k < Dim; ++k)
         for (int l = 0; l < Dim; ++l) A[i][j][k][l] = stress[i][j].fastAccessDx(k * Dim + l);
     }
+  return true;
+}
+
+/// The crushable foam's P, new state and Cauchy stress (physics::foam_update) with A = the
+/// derivative of its elastic predictor from the committed state (forward AD): the unloading
+/// stiffness, which bounds the plastic one from above (the box return only lowers stresses at
+/// fixed J), so the explicit stable-step bound built from it is safe. It is not the consistent
+/// tangent: implicit stages refuse the law (scene/PlasticityInput).
+template <int Dim>
+KOKKOS_INLINE_FUNCTION bool foam_stress_and_elastic_tangent(
+    const physics::CrushableFoamParameters& p, const double (&H)[Dim][Dim],
+    const double (&old_state)[physics::foam_state::count], double (&P)[Dim][Dim],
+    double (&A)[Dim][Dim][Dim][Dim], double (&new_state)[physics::foam_state::count],
+    double (&cauchy)[3][3]) {
+  if (!physics::foam_update<Dim>(p, H, old_state, P, new_state, cauchy)) return false;
+  using Fad = Sacado::Fad::SFad<double, Dim * Dim>;
+  Fad h[Dim][Dim], stress[Dim][Dim];
+  for (int k = 0; k < Dim; ++k)
+    for (int l = 0; l < Dim; ++l) h[k][l] = Fad(Dim * Dim, k * Dim + l, H[k][l]);
+  if (!physics::foam_elastic_predictor<Fad, Dim>(p, h, old_state, stress)) return false;
+  for (int i = 0; i < Dim; ++i)
+    for (int j = 0; j < Dim; ++j)
+      for (int k = 0; k < Dim; ++k)
+        for (int l = 0; l < Dim; ++l) A[i][j][k][l] = stress[i][j].fastAccessDx(k * Dim + l);
   return true;
 }
 

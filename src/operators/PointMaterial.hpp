@@ -1,8 +1,10 @@
 // The one material dispatch of the solid kernels (SolidKernels.hpp): per integration point q,
 // P (and A = dP/dH, and the strain energy) from the part's law. Elastic laws are a function of
 // H alone (physics::stress); J2 plasticity reads the committed history of q and writes the
-// trial history (physics::j2_update; its tangent by forward AD, MaterialTangent.hpp). An
-// elastic part pays one predictable branch per point (bench/: efg_bench_explicit).
+// trial history (physics::j2_update; its tangent by forward AD, MaterialTangent.hpp); the
+// crushable foam likewise (physics::foam_update, its history row laid out so that the energy and
+// erosion columns are J2's). An elastic part pays one predictable branch per point (bench/:
+// efg_bench_explicit).
 #pragma once
 
 #include <type_traits>
@@ -22,6 +24,8 @@ struct PointMaterial {
   /// Graded elastic parts: E(x_q)/E_ref scales lambda and mu at q (empty: uniform part).
   DeviceView<double*> modulus_scale;
   bool graded = false;
+  bool foam = false;  ///< with plastic: the crushable foam law (foam_params) instead of J2
+  physics::CrushableFoamParameters foam_params;
 };
 
 /// The elastic law at q: the part's, scaled at a graded point.
@@ -35,6 +39,13 @@ namespace point_material_detail {
 static_assert(std::is_same_v<DeviceView<double**>::array_layout, Kokkos::LayoutRight>,
               "history rows must be contiguous");
 using State = double[physics::j2_state::count];
+// The foam's row is read through the same type and by the same columns (SolidKernels).
+static_assert(physics::foam_state::count == physics::j2_state::count &&
+                  physics::foam_state::dissipation == physics::j2_state::dissipation &&
+                  physics::foam_state::elastic_energy == physics::j2_state::elastic_energy &&
+                  physics::foam_state::eroded == physics::j2_state::eroded &&
+                  physics::foam_state::crush == physics::j2_state::alpha,
+              "the foam's history row must share J2's energy, erosion and output columns");
 KOKKOS_INLINE_FUNCTION const State& row(const DeviceView<double**>& v, int q) {
   return *reinterpret_cast<const State*>(&v(q, 0));
 }
@@ -51,6 +62,13 @@ KOKKOS_INLINE_FUNCTION bool point_stress(const PointMaterial& m, int q, const do
   if (!m.plastic) return physics::stress<Dim>(elastic_at(m, q), H, P, A);
   using namespace point_material_detail;
   double cauchy[3][3];
+  if (m.foam && A)
+    return foam_stress_and_elastic_tangent<Dim>(m.foam_params, H, row(m.committed, q), P,
+                                                *reinterpret_cast<double(*)[Dim][Dim][Dim][Dim]>(A),
+                                                mutable_row(m.trial, q), cauchy);
+  if (m.foam)
+    return physics::foam_update<Dim>(m.foam_params, H, row(m.committed, q), P,
+                                     mutable_row(m.trial, q), cauchy);
   if (A)
     return j2_stress_and_tangent<Dim>(m.j2, H, row(m.committed, q), m.step_time, P,
                                       *reinterpret_cast<double(*)[Dim][Dim][Dim][Dim]>(A),
@@ -68,6 +86,10 @@ KOKKOS_INLINE_FUNCTION double point_energy(const PointMaterial& m, int q,
   if (!m.plastic) return physics::strain_energy<Dim>(elastic_at(m, q), H);
   using namespace point_material_detail;
   double P[Dim][Dim], next[physics::j2_state::count], cauchy[3][3];
+  if (m.foam)
+    return physics::foam_update<Dim>(m.foam_params, H, row(m.committed, q), P, next, cauchy)
+               ? next[physics::foam_state::elastic_energy] + next[physics::foam_state::dissipation]
+               : 0.0;
   if (!physics::j2_update<double, Dim>(m.j2, H, row(m.committed, q), m.step_time, P, next, cauchy))
     return 0.0;
   return next[physics::j2_state::elastic_energy] + next[physics::j2_state::dissipation];
@@ -81,7 +103,11 @@ KOKKOS_INLINE_FUNCTION void point_cauchy_stress(const PointMaterial& m, int q,
   if (!m.plastic) return physics::cauchy_stress<Dim>(elastic_at(m, q), H, sigma);
   using namespace point_material_detail;
   double P[Dim][Dim], next[physics::j2_state::count];
-  if (!physics::j2_update<double, Dim>(m.j2, H, row(m.committed, q), m.step_time, P, next, sigma))
+  const bool ok =
+      m.foam ? physics::foam_update<Dim>(m.foam_params, H, row(m.committed, q), P, next, sigma)
+             : physics::j2_update<double, Dim>(m.j2, H, row(m.committed, q), m.step_time, P, next,
+                                               sigma);
+  if (!ok)
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) sigma[i][j] = 0.0;
 }

@@ -67,7 +67,9 @@ SolidOperator::SolidOperator(const Model& model) : dim_(model.mesh.dimension), h
                                       states.trial,
                                       0.0,
                                       states.modulus_scale,
-                                      states.modulus_scale.extent(0) > 0};
+                                      states.modulus_scale.extent(0) > 0,
+                                      law.foam,
+                                      law.foam_params};
     p.small_strain = d.part->section.formulation == Formulation::small_strain;
     p.points = ip.size();
     p.x = ip.x;

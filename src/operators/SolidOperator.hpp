@@ -95,8 +95,10 @@ class SolidOperator {
   DevicePoints device(const PartData& p) const {
     DevicePoints d = p.device;
     d.material.step_time = history_.step_time();
-    if (history_.elastic_probe() && d.material.plastic)  // MaterialStates::elastic_probe
+    if (history_.elastic_probe() && d.material.plastic) {  // MaterialStates::elastic_probe
       d.material.j2 = physics::without_yield(d.material.j2);
+      d.material.foam_params = physics::without_yield(d.material.foam_params);
+    }
     return d;
   }
   void report_inversion(const PartData& part, int point) const;

@@ -20,7 +20,7 @@ namespace efg {
 namespace {
 
 bool path_dependent(const Scene& scene, const PartSpec& part) {
-  return scene.find_material(part.material)->model == "j2_plasticity";
+  return scene.find_material(part.material)->path_dependent();
 }
 
 }  // namespace

@@ -28,7 +28,7 @@ std::vector<std::pair<int, int>> tensor_indices(int dim) {
 // history of a point that has none).
 bool elastic_parts(const Scene& scene) {
   for (const auto& part : scene.parts)
-    if (scene.find_material(part.material)->model == "j2_plasticity") return false;
+    if (scene.find_material(part.material)->path_dependent()) return false;
   return true;
 }
 

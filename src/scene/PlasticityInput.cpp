@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "core/Errors.hpp"
+#include "materials/CrushableFoam.hpp"
 #include "materials/J2Plasticity.hpp"
 #include "scene/SchemaValidator.hpp"
 
@@ -48,9 +49,75 @@ void check_curve(const Scene& s, const MaterialSpec& m, const YAML::Node& doc,
                ": softening is not supported; expected a yield stress that does not decrease");
 }
 
+// The crushable foam's yield curve: sigma_y over the volumetric strain 1 - J, which lies in
+// (-inf, 1) for J > 0; the law reads it from 0 on (constant below) and needs sigma_y > 0 (a
+// zero compressive strength crushes at no load).
+void check_yield_curve(const Scene& s, const MaterialSpec& m, const YAML::Node& doc,
+                       const std::string& path) {
+  const YAML::Node at = doc["yield_curve"];
+  const std::string key = path + ".yield_curve";
+  const CurveSpec* c = s.find_curve(m.yield_curve);
+  if (!c) fail(s, at, key, "no curve named '" + m.yield_curve + "' in curves");
+  const std::string curve = "curve '" + c->name + "' ";
+  if (c->time.size() > physics::CrushableFoamParameters::max_curve_points)
+    fail(s, at, key,
+         curve + "has " + std::to_string(c->time.size()) + " points; at most " +
+             std::to_string(physics::CrushableFoamParameters::max_curve_points) + " are supported");
+  if (c->time.empty() || c->time[0] != 0.0)
+    fail(s, at, key,
+         curve + "must start at volumetric strain 0, found " +
+             (c->time.empty() ? "no points" : number(c->time[0])));
+  for (std::size_t i = 0; i < c->time.size(); ++i) {
+    if (i > 0 && !(c->time[i] > c->time[i - 1]))
+      fail(s, at, key,
+           curve + "is not increasing in volumetric strain: " + number(c->time[i - 1]) + " then " +
+               number(c->time[i]) + "; expected strictly increasing strains");
+    if (!(c->time[i] < 1.0))
+      fail(s, at, key,
+           curve + "reaches volumetric strain " + number(c->time[i]) +
+               "; expected strains below 1 (1 - J < 1 for every J > 0)");
+    if (!(c->value[i] > 0.0))
+      fail(s, at, key,
+           curve + "has yield stress " + number(c->value[i]) + " at volumetric strain " +
+               number(c->time[i]) + "; expected a positive compressive yield stress");
+  }
+}
+
+void check_foam(const Scene& s, std::size_t i) {
+  const auto& m = s.materials[i];
+  const std::string path = "materials[" + std::to_string(i) + "]";
+  check_yield_curve(s, m, s.document["materials"][i], path);
+  // The law's tangent is its elastic one (operators/MaterialTangent.hpp): right for the explicit
+  // stable step, not for Newton.
+  for (const auto& st : s.stages)
+    if (st.driver != "explicit")
+      fail(s, s.document["materials"][i]["model"], path + ".model",
+           "model crushable_foam runs in explicit stages only (it has no consistent tangent), "
+           "but stage '" +
+               st.name + "' is " + st.driver + "; expected explicit stages");
+  for (std::size_t k = 0; k < s.parts.size(); ++k) {
+    const auto& part = s.parts[k];
+    if (part.material != m.name) continue;
+    const YAML::Node doc = s.document["parts"][k];
+    const std::string at = "parts[" + std::to_string(k) + "]";
+    if (part.formulation == PartFormulation::mixed_up)
+      fail(s, doc["formulation"], at + ".formulation",
+           "part '" + part.name +
+               "' has a crushable_foam material, which has no volumetric-deviatoric split: "
+               "expected formulation displacement");
+    if (part.plane_stress)
+      fail(s, doc["plane_stress"] ? doc["plane_stress"] : doc, at + ".plane_stress",
+           "part '" + part.name +
+               "' has a crushable_foam material: expected plane strain or 3D (plane stress is "
+               "not available for it)");
+  }
+}
+
 }  // namespace
 
 void check_plasticity_input(const Scene& s) {
+  for (std::size_t i = 0; i < s.materials.size(); ++i)
+    if (s.materials[i].model == "crushable_foam") check_foam(s, i);
   for (std::size_t i = 0; i < s.materials.size(); ++i) {
     const auto& m = s.materials[i];
     if (m.model != "j2_plasticity") continue;
@@ -65,15 +132,15 @@ void check_plasticity_input(const Scene& s) {
   }
   for (std::size_t i = 0; i < s.parts.size(); ++i) {
     const auto& part = s.parts[i];
-    if (s.find_material(part.material)->model != "j2_plasticity") continue;
+    if (!s.find_material(part.material)->path_dependent()) continue;
     const YAML::Node doc = s.document["parts"][i];
     // The history lives at the integration points; output reads it at the particle's own point
     // (SCNI, nodal) or averages the pieces of its domain (SCNI subcells). A Gauss point belongs
     // to no particle's domain (a projection is not built yet).
     if (part.section.integration == Integration::gauss)
       fail(s, doc["section"] ? doc["section"] : doc, "parts[" + std::to_string(i) + "].section",
-           "part '" + part.name +
-               "' has a j2_plasticity material: expected integration scni, scni_subcells or "
+           "part '" + part.name + "' has a " + s.find_material(part.material)->model +
+               " material: expected integration scni, scni_subcells or "
                "nodal (Gauss integration is not available for path-dependent materials yet)");
   }
   // The transformation and Nitsche methods add the boundary traction -integral phi_I (P n) over
@@ -82,7 +149,7 @@ void check_plasticity_input(const Scene& s) {
   // with the elastic law there): on a uniaxial J2 block that wrong traction gave a
   // non-homogeneous solution with 2 % stress scatter, where penalty gives the closed form.
   bool plastic = false;
-  for (const auto& m : s.materials) plastic = plastic || m.model == "j2_plasticity";
+  for (const auto& m : s.materials) plastic = plastic || m.path_dependent();
   bool implicit = false;  // explicit stages prescribe the motion of the particles directly
   for (const auto& st : s.stages) implicit = implicit || st.driver == "implicit";
   for (std::size_t b = 0; plastic && implicit && b < s.boundary_conditions.size(); ++b) {

@@ -139,6 +139,8 @@ class SceneBuilder {
       const auto key = kv.first.as<std::string>();
       if (key == "hardening_curve")
         mat.hardening_curve = kv.second.as<std::string>();
+      else if (key == "yield_curve")
+        mat.yield_curve = kv.second.as<std::string>();
       else if (double number = 0;
                key == "youngs_modulus" && !YAML::convert<double>::decode(kv.second, number)) {
         // an expression of x, y, z (validated): a graded material
@@ -234,13 +236,14 @@ class SceneBuilder {
                "small_strain, found " +
                sec["formulation"].as<std::string>());
     }
-    if (material->model == "neo_hookean" && out.formulation != Formulation::total_lagrangian) {
+    if ((material->model == "neo_hookean" || material->model == "crushable_foam") &&
+        out.formulation != Formulation::total_lagrangian) {
       const YAML::Node at = doc["section"] && doc["section"]["formulation"]
                                 ? doc["section"]["formulation"]
                                 : doc["material"];
       fail(at, path + ".section.formulation",
-           "material '" + material->name +
-               "' (model neo_hookean) is a finite-strain model: expected formulation "
+           "material '" + material->name + "' (model " + material->model +
+               ") is a finite-strain model: expected formulation "
                "total_lagrangian, found " +
                sec["formulation"].as<std::string>());
     }

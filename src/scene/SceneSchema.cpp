@@ -26,8 +26,8 @@ SpecPtr material_spec() {
   auto poisson = real("Poisson's ratio.", "-").above(-1.0).below(0.5);
   return map("A material model. Keys after model depend on the model.")
       .required("name", string("Material name, unique."))
-      .required("model",
-                choice("Constitutive model.", {"linear_elastic", "neo_hookean", "j2_plasticity"}))
+      .required("model", choice("Constitutive model.", {"linear_elastic", "neo_hookean",
+                                                        "j2_plasticity", "crushable_foam"}))
       .optional("density",
                 real("Mass density (needed by explicit stages).", "mass/length^3").above(0))
       .discriminated_by("model")
@@ -69,7 +69,34 @@ SpecPtr material_spec() {
                              "strain reaches this value carries no stress from then on; its "
                              "mass and motion stay.",
                              "-")
-                            .above(0))});
+                            .above(0))})
+      .variant(
+          "crushable_foam",
+          {required_key("youngs_modulus",
+                        real("Young's modulus of elastic loading and unloading (Hencky); with "
+                             "poissons_ratio, also the explicit stable step's stiffness.",
+                             "stress")
+                            .above(0)),
+           required_key("poissons_ratio",
+                        real("Elastic Poisson's ratio (crash foams: 0 to 0.1). The plastic "
+                             "Poisson's ratio is 0: plastic flow is along the loaded principal "
+                             "direction only.",
+                             "-")
+                            .above(-1.0)
+                            .below(0.5)),
+           required_key("yield_curve",
+                        string("Name of a curve of the compressive yield stress (value, > 0) "
+                               "over the volumetric strain 1 - J (time: starting at 0, "
+                               "increasing, below 1; at most 32 points); extended beyond its "
+                               "last point with its last slope when that rises (densification). "
+                               "Each principal Cauchy stress stays >= -yield stress "
+                               "(LS-DYNA *MAT_063 LCID; docs/foams.md).")),
+           optional_key("tension_cutoff",
+                        real("Largest principal Cauchy stress in tension (LS-DYNA TSC); a "
+                             "positive value is advisable.",
+                             "stress")
+                            .at_least(0),
+                        "0")});
 }
 
 std::vector<Key> component_keys(const std::string& what, const std::string& unit) {
