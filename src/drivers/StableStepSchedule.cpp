@@ -31,7 +31,7 @@ bool StableStepSchedule::due(long long steps, const Vector& d) {
   Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewCounter("efg: stable time step"));
   const double interval = strain_interval();
   change_.update(1.0, d, -1.0, d_estimated_, 0.0);
-  const double strain = ops_.largest_strain_change(change_);
+  const double strain = ops_.largest_strain_change(change_, d);
   const long long since = steps - estimated_at_;
   eroded_ = ops_.eroded_points();
   if (strain >= interval || eroded_ != eroded_at_estimate_ || since >= refresh_) return true;

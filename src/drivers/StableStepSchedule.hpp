@@ -1,7 +1,8 @@
 // When an explicit stage re-estimates its stable time step (docs/explicit.md, "Time step").
 //
 // The stable step follows the deformation: it is re-estimated when the strain since the last
-// estimate, max |grad (d - d_est)| over the finite-strain parts' points, reaches
+// estimate, max |d (d - d_est) / dx| over the finite-strain parts' points (in the current
+// configuration: the stiffness of a crushed foam grows as 1 / stretch^2), reaches
 // dt_update_strain (their stiffness, and so omega_max, changes with strain; a small-strain part's
 // does not: elastic probes take plasticity out, contact and walls enter by constant terms), when
 // points have eroded since (the stiffness falls: the step may grow, and with every point eroded

@@ -71,9 +71,11 @@ bool ModelOperators::stiffness_row_bound(const Vector& d_owned, Vector& c_owned)
   return true;
 }
 
-double ModelOperators::largest_strain_change(const Vector& delta_owned) const {
-  to_overlap(delta_owned, d_overlap_);
-  const double mine = solid_.largest_gradient(d_overlap_);
+double ModelOperators::largest_strain_change(const Vector& delta_owned,
+                                             const Vector& d_owned) const {
+  to_overlap(delta_owned, f_overlap_);  // (the force's scratch serves the change)
+  to_overlap(d_owned, d_overlap_);
+  const double mine = solid_.largest_gradient(f_overlap_, d_overlap_);
   double all = 0;
   Teuchos::reduceAll(*model_.maps.owned_dofs->getComm(), Teuchos::REDUCE_MAX, mine,
                      Teuchos::outArg(all));

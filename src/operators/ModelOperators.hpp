@@ -50,9 +50,10 @@ class ModelOperators {
   /// particles' points on every rank): lambda_max(M^-1 K) <= max c / m. False (c untouched) when
   /// the model has mixed u-p parts, whose cell pressures the bound does not cover.
   bool stiffness_row_bound(const Vector& d_owned, Vector& c_owned) const;
-  /// The largest |grad delta| over every rank's points of finite-strain parts (delta owned):
-  /// the strain of a change delta of the displacements (SolidOperator::largest_gradient).
-  double largest_strain_change(const Vector& delta_owned) const;
+  /// The largest |d delta / dx| over every rank's points of finite-strain parts, x the
+  /// configuration of the displacements d (both owned): the strain of a change delta of the
+  /// displacements there (SolidOperator::largest_gradient).
+  double largest_strain_change(const Vector& delta_owned, const Vector& d_owned) const;
   /// Eroded points on every rank.
   long long eroded_points() const;
   /// Stored energy of this rank's points and cells (sum over ranks for the total).

@@ -195,8 +195,10 @@ void SolidOperator::add_stiffness_row_bound(const Vector& d_overlap, Vector& c_o
       });
 }
 
-double SolidOperator::largest_gradient(const Vector& delta_overlap) const {
+double SolidOperator::largest_gradient(const Vector& delta_overlap,
+                                       const Vector& d_overlap) const {
   const auto u = column(delta_overlap);
+  const auto x = column(d_overlap);
   double largest = 0;
   for (const auto& p : parts_) {
     if (p.small_strain) continue;
@@ -211,10 +213,22 @@ double SolidOperator::largest_gradient(const Vector& delta_overlap) const {
             // An eroded point is out of the model: its strain changes no stiffness.
             if (d.material.plastic && d.material.committed(q, physics::j2_state::eroded) > 0.5)
               return;
-            double H[Dim][Dim];
+            double H[Dim][Dim], F[Dim][Dim], F_inv[Dim][Dim];
+            displacement_gradient<Dim>(d, x, q, F);
+            for (int i = 0; i < Dim; ++i) F[i][i] += 1.0;
+            const double J = physics::determinant<Dim>(F);
+            if (!(J > 0)) {
+              m = 1e300;  // inverted: re-estimate at once (the fold guard names it)
+              return;
+            }
+            physics::inverse<Dim>(F, J, F_inv);
             displacement_gradient<Dim>(d, u, q, H);
             for (int i = 0; i < Dim; ++i)
-              for (int j = 0; j < Dim; ++j) m = fabs(H[i][j]) > m ? fabs(H[i][j]) : m;
+              for (int j = 0; j < Dim; ++j) {
+                double L = 0.0;  // (grad_X delta F^-1)_ij = d delta_i / d x_j
+                for (int k = 0; k < Dim; ++k) L += H[i][k] * F_inv[k][j];
+                m = fabs(L) > m ? fabs(L) : m;
+              }
           },
           Kokkos::Max<double>(part_largest));
     };

@@ -35,11 +35,15 @@ class SolidOperator {
   /// c += the row bounds c_I of K(d) on every dof of I (operators/StiffnessBound.hpp):
   /// x^T K x <= sum c_I x_Ii^2 for every x, so lambda_max(M^-1 K) <= max c / m.
   void add_stiffness_row_bound(const Vector& d_overlap, Vector& c_overlap) const;
-  /// The largest |H_ij| of the displacement field `delta` (overlap) over this rank's points of
-  /// finite-strain parts (not eroded): the strain a change of the displacements by delta makes,
-  /// for the stable step's re-estimates (a small-strain part's tangent, plastic points probed
-  /// elastically, does not change with strain).
-  double largest_gradient(const Vector& delta_overlap) const;
+  /// The largest |L_ij| of L = grad_X(delta) F(d)^-1, the gradient of the displacement field
+  /// `delta` (overlap) in the configuration of the displacements d (overlap), over this rank's
+  /// points of finite-strain parts (not eroded): the strain a change of the displacements by
+  /// delta makes there, for the stable step's re-estimates (a small-strain part's tangent,
+  /// plastic points probed elastically, does not change with strain). In the current
+  /// configuration, not the reference one: a foam crushed to a stretch of 0.1 stiffens by 44 %
+  /// (1 / stretch^2) over a reference strain of 0.02, a current strain of 0.2. A point with
+  /// det F <= 0 counts as strained without limit (1e300).
+  double largest_gradient(const Vector& delta_overlap, const Vector& d_overlap) const;
   /// Eroded points of this rank.
   long long eroded_points() const;
   /// The small-strain validity check of this rank's small-strain points: throws NumericalError
