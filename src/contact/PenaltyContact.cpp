@@ -111,6 +111,7 @@ PenaltyContact::PenaltyContact(const ModelOperators& ops, const Vector& mass_own
     const auto& spec = model.scene.rigid_walls[w];
     Pair pair;
     pair.body = bodies.wall(w);
+    pair.wall = static_cast<long>(w);
     pair.penalty = spec.penalty;
     std::vector<char> in_set(model.mesh.node_count(), spec.node_set.empty() ? 1 : 0);
     if (!spec.node_set.empty())
@@ -287,20 +288,24 @@ void PenaltyContact::add_spring_stiffness(const Vector& x_overlap, Vector& y_ove
     }
 }
 
+std::size_t PenaltyContact::penetration_slot(const Pair& pair) const {
+  return pair.contact >= 0
+             ? static_cast<std::size_t>(pair.contact)
+             : model_.scene.contacts.size() + static_cast<std::size_t>(pair.wall);
+}
+
 std::vector<double> PenaltyContact::take_penetrations() {
-  std::vector<double> out(model_.scene.contacts.size(), 0.0);
-  for (auto& pair : pairs_)
-    if (pair.contact >= 0) {
-      out[static_cast<std::size_t>(pair.contact)] = pair.peak;
-      pair.peak = 0;
-    }
+  std::vector<double> out(model_.scene.contacts.size() + model_.scene.rigid_walls.size(), 0.0);
+  for (auto& pair : pairs_) {
+    out[penetration_slot(pair)] = pair.peak;
+    pair.peak = 0;
+  }
   return out;
 }
 
 std::vector<double> PenaltyContact::stage_penetrations() const {
-  std::vector<double> out(model_.scene.contacts.size(), 0.0);
-  for (const auto& pair : pairs_)
-    if (pair.contact >= 0) out[static_cast<std::size_t>(pair.contact)] = pair.stage_peak;
+  std::vector<double> out(model_.scene.contacts.size() + model_.scene.rigid_walls.size(), 0.0);
+  for (const auto& pair : pairs_) out[penetration_slot(pair)] = pair.stage_peak;
   return out;
 }
 

@@ -74,9 +74,9 @@ class PenaltyContact {
   /// it along any normal): the stable step's eigenvalue problem takes them exactly
   /// (drivers/ExplicitDriver). Local; no communication.
   void add_spring_stiffness(const Vector& x_overlap, Vector& y_overlap) const;
-  /// Per scene contact (scene order; 0 for contacts between parts or not in this stage): the
-  /// deepest particle as a fraction of its spacing since the last call (then reset), and over the
-  /// stage.
+  /// Per scene contact (scene order; 0 for contacts between parts or not in this stage), then
+  /// per rigid wall: the deepest particle as a fraction of its spacing since the last call (then
+  /// reset), and over the stage.
   std::vector<double> take_penetrations();
   std::vector<double> stage_penetrations() const;
 
@@ -99,6 +99,7 @@ class PenaltyContact {
   struct Pair {
     std::size_t body = 0;
     long contact = -1;  ///< index in scene.contacts; -1 for a rigid wall
+    long wall = -1;     ///< index in scene.rigid_walls; -1 for a contact
     double penalty = 0, damping = 0, warning = 0;
     std::string initial = "stop";  ///< initial_penetration: stop | ignore | push
     bool warned = false;
@@ -116,6 +117,8 @@ class PenaltyContact {
   /// After the step's forces: the deepest fractions (reduced) into the peaks, a warning once
   /// above the threshold, and the tunnelling check. Collective.
   void watch(std::vector<double>& deepest, std::vector<double>& travel, double time);
+  /// A pair's place in take_penetrations: its contact's index, walls after the contacts.
+  std::size_t penetration_slot(const Pair& pair) const;
 
   int dim_;
   const RigidBodies& bodies_;

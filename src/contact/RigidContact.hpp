@@ -49,7 +49,8 @@ class RigidContact {
   void add_spring_stiffness(const Vector& x_overlap, Vector& y_overlap) const {
     contact_.add_spring_stiffness(x_overlap, y_overlap);
   }
-  /// Per scene contact: the deepest particle over its spacing since the last call, over the stage.
+  /// Per scene contact, then per rigid wall: the deepest particle over its spacing since the last
+  /// call, over the stage.
   std::vector<double> take_penetrations() { return contact_.take_penetrations(); }
   std::vector<double> stage_penetrations() const { return contact_.stage_penetrations(); }
 

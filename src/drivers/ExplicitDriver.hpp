@@ -44,8 +44,9 @@ struct ExplicitSummary {
   /// (StableTimeStep::source: dense, bound, lanczos, converged).
   double first_dt_crit = 0, smallest_dt_crit = 0;
   std::string stable_step_source;
-  /// Per scene contact: the deepest particle in its rigid body over the stage, as a fraction of
-  /// its spacing (0 for contacts between parts or not in the stage).
+  /// Per scene contact, then per rigid wall: the deepest particle in its rigid body (behind its
+  /// wall) over the stage, as a fraction of its spacing (0 for contacts between parts or not in
+  /// the stage).
   std::vector<double> contact_penetration;
 };
 

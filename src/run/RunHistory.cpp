@@ -73,6 +73,8 @@ std::vector<std::string> history_names(const Scene& scene, int dimension) {
   // Contacts with rigid bodies: the deepest particle over its spacing since the last record.
   for (const auto& c : scene.contacts)
     if (!c.rigid_body.empty()) names.push_back(short_name("contact_", c.name, "_pen"));
+  // ... and the same for each rigid wall.
+  for (const auto& w : scene.rigid_walls) names.push_back(short_name("wall_", w.name, "_pen"));
   for (const auto& bc : scene.boundary_conditions)
     for (std::size_t d = 0; d < dim; ++d)
       names.push_back(short_name("R_", bc.name, std::string("_") + axes[d]));
@@ -142,6 +144,9 @@ std::vector<double> RunHistory::values(const ModelOperators& ops, const RunState
   const auto& pen = state.contact_penetrations;
   for (std::size_t c = 0; c < model_.scene.contacts.size(); ++c)
     if (!model_.scene.contacts[c].rigid_body.empty()) out.push_back(c < pen.size() ? pen[c] : 0.0);
+  for (std::size_t w = 0, at = model_.scene.contacts.size(); w < model_.scene.rigid_walls.size();
+       ++w, ++at)
+    out.push_back(at < pen.size() ? pen[at] : 0.0);
   for (std::size_t c = 0; c < model_.scene.boundary_conditions.size(); ++c)
     for (std::size_t d = 0; d < dim; ++d)
       out.push_back(c < reactions.size() ? reactions[c][d] : 0.0);

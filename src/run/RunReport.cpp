@@ -74,7 +74,8 @@ void write_implicit_stages(std::ostream& o, const std::vector<ImplicitStageRepor
 // Per explicit stage: its steps, the step sizes, the stable-step estimates, the worst energy
 // balance error, the quasi-static indicator (kinetic over internal energy: time integrals over
 // the stage and at its end), whether dynamic relaxation ended it, and per contact with a rigid
-// body the deepest particle over the stage as a fraction of its spacing (contact_penetration).
+// body the deepest particle over the stage as a fraction of its spacing (contact_penetration),
+// and per rigid wall (wall_penetration).
 void write_explicit_stages(std::ostream& o, const Scene& scene,
                            const std::vector<ExplicitStageReport>& stages) {
   o << ",\n  \"explicit_stages\": [";
@@ -100,6 +101,13 @@ void write_explicit_stages(std::ostream& o, const Scene& scene,
       o << (first ? "" : ", ") << quoted(scene.contacts[c].name) << ": "
         << number(c < pen.size() ? pen[c] : 0.0);
       first = false;
+    }
+    o << "}, \"wall_penetration\": {";
+    for (std::size_t w = 0; w < scene.rigid_walls.size(); ++w) {
+      const auto& pen = st.contact_penetration;
+      const auto at = scene.contacts.size() + w;
+      o << (w ? ", " : "") << quoted(scene.rigid_walls[w].name) << ": "
+        << number(at < pen.size() ? pen[at] : 0.0);
     }
     o << "}}";
   }
