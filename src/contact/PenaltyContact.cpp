@@ -303,6 +303,30 @@ std::vector<double> PenaltyContact::take_penetrations() {
   return out;
 }
 
+std::vector<std::vector<double>> PenaltyContact::allowances() const {
+  // Contacts not in this stage hand on what they were given (a contact of stages 1 and 3).
+  auto out = carried_allowances_;
+  out.resize(model_.scene.contacts.size());
+  for (const auto& pair : pairs_)
+    if (pair.contact >= 0) {
+      auto& depths = out[static_cast<std::size_t>(pair.contact)];
+      depths.clear();
+      for (const auto& c : pair.candidates) depths.push_back(c.allowance);
+    }
+  return out;
+}
+
+void PenaltyContact::carry_allowances(const std::vector<std::vector<double>>& allowances) {
+  carried_allowances_ = allowances;
+  for (auto& pair : pairs_) {
+    if (pair.contact < 0 || static_cast<std::size_t>(pair.contact) >= allowances.size()) continue;
+    const auto& depths = allowances[static_cast<std::size_t>(pair.contact)];
+    if (depths.size() != pair.candidates.size()) continue;  // not active in the earlier stage
+    for (std::size_t k = 0; k < depths.size(); ++k)
+      pair.candidates[k].allowance = pair.candidates[k].allowance_new = depths[k];
+  }
+}
+
 std::vector<double> PenaltyContact::stage_penetrations() const {
   std::vector<double> out(model_.scene.contacts.size() + model_.scene.rigid_walls.size(), 0.0);
   for (const auto& pair : pairs_) out[penetration_slot(pair)] = pair.stage_peak;

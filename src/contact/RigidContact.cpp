@@ -18,13 +18,15 @@ std::vector<double> RigidContact::wall_forces() const {
   return forces;
 }
 
-void RigidContact::begin(const std::vector<RigidBodyState>& carried, double time,
+void RigidContact::begin(const std::vector<RigidBodyState>& carried,
+                         const std::vector<std::vector<double>>& allowances, double time,
                          const Vector& d_overlap) {
   const bool initial = carried.size() != bodies_.count();
   states_ = initial ? bodies_.initial_states(time) : carried;
   previous_ = states_;
   step_end_ = time;
   contact_.start(d_overlap, states_, initial);
+  if (!initial) contact_.carry_allowances(allowances);
   if (surfaces_) surfaces_->start(d_overlap);
 }
 

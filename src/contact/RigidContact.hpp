@@ -24,8 +24,14 @@ class RigidContact {
   }
 
   /// Stage start at `time`: the states carried over from an earlier stage, or the initial ones
-  /// (then particles inside a body stop the run or have their depth ignored, per contact).
-  void begin(const std::vector<RigidBodyState>& carried, double time, const Vector& d_overlap);
+  /// (then particles inside a body stop the run or have their depth ignored, per contact); a
+  /// later stage takes the depths still ignored at the end of the earlier one (`allowances`:
+  /// PenaltyContact::allowances, empty at the start).
+  void begin(const std::vector<RigidBodyState>& carried,
+             const std::vector<std::vector<double>>& allowances, double time,
+             const Vector& d_overlap);
+  /// Per scene contact, its particles' ignored initial depths now (to carry into a later stage).
+  std::vector<std::vector<double>> allowances() const { return contact_.allowances(); }
   /// First half of a step: the bodies move to t + dt.
   void move(double time, double dt);
   /// Contact forces at d into f_overlap (the bodies' forces are kept). Collective.

@@ -306,7 +306,7 @@ void ExplicitDriver::support_forces(const Vector& a_free) {
 void ExplicitDriver::start(RunState& state, double dt) {
   if (contact_) {
     ops_.to_overlap(state.d, d_overlap_);
-    contact_->begin(state.bodies, state.time, d_overlap_);
+    contact_->begin(state.bodies, state.contact_allowances, state.time, d_overlap_);
   }
   state.wall_forces = acceleration(state.time, dt, state.d, state.v, state.a);
   damping_.add_to_acceleration(state.v, state.a);
@@ -414,6 +414,10 @@ void ExplicitDriver::advance(RunState& state, double step_dt, long long step,
     contact_->commit();
     state.bodies = contact_->states();
   }
+}
+
+void ExplicitDriver::carry_contact_state(RunState& state) const {
+  if (contact_) state.contact_allowances = contact_->allowances();
 }
 
 ExplicitSummary ExplicitDriver::run(RunState& state, const StateOutput& output, bool record_start) {
@@ -562,6 +566,7 @@ ExplicitSummary ExplicitDriver::run(RunState& state, const StateOutput& output, 
   }
   progress.finish();
   if (contact_) summary.contact_penetration = contact_->stage_penetrations();
+  carry_contact_state(state);
   if (internal_integral > 0)
     summary.kinetic_to_internal_mean = kinetic_integral / internal_integral;
   if (state.internal > 0) summary.kinetic_to_internal_end = state.kinetic / state.internal;

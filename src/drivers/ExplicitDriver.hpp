@@ -99,6 +99,9 @@ class ExplicitDriver {
   /// One velocity-Verlet step (step numbers the messages); on failure writes the last good state.
   void advance(RunState& state, double step_dt, long long step, const StateOutput& output);
   void restore_previous(RunState& state) const;  // also the rigid bodies
+  /// At the stage's end: what the contacts hand to the next stage besides the bodies (the
+  /// ignored initial depths).
+  void carry_contact_state(RunState& state) const;
   /// f_support_ from the free acceleration: the prescribed motions' and the weak supports' forces.
   void support_forces(const Vector& a_free);
 

@@ -34,6 +34,9 @@ struct RunState {
   std::vector<double> wall_forces;
   /// Rigid bodies (scene order): displacement, velocity and contact force, carried across stages.
   std::vector<RigidBodyState> bodies;
+  /// Per scene contact, its particles' initial depths still ignored (initial_penetration:
+  /// ignore; PenaltyContact::allowances), carried across stages as the bodies are.
+  std::vector<std::vector<double>> contact_allowances;
   /// Per scene contact (explicit stages, rigid bodies): the deepest particle as a fraction of
   /// its spacing since the previous record (contact/PenetrationChecks.hpp); empty otherwise.
   std::vector<double> contact_penetrations;
