@@ -472,7 +472,12 @@ ExplicitSummary ExplicitDriver::run(RunState& state, const StateOutput& output, 
          last_kinetic = state.kinetic, last_internal = state.internal;
   Teuchos::TimeMonitor timer(steps_timer);
   while (state.time < end - 1e-12 * span) {
-    if (schedule.due(summary.steps, state.d)) {
+    bool estimate = false;
+    if (schedule.checks(summary.steps)) {  // the strain checks: part of the estimate's phase
+      const PausedTimer paused(steps_timer);
+      estimate = schedule.due(summary.steps, state.d);
+    }
+    if (estimate) {
       const PausedTimer paused(steps_timer);  // the estimate: its own phase
       try {
         dt_crit = stable_step(state.d);

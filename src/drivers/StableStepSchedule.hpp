@@ -33,6 +33,8 @@ class StableStepSchedule {
   /// d: the displacements of the plan's estimate, dt_crit its result.
   StableStepSchedule(const ModelOperators& ops, const StageSpec& stage, bool active,
                      const Vector& d, double dt_crit);
+  /// Whether due() measures the strain after `steps` steps (otherwise it returns false at once).
+  bool checks(long long steps) const { return active_ && steps >= next_check_; }
   /// Whether the stable step is to be re-estimated after `steps` steps at displacements d
   /// (collective).
   bool due(long long steps, const Vector& d);
