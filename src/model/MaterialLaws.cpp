@@ -72,6 +72,28 @@ physics::CrushableFoamParameters foam_parameters(const Scene& scene, const Mater
   return p;
 }
 
+// The scene reader has checked the curve (exists, starts at (0, 0), strains increasing below 1,
+// stresses not decreasing, at most max_curve_points points), HU in (0, 1], SHAPE > 0, t_c > 0
+// and the formulation (total_lagrangian, displacement, not plane stress).
+physics::LowDensityFoamParameters ldfoam_parameters(const Scene& scene,
+                                                    const MaterialSpec& material) {
+  const auto& k = material.constants;
+  physics::LowDensityFoamParameters p;
+  p.tension_modulus = k.at("youngs_modulus");
+  const CurveSpec* curve = scene.find_curve(material.loading_curve);
+  if (!curve) throw std::logic_error("unchecked loading curve " + material.loading_curve);
+  for (std::size_t i = 0; i < curve->time.size(); ++i) {
+    p.curve_strain[p.curve_points] = curve->time[i];
+    p.curve_stress[p.curve_points] = curve->value[i];
+    ++p.curve_points;
+  }
+  if (k.count("hysteresis")) p.hysteresis = k.at("hysteresis");
+  if (k.count("shape")) p.shape = k.at("shape");
+  if (k.count("tension_cutoff")) p.tension_cutoff = k.at("tension_cutoff");
+  p.stiffness = physics::ldfoam_stiffness_bound(p);
+  return p;
+}
+
 }  // namespace
 
 MaterialLaw material_law(const Scene& scene, const PartSpec& part, int dimension) {
@@ -85,6 +107,10 @@ MaterialLaw material_law(const Scene& scene, const PartSpec& part, int dimension
   if (material.model == "crushable_foam") {
     law.plastic = law.foam = true;
     law.foam_params = foam_parameters(scene, material);
+  }
+  if (material.model == "low_density_foam") {
+    law.plastic = law.low_density = true;
+    law.ldfoam_params = ldfoam_parameters(scene, material);
   }
   if (part.formulation == PartFormulation::mixed_up) {
     // scene/PartFormulationCheck: linear elastic, neo-Hookean or J2, one modulus, plane strain

@@ -5,6 +5,7 @@
 
 #include "materials/CrushableFoam.hpp"
 #include "materials/J2Plasticity.hpp"
+#include "materials/LowDensityFoam.hpp"
 #include "materials/SolidMaterial.hpp"
 #include "scene/Scene.hpp"
 
@@ -30,6 +31,10 @@ struct MaterialLaw {
   /// foam_state::count doubles, the same count as J2's), foam_params its law.
   bool foam = false;
   physics::CrushableFoamParameters foam_params;
+  /// The low-density foam (model low_density_foam): plastic is true too (a history row of
+  /// ldfoam_state::count doubles, J2's count), ldfoam_params its law.
+  bool low_density = false;
+  physics::LowDensityFoamParameters ldfoam_params;
   /// Doubles of history per integration point (0: the law keeps none).
   int state_count() const { return plastic ? physics::j2_state::count : 0; }
 };

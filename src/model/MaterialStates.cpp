@@ -24,7 +24,9 @@ MaterialStates::MaterialStates(const Model& model) {
       s.trial = DeviceView<double**>("efg::history trial", points, count);
       auto host = Kokkos::create_mirror_view(s.committed);
       double initial[physics::j2_state::count];
-      if (law.foam)
+      if (law.low_density)
+        physics::ldfoam_initial_state(initial);
+      else if (law.foam)
         physics::foam_initial_state(initial);
       else
         physics::j2_initial_state(law.j2, initial);

@@ -53,6 +53,12 @@ bool EssentialConditions::boundary_stress(const BoundaryPoint& p, const double (
   const auto& old_state = *reinterpret_cast<const State*>(&committed_[p.history]);
   auto& new_state = *reinterpret_cast<State*>(&trial_[p.history]);
   double cauchy[3][3];
+  if (p.law.low_density) {
+    const auto foam = states_->elastic_probe() ? physics::without_yield(p.law.ldfoam_params)
+                                               : p.law.ldfoam_params;
+    if (!A) return physics::ldfoam_update<Dim>(foam, H, old_state, P, new_state, cauchy);
+    return ldfoam_stress_and_bound_tangent<Dim>(foam, H, old_state, P, *A, new_state, cauchy);
+  }
   if (p.law.foam) {
     const auto foam =
         states_->elastic_probe() ? physics::without_yield(p.law.foam_params) : p.law.foam_params;

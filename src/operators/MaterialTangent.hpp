@@ -9,6 +9,7 @@
 
 #include "materials/CrushableFoam.hpp"
 #include "materials/J2Plasticity.hpp"
+#include "materials/LowDensityFoam.hpp"
 
 namespace efg {
 
@@ -51,6 +52,29 @@ KOKKOS_INLINE_FUNCTION bool foam_stress_and_elastic_tangent(
   for (int k = 0; k < Dim; ++k)
     for (int l = 0; l < Dim; ++l) h[k][l] = Fad(Dim * Dim, k * Dim + l, H[k][l]);
   if (!physics::foam_elastic_predictor<Fad, Dim>(p, h, old_state, stress)) return false;
+  for (int i = 0; i < Dim; ++i)
+    for (int j = 0; j < Dim; ++j)
+      for (int k = 0; k < Dim; ++k)
+        for (int l = 0; l < Dim; ++l) A[i][j][k][l] = stress[i][j].fastAccessDx(k * Dim + l);
+  return true;
+}
+
+/// The low-density foam's P, new state and Cauchy stress (physics::ldfoam_update) with A = the
+/// derivative of its bound law P = K (F - R) (forward AD): its largest eigenvalue is K, the bound
+/// of every direction's slope (LowDensityFoam.hpp), so the explicit stable step built from it is
+/// safe. Not the consistent tangent: implicit stages refuse the law (scene/PlasticityInput).
+template <int Dim>
+KOKKOS_INLINE_FUNCTION bool ldfoam_stress_and_bound_tangent(
+    const physics::LowDensityFoamParameters& p, const double (&H)[Dim][Dim],
+    const double (&old_state)[physics::ldfoam_state::count], double (&P)[Dim][Dim],
+    double (&A)[Dim][Dim][Dim][Dim], double (&new_state)[physics::ldfoam_state::count],
+    double (&cauchy)[3][3]) {
+  if (!physics::ldfoam_update<Dim>(p, H, old_state, P, new_state, cauchy)) return false;
+  using Fad = Sacado::Fad::SFad<double, Dim * Dim>;
+  Fad h[Dim][Dim], stress[Dim][Dim];
+  for (int k = 0; k < Dim; ++k)
+    for (int l = 0; l < Dim; ++l) h[k][l] = Fad(Dim * Dim, k * Dim + l, H[k][l]);
+  if (!physics::ldfoam_bound_stress<Fad, Dim>(p, h, stress)) return false;
   for (int i = 0; i < Dim; ++i)
     for (int j = 0; j < Dim; ++j)
       for (int k = 0; k < Dim; ++k)

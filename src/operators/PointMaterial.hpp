@@ -26,6 +26,8 @@ struct PointMaterial {
   bool graded = false;
   bool foam = false;  ///< with plastic: the crushable foam law (foam_params) instead of J2
   physics::CrushableFoamParameters foam_params;
+  bool low_density = false;  ///< with plastic: the low-density foam law (ldfoam_params)
+  physics::LowDensityFoamParameters ldfoam_params;
 };
 
 /// The elastic law at q: the part's, scaled at a graded point.
@@ -46,6 +48,12 @@ static_assert(physics::foam_state::count == physics::j2_state::count &&
                   physics::foam_state::eroded == physics::j2_state::eroded &&
                   physics::foam_state::crush == physics::j2_state::alpha,
               "the foam's history row must share J2's energy, erosion and output columns");
+static_assert(physics::ldfoam_state::count == physics::j2_state::count &&
+                  physics::ldfoam_state::dissipation == physics::j2_state::dissipation &&
+                  physics::ldfoam_state::elastic_energy == physics::j2_state::elastic_energy &&
+                  physics::ldfoam_state::eroded == physics::j2_state::eroded &&
+                  physics::ldfoam_state::crush == physics::j2_state::alpha,
+              "the low-density foam's history row must share J2's columns");
 KOKKOS_INLINE_FUNCTION const State& row(const DeviceView<double**>& v, int q) {
   return *reinterpret_cast<const State*>(&v(q, 0));
 }
@@ -62,6 +70,13 @@ KOKKOS_INLINE_FUNCTION bool point_stress(const PointMaterial& m, int q, const do
   if (!m.plastic) return physics::stress<Dim>(elastic_at(m, q), H, P, A);
   using namespace point_material_detail;
   double cauchy[3][3];
+  if (m.low_density && A)
+    return ldfoam_stress_and_bound_tangent<Dim>(m.ldfoam_params, H, row(m.committed, q), P,
+                                                *reinterpret_cast<double(*)[Dim][Dim][Dim][Dim]>(A),
+                                                mutable_row(m.trial, q), cauchy);
+  if (m.low_density)
+    return physics::ldfoam_update<Dim>(m.ldfoam_params, H, row(m.committed, q), P,
+                                       mutable_row(m.trial, q), cauchy);
   if (m.foam && A)
     return foam_stress_and_elastic_tangent<Dim>(m.foam_params, H, row(m.committed, q), P,
                                                 *reinterpret_cast<double(*)[Dim][Dim][Dim][Dim]>(A),
@@ -86,6 +101,11 @@ KOKKOS_INLINE_FUNCTION double point_energy(const PointMaterial& m, int q,
   if (!m.plastic) return physics::strain_energy<Dim>(elastic_at(m, q), H);
   using namespace point_material_detail;
   double P[Dim][Dim], next[physics::j2_state::count], cauchy[3][3];
+  if (m.low_density)
+    return physics::ldfoam_update<Dim>(m.ldfoam_params, H, row(m.committed, q), P, next, cauchy)
+               ? next[physics::ldfoam_state::elastic_energy] +
+                     next[physics::ldfoam_state::dissipation]
+               : 0.0;
   if (m.foam)
     return physics::foam_update<Dim>(m.foam_params, H, row(m.committed, q), P, next, cauchy)
                ? next[physics::foam_state::elastic_energy] + next[physics::foam_state::dissipation]
@@ -104,9 +124,11 @@ KOKKOS_INLINE_FUNCTION void point_cauchy_stress(const PointMaterial& m, int q,
   using namespace point_material_detail;
   double P[Dim][Dim], next[physics::j2_state::count];
   const bool ok =
-      m.foam ? physics::foam_update<Dim>(m.foam_params, H, row(m.committed, q), P, next, sigma)
-             : physics::j2_update<double, Dim>(m.j2, H, row(m.committed, q), m.step_time, P, next,
-                                               sigma);
+      m.low_density
+          ? physics::ldfoam_update<Dim>(m.ldfoam_params, H, row(m.committed, q), P, next, sigma)
+      : m.foam ? physics::foam_update<Dim>(m.foam_params, H, row(m.committed, q), P, next, sigma)
+               : physics::j2_update<double, Dim>(m.j2, H, row(m.committed, q), m.step_time, P, next,
+                                                 sigma);
   if (!ok)
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) sigma[i][j] = 0.0;

@@ -69,7 +69,9 @@ SolidOperator::SolidOperator(const Model& model) : dim_(model.mesh.dimension), h
                                       states.modulus_scale,
                                       states.modulus_scale.extent(0) > 0,
                                       law.foam,
-                                      law.foam_params};
+                                      law.foam_params,
+                                      law.low_density,
+                                      law.ldfoam_params};
     p.small_strain = d.part->section.formulation == Formulation::small_strain;
     p.points = ip.size();
     p.x = ip.x;
@@ -195,8 +197,7 @@ void SolidOperator::add_stiffness_row_bound(const Vector& d_overlap, Vector& c_o
       });
 }
 
-double SolidOperator::largest_gradient(const Vector& delta_overlap,
-                                       const Vector& d_overlap) const {
+double SolidOperator::largest_gradient(const Vector& delta_overlap, const Vector& d_overlap) const {
   const auto u = column(delta_overlap);
   const auto x = column(d_overlap);
   double largest = 0;

@@ -102,6 +102,7 @@ class SolidOperator {
     if (history_.elastic_probe() && d.material.plastic) {  // MaterialStates::elastic_probe
       d.material.j2 = physics::without_yield(d.material.j2);
       d.material.foam_params = physics::without_yield(d.material.foam_params);
+      d.material.ldfoam_params = physics::without_yield(d.material.ldfoam_params);
     }
     return d;
   }

@@ -6,6 +6,7 @@
 #include "core/Errors.hpp"
 #include "materials/CrushableFoam.hpp"
 #include "materials/J2Plasticity.hpp"
+#include "materials/LowDensityFoam.hpp"
 #include "scene/SchemaValidator.hpp"
 
 namespace efg {
@@ -83,17 +84,64 @@ void check_yield_curve(const Scene& s, const MaterialSpec& m, const YAML::Node& 
   }
 }
 
+// The low-density foam's loading curve: nominal compressive stress over the nominal strain
+// 1 - lambda, which lies in (-inf, 1) for lambda > 0. It starts at the unloaded state (0, 0)
+// and may not fall (the unloading factor and the stiffness bound assume f' >= 0,
+// LowDensityFoam.hpp).
+void check_loading_curve(const Scene& s, const MaterialSpec& m, const YAML::Node& doc,
+                         const std::string& path) {
+  const YAML::Node at = doc["loading_curve"];
+  const std::string key = path + ".loading_curve";
+  const CurveSpec* c = s.find_curve(m.loading_curve);
+  if (!c) fail(s, at, key, "no curve named '" + m.loading_curve + "' in curves");
+  const std::string curve = "curve '" + c->name + "' ";
+  const std::size_t most = physics::LowDensityFoamParameters::max_curve_points;
+  if (c->time.size() > most)
+    fail(s, at, key,
+         curve + "has " + std::to_string(c->time.size()) + " points; at most " +
+             std::to_string(most) + " are supported");
+  if (c->time.size() < 2)
+    fail(s, at, key,
+         curve + "has " + std::to_string(c->time.size()) +
+             " point(s); expected at least 2 (from (0, 0) on)");
+  if (c->time[0] != 0.0 || c->value[0] != 0.0)
+    fail(s, at, key,
+         curve + "starts at (" + number(c->time[0]) + ", " + number(c->value[0]) +
+             "); expected the first point at nominal strain 0 and stress 0");
+  for (std::size_t i = 1; i < c->time.size(); ++i) {
+    if (!(c->time[i] > c->time[i - 1]))
+      fail(s, at, key,
+           curve + "is not increasing in nominal strain: " + number(c->time[i - 1]) + " then " +
+               number(c->time[i]) + "; expected strictly increasing strains");
+    if (!(c->time[i] < 1.0))
+      fail(s, at, key,
+           curve + "reaches nominal strain " + number(c->time[i]) +
+               "; expected strains below 1 (1 - lambda < 1 for every stretch lambda > 0)");
+    if (!(c->value[i] >= c->value[i - 1]))
+      fail(s, at, key,
+           curve + "decreases: stress " + number(c->value[i - 1]) + " then " + number(c->value[i]) +
+               " at nominal strain " + number(c->time[i]) +
+               "; expected a nominal stress that does not decrease");
+  }
+  if (!(c->value.back() > 0.0))
+    fail(s, at, key, curve + "carries no stress; expected a positive nominal stress somewhere");
+}
+
 void check_foam(const Scene& s, std::size_t i) {
   const auto& m = s.materials[i];
   const std::string path = "materials[" + std::to_string(i) + "]";
-  check_yield_curve(s, m, s.document["materials"][i], path);
+  if (m.model == "low_density_foam")
+    check_loading_curve(s, m, s.document["materials"][i], path);
+  else
+    check_yield_curve(s, m, s.document["materials"][i], path);
   // The law's tangent is its elastic one (operators/MaterialTangent.hpp): right for the explicit
   // stable step, not for Newton.
   for (const auto& st : s.stages)
     if (st.driver != "explicit")
       fail(s, s.document["materials"][i]["model"], path + ".model",
-           "model crushable_foam runs in explicit stages only (it has no consistent tangent), "
-           "but stage '" +
+           "model " + m.model +
+               " runs in explicit stages only (it has no consistent tangent), "
+               "but stage '" +
                st.name + "' is " + st.driver + "; expected explicit stages");
   for (std::size_t k = 0; k < s.parts.size(); ++k) {
     const auto& part = s.parts[k];
@@ -102,13 +150,13 @@ void check_foam(const Scene& s, std::size_t i) {
     const std::string at = "parts[" + std::to_string(k) + "]";
     if (part.formulation == PartFormulation::mixed_up)
       fail(s, doc["formulation"], at + ".formulation",
-           "part '" + part.name +
-               "' has a crushable_foam material, which has no volumetric-deviatoric split: "
+           "part '" + part.name + "' has a " + m.model +
+               " material, which has no volumetric-deviatoric split: "
                "expected formulation displacement");
     if (part.plane_stress)
       fail(s, doc["plane_stress"] ? doc["plane_stress"] : doc, at + ".plane_stress",
-           "part '" + part.name +
-               "' has a crushable_foam material: expected plane strain or 3D (plane stress is "
+           "part '" + part.name + "' has a " + m.model +
+               " material: expected plane strain or 3D (plane stress is "
                "not available for it)");
   }
 }
@@ -117,7 +165,8 @@ void check_foam(const Scene& s, std::size_t i) {
 
 void check_plasticity_input(const Scene& s) {
   for (std::size_t i = 0; i < s.materials.size(); ++i)
-    if (s.materials[i].model == "crushable_foam") check_foam(s, i);
+    if (s.materials[i].model == "crushable_foam" || s.materials[i].model == "low_density_foam")
+      check_foam(s, i);
   for (std::size_t i = 0; i < s.materials.size(); ++i) {
     const auto& m = s.materials[i];
     if (m.model != "j2_plasticity") continue;

@@ -101,8 +101,12 @@ struct MaterialSpec {
   std::optional<ScalarField> youngs_modulus_field;
   std::string hardening_curve;  ///< j2_plasticity: curve of yield stress over plastic strain
   std::string yield_curve;      ///< crushable_foam: curve of yield stress over volumetric strain
-  /// A law with history at its integration points (j2_plasticity, crushable_foam).
-  bool path_dependent() const { return model == "j2_plasticity" || model == "crushable_foam"; }
+  std::string loading_curve;    ///< low_density_foam: nominal stress over nominal strain
+  /// A law with history at its integration points (j2_plasticity, crushable_foam,
+  /// low_density_foam).
+  bool path_dependent() const {
+    return model == "j2_plasticity" || model == "crushable_foam" || model == "low_density_foam";
+  }
 };
 
 /// The stages a condition, load or contact acts in: named ones, or every stage when none are named.

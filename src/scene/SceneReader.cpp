@@ -141,6 +141,8 @@ class SceneBuilder {
         mat.hardening_curve = kv.second.as<std::string>();
       else if (key == "yield_curve")
         mat.yield_curve = kv.second.as<std::string>();
+      else if (key == "loading_curve")
+        mat.loading_curve = kv.second.as<std::string>();
       else if (double number = 0;
                key == "youngs_modulus" && !YAML::convert<double>::decode(kv.second, number)) {
         // an expression of x, y, z (validated): a graded material
@@ -151,6 +153,9 @@ class SceneBuilder {
       } else if (key != "name" && key != "model" && key != "density")
         mat.constants[key] = kv.second.as<double>();
     }
+    // No coupling between the principal directions: Poisson's ratio 0, which the elastic
+    // fall-backs and the contact's bulk modulus read (contact/PenaltyContact.cpp).
+    if (mat.model == "low_density_foam") mat.constants["poissons_ratio"] = 0.0;
     s_.materials.push_back(mat);
   }
 
@@ -236,7 +241,8 @@ class SceneBuilder {
                "small_strain, found " +
                sec["formulation"].as<std::string>());
     }
-    if ((material->model == "neo_hookean" || material->model == "crushable_foam") &&
+    if ((material->model == "neo_hookean" || material->model == "crushable_foam" ||
+         material->model == "low_density_foam") &&
         out.formulation != Formulation::total_lagrangian) {
       const YAML::Node at = doc["section"] && doc["section"]["formulation"]
                                 ? doc["section"]["formulation"]

@@ -26,8 +26,9 @@ SpecPtr material_spec() {
   auto poisson = real("Poisson's ratio.", "-").above(-1.0).below(0.5);
   return map("A material model. Keys after model depend on the model.")
       .required("name", string("Material name, unique."))
-      .required("model", choice("Constitutive model.", {"linear_elastic", "neo_hookean",
-                                                        "j2_plasticity", "crushable_foam"}))
+      .required("model",
+                choice("Constitutive model.", {"linear_elastic", "neo_hookean", "j2_plasticity",
+                                               "crushable_foam", "low_density_foam"}))
       .optional("density",
                 real("Mass density (needed by explicit stages).", "mass/length^3").above(0))
       .discriminated_by("model")
@@ -96,7 +97,41 @@ SpecPtr material_spec() {
                              "positive value is advisable.",
                              "stress")
                             .at_least(0),
-                        "0")});
+                        "0")})
+      .variant(
+          "low_density_foam",
+          {required_key("youngs_modulus",
+                        real("Slope of the nominal stress in tension (linear, LS-DYNA E); also "
+                             "the contact's stiffness, so give at least the loading curve's "
+                             "largest slope. Poisson's ratio is 0 (no coupling between the "
+                             "principal directions).",
+                             "stress")
+                            .above(0)),
+           required_key("loading_curve",
+                        string("Name of a curve of the nominal compressive stress (value: from "
+                               "0, not decreasing) over the nominal strain 1 - stretch (time: "
+                               "from 0, increasing, below 1; at most 32 points) in each "
+                               "principal direction; extended beyond its last point with its "
+                               "last slope (LS-DYNA *MAT_057 LCID; docs/foams.md).")),
+           optional_key("hysteresis",
+                        real("HU: the unloading curve is (HU + (1 - HU) (e / e_max)^shape) times "
+                             "the loading curve below the largest strain reached e_max; 1 "
+                             "unloads on the loading curve (no dissipation).",
+                             "-")
+                            .above(0)
+                            .at_most(1),
+                        "1"),
+           optional_key("shape",
+                        real("SHAPE: the exponent of the unloading factor (larger: unloading "
+                             "drops sooner, more dissipation).",
+                             "-")
+                            .above(0),
+                        "1"),
+           optional_key("tension_cutoff",
+                        real("Largest nominal tensile stress (reversible cap, LS-DYNA TC); "
+                             "none when absent.",
+                             "stress")
+                            .above(0))});
 }
 
 std::vector<Key> component_keys(const std::string& what, const std::string& unit) {
