@@ -93,19 +93,8 @@ EFG_PHYSICS_FUNCTION double foam_yield_stress(const CrushableFoamParameters& p, 
 
 namespace foam_detail {
 
-EFG_PHYSICS_FUNCTION void unpack(const double* s, double (&a)[3][3]) {
-  for (int k = 0; k < 6; ++k) {
-    const int i = k < 3 ? k : k - 3, j = k < 3 ? k : (k - 2) % 3;
-    a[i][j] = a[j][i] = s[k];
-  }
-}
-
-EFG_PHYSICS_FUNCTION void pack(const double (&a)[3][3], double* s) {
-  for (int k = 0; k < 6; ++k) {
-    const int i = k < 3 ? k : k - 3, j = k < 3 ? k : (k - 2) % 3;
-    s[k] = 0.5 * (a[i][j] + a[j][i]);
-  }
-}
+EFG_PHYSICS_FUNCTION void unpack(const double* s, double (&a)[3][3]) { unpack_symmetric(s, a); }
+EFG_PHYSICS_FUNCTION void pack(const double (&a)[3][3], double* s) { pack_symmetric(a, s); }
 
 /// Eigenvalues w and eigenvectors (columns of v) of a symmetric 3 x 3 a: cyclic Jacobi rotations
 /// (Golub & Van Loan, "Matrix Computations", 4th ed., alg. 8.5.3) until the off-diagonal part is
@@ -279,11 +268,7 @@ EFG_PHYSICS_FUNCTION bool foam_elastic_predictor(const CrushableFoamParameters& 
   T F[3][3], fc[3][3], be[3][3], eps[3][3], tau[3][3], Finv[3][3];
   double history[3][3];
   foam_detail::unpack(old_state + foam_state::cp_inverse, history);
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) {
-      F[i][j] = i < Dim && j < Dim ? H[i][j] : T(0.0);
-      if (i == j) F[i][j] += 1.0;
-    }
+  deformation_gradient_3x3<T, Dim>(H, F);
   if (!(value_of(matrix3::determinant(F)) > 0)) return false;
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) {

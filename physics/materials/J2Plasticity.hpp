@@ -118,19 +118,8 @@ namespace j2_detail {
 
 constexpr double sqrt_two_thirds = 0.81649658092772603273;
 
-EFG_PHYSICS_FUNCTION void unpack(const double* s, double (&a)[3][3]) {
-  for (int k = 0; k < 6; ++k) {
-    const int i = k < 3 ? k : k - 3, j = k < 3 ? k : (k - 2) % 3;
-    a[i][j] = a[j][i] = s[k];
-  }
-}
-
-EFG_PHYSICS_FUNCTION void pack(const double (&a)[3][3], double* s) {
-  for (int k = 0; k < 6; ++k) {
-    const int i = k < 3 ? k : k - 3, j = k < 3 ? k : (k - 2) % 3;
-    s[k] = 0.5 * (a[i][j] + a[j][i]);
-  }
-}
+EFG_PHYSICS_FUNCTION void unpack(const double* s, double (&a)[3][3]) { unpack_symmetric(s, a); }
+EFG_PHYSICS_FUNCTION void pack(const double (&a)[3][3], double* s) { pack_symmetric(a, s); }
 
 /// Root of h (increasing through it, h(lo) <= 0 <= h(hi)) by Newton steps, bisecting when a
 /// step leaves the bracket; stops when a step or the bracket is below x_tol.
@@ -214,11 +203,7 @@ template <class T, int Dim>
 EFG_PHYSICS_FUNCTION void trial_strain(const J2Parameters& p, const T (&H)[Dim][Dim], double y,
                                        const double (&history)[3][3], T (&F)[3][3],
                                        T (&eps)[3][3]) {
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) {
-      F[i][j] = i < Dim && j < Dim ? H[i][j] : T(0.0);
-      if (i == j) F[i][j] += 1.0;
-    }
+  deformation_gradient_3x3<T, Dim>(H, F);
   if (Dim == 2) F[2][2] = p.small_strain ? 1.0 + y : exp(y);
   if (p.small_strain) {
     for (int i = 0; i < 3; ++i)

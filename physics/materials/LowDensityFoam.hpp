@@ -165,11 +165,7 @@ template <class T, int Dim>
 EFG_PHYSICS_FUNCTION bool ldfoam_bound_stress(const LowDensityFoamParameters& p,
                                               const T (&H)[Dim][Dim], T (&P)[Dim][Dim]) {
   T F[3][3], U[3][3], Uinv[3][3];
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) {
-      F[i][j] = i < Dim && j < Dim ? H[i][j] : T(0.0);
-      if (i == j) F[i][j] += 1.0;
-    }
+  deformation_gradient_3x3<T, Dim>(H, F);
   if (!(value_of(matrix3::determinant(F)) > 0)) return false;
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) U[i][j] = F[0][i] * F[0][j] + F[1][i] * F[1][j] + F[2][i] * F[2][j];

@@ -49,4 +49,30 @@ EFG_PHYSICS_FUNCTION void inverse(const double (&a)[Dim][Dim], double det,
   }
 }
 
+/// A symmetric 3 x 3 tensor from its 6 stored components (xx, yy, zz, xy, yz, xz), and back
+/// (the mean of a and a^T): the history columns of the plastic laws.
+EFG_PHYSICS_FUNCTION void unpack_symmetric(const double* s, double (&a)[3][3]) {
+  for (int k = 0; k < 6; ++k) {
+    const int i = k < 3 ? k : k - 3, j = k < 3 ? k : (k - 2) % 3;
+    a[i][j] = a[j][i] = s[k];
+  }
+}
+
+EFG_PHYSICS_FUNCTION void pack_symmetric(const double (&a)[3][3], double* s) {
+  for (int k = 0; k < 6; ++k) {
+    const int i = k < 3 ? k : k - 3, j = k < 3 ? k : (k - 2) % 3;
+    s[k] = 0.5 * (a[i][j] + a[j][i]);
+  }
+}
+
+/// F = I + H as a 3 x 3 array from a Dim x Dim displacement gradient (F33 = 1 in 2D).
+template <class T, int Dim>
+EFG_PHYSICS_FUNCTION void deformation_gradient_3x3(const T (&H)[Dim][Dim], T (&F)[3][3]) {
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      F[i][j] = i < Dim && j < Dim ? H[i][j] : T(0.0);
+      if (i == j) F[i][j] += 1.0;
+    }
+}
+
 }  // namespace efg::physics

@@ -37,6 +37,19 @@ struct MaterialLaw {
   physics::LowDensityFoamParameters ldfoam_params;
   /// Doubles of history per integration point (0: the law keeps none).
   int state_count() const { return plastic ? physics::j2_state::count : 0; }
+  /// The history of a point that has not deformed yet (plastic laws; the foams keep as many
+  /// doubles as J2).
+  void initial_state(double (&state)[physics::j2_state::count]) const {
+    static_assert(physics::foam_state::count == physics::j2_state::count &&
+                      physics::ldfoam_state::count == physics::j2_state::count,
+                  "one history row size for every plastic law");
+    if (low_density)
+      physics::ldfoam_initial_state(state);
+    else if (foam)
+      physics::foam_initial_state(state);
+    else
+      physics::j2_initial_state(j2, state);
+  }
 };
 
 /// Material constants of a part for the elastic kernels (plane stress reduces lambda).

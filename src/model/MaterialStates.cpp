@@ -24,12 +24,7 @@ MaterialStates::MaterialStates(const Model& model) {
       s.trial = DeviceView<double**>("efg::history trial", points, count);
       auto host = Kokkos::create_mirror_view(s.committed);
       double initial[physics::j2_state::count];
-      if (law.low_density)
-        physics::ldfoam_initial_state(initial);
-      else if (law.foam)
-        physics::foam_initial_state(initial);
-      else
-        physics::j2_initial_state(law.j2, initial);
+      law.initial_state(initial);
       for (std::size_t q = 0; q < points; ++q)
         for (std::size_t c = 0; c < count; ++c) host(q, c) = initial[c];
       Kokkos::deep_copy(s.committed, host);

@@ -214,12 +214,7 @@ long long EssentialConditions::add_boundary_points(const Model& model, const Sol
       if (law.plastic) {
         b.history = committed_.size();
         double initial[physics::j2_state::count];
-        if (law.low_density)
-          physics::ldfoam_initial_state(initial);
-        else if (law.foam)
-          physics::foam_initial_state(initial);
-        else
-          physics::j2_initial_state(law.j2, initial);
+        law.initial_state(initial);
         committed_.insert(committed_.end(), initial, initial + physics::j2_state::count);
         trial_.insert(trial_.end(), initial, initial + physics::j2_state::count);
       }
