@@ -93,8 +93,12 @@ EFG_PHYSICS_FUNCTION double foam_yield_stress(const CrushableFoamParameters& p, 
 
 namespace foam_detail {
 
-EFG_PHYSICS_FUNCTION void unpack(const double* s, double (&a)[3][3]) { unpack_symmetric(s, a); }
-EFG_PHYSICS_FUNCTION void pack(const double (&a)[3][3], double* s) { pack_symmetric(a, s); }
+EFG_PHYSICS_FUNCTION void unpack(const double* s, double (&a)[3][3]) {
+  unpack_symmetric(s, a);
+}
+EFG_PHYSICS_FUNCTION void pack(const double (&a)[3][3], double* s) {
+  pack_symmetric(a, s);
+}
 
 /// Eigenvalues w and eigenvectors (columns of v) of a symmetric 3 x 3 a: cyclic Jacobi rotations
 /// (Golub & Van Loan, "Matrix Computations", 4th ed., alg. 8.5.3) until the off-diagonal part is

@@ -118,8 +118,12 @@ namespace j2_detail {
 
 constexpr double sqrt_two_thirds = 0.81649658092772603273;
 
-EFG_PHYSICS_FUNCTION void unpack(const double* s, double (&a)[3][3]) { unpack_symmetric(s, a); }
-EFG_PHYSICS_FUNCTION void pack(const double (&a)[3][3], double* s) { pack_symmetric(a, s); }
+EFG_PHYSICS_FUNCTION void unpack(const double* s, double (&a)[3][3]) {
+  unpack_symmetric(s, a);
+}
+EFG_PHYSICS_FUNCTION void pack(const double (&a)[3][3], double* s) {
+  pack_symmetric(a, s);
+}
 
 /// Root of h (increasing through it, h(lo) <= 0 <= h(hi)) by Newton steps, bisecting when a
 /// step leaves the bracket; stops when a step or the bracket is below x_tol.

@@ -289,9 +289,8 @@ void PenaltyContact::add_spring_stiffness(const Vector& x_overlap, Vector& y_ove
 }
 
 std::size_t PenaltyContact::penetration_slot(const Pair& pair) const {
-  return pair.contact >= 0
-             ? static_cast<std::size_t>(pair.contact)
-             : model_.scene.contacts.size() + static_cast<std::size_t>(pair.wall);
+  return pair.contact >= 0 ? static_cast<std::size_t>(pair.contact)
+                           : model_.scene.contacts.size() + static_cast<std::size_t>(pair.wall);
 }
 
 std::vector<double> PenaltyContact::take_penetrations() {

@@ -464,9 +464,8 @@ ExplicitSummary ExplicitDriver::run(RunState& state, const StateOutput& output, 
   int relaxed_checks = 0;  // checks in a row at or below the ratio (dynamic relaxation)
   // Re-estimates follow the strain and erosion (drivers/StableStepSchedule); linear elastic
   // parts keep the plan's estimate.
-  StableStepSchedule schedule(ops_, stage_,
-                              !fixed && !ops_.model().scene.every_part_linear_elastic(), state.d,
-                              dt_crit);
+  StableStepSchedule schedule(
+      ops_, stage_, !fixed && !ops_.model().scene.every_part_linear_elastic(), state.d, dt_crit);
   // Trapezoids of the kinetic and internal energies over the records (quasi-static indicator).
   double kinetic_integral = 0, internal_integral = 0, last_record_time = start_time,
          last_kinetic = state.kinetic, last_internal = state.internal;

@@ -37,9 +37,8 @@ bool StableStepSchedule::due(long long steps, const Vector& d) {
   if (strain >= interval || eroded_ != eroded_at_estimate_ || since >= refresh_) return true;
   // Half the remaining way at the strain's rate so far, and at most as far ahead as the last
   // estimate is behind (an impact's strain accelerates from nothing).
-  const double remaining = strain > 0
-                               ? 0.5 * static_cast<double>(since) * (interval / strain - 1.0)
-                               : static_cast<double>(since);
+  const double remaining = strain > 0 ? 0.5 * static_cast<double>(since) * (interval / strain - 1.0)
+                                      : static_cast<double>(since);
   next_check_ =
       steps + std::clamp(std::min(static_cast<long long>(remaining), since), 1LL, refresh_ - since);
   return false;
