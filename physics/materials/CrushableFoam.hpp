@@ -200,20 +200,12 @@ EFG_PHYSICS_FUNCTION bool foam_update(const CrushableFoamParameters& p, const do
                                       double (&cauchy)[3][3]) {
   static_assert(Dim == 2 || Dim == 3, "2D or 3D");
   using namespace foam_detail;
-  double F[3][3], history[3][3], fc[3][3], be[3][3], eps[3][3];
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) {
-      F[i][j] = (i < Dim && j < Dim ? H[i][j] : 0.0) + (i == j ? 1.0 : 0.0);
-    }
+  double F[3][3], history[3][3], be[3][3], eps[3][3];
+  deformation_gradient_3x3<double, Dim>(H, F);
   const double J = matrix3::determinant(F);
   if (!(J > 0)) return false;
   unpack(old_state + foam_state::cp_inverse, history);
-  matrix3::multiply(F, history, fc);
-  for (int i = 0; i < 3; ++i)
-    for (int j = i; j < 3; ++j) {
-      be[i][j] = fc[i][0] * F[j][0] + fc[i][1] * F[j][1] + fc[i][2] * F[j][2];
-      be[j][i] = be[i][j];
-    }
+  elastic_left_cauchy_green(F, history, be);
   symmetric_log(be, eps);
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) eps[i][j] *= 0.5;
@@ -269,21 +261,12 @@ EFG_PHYSICS_FUNCTION bool foam_elastic_predictor(const CrushableFoamParameters& 
                                                  const T (&H)[Dim][Dim],
                                                  const double (&old_state)[foam_state::count],
                                                  T (&P)[Dim][Dim]) {
-  T F[3][3], fc[3][3], be[3][3], eps[3][3], tau[3][3], Finv[3][3];
+  T F[3][3], be[3][3], eps[3][3], tau[3][3], Finv[3][3];
   double history[3][3];
   foam_detail::unpack(old_state + foam_state::cp_inverse, history);
   deformation_gradient_3x3<T, Dim>(H, F);
   if (!(value_of(matrix3::determinant(F)) > 0)) return false;
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) {
-      fc[i][j] = F[i][0] * history[0][j];
-      for (int k = 1; k < 3; ++k) fc[i][j] += F[i][k] * history[k][j];
-    }
-  for (int i = 0; i < 3; ++i)
-    for (int j = i; j < 3; ++j) {
-      be[i][j] = fc[i][0] * F[j][0] + fc[i][1] * F[j][1] + fc[i][2] * F[j][2];
-      be[j][i] = be[i][j];
-    }
+  elastic_left_cauchy_green(F, history, be);
   symmetric_log(be, eps);
   const T trace = 0.5 * (eps[0][0] + eps[1][1] + eps[2][2]);
   for (int i = 0; i < 3; ++i)

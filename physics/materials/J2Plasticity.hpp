@@ -215,18 +215,8 @@ EFG_PHYSICS_FUNCTION void trial_strain(const J2Parameters& p, const T (&H)[Dim][
         eps[i][j] = 0.5 * (F[i][j] + F[j][i]) - ((i == j ? 1.0 : 0.0) + history[i][j]);
     return;
   }
-  T fc[3][3], be[3][3];
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) {
-      fc[i][j] = F[i][0] * history[0][j];
-      for (int k = 1; k < 3; ++k) fc[i][j] += F[i][k] * history[k][j];
-    }
-  for (int i = 0; i < 3; ++i)
-    for (int j = i; j < 3; ++j) {
-      be[i][j] = fc[i][0] * F[j][0];
-      for (int k = 1; k < 3; ++k) be[i][j] += fc[i][k] * F[j][k];
-      be[j][i] = be[i][j];
-    }
+  T be[3][3];
+  elastic_left_cauchy_green(F, history, be);
   symmetric_log(be, eps);
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) eps[i][j] *= 0.5;

@@ -75,4 +75,24 @@ EFG_PHYSICS_FUNCTION void deformation_gradient_3x3(const T (&H)[Dim][Dim], T (&F
     }
 }
 
+/// b_e = F Cp^-1 F^T, the elastic left Cauchy-Green tensor of the multiplicative split (the
+/// plastic laws' trial state; symmetric by construction).
+template <class T>
+EFG_PHYSICS_FUNCTION void elastic_left_cauchy_green(const T (&F)[3][3],
+                                                    const double (&cp_inverse)[3][3],
+                                                    T (&be)[3][3]) {
+  T fc[3][3];
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      fc[i][j] = F[i][0] * cp_inverse[0][j];
+      for (int k = 1; k < 3; ++k) fc[i][j] += F[i][k] * cp_inverse[k][j];
+    }
+  for (int i = 0; i < 3; ++i)
+    for (int j = i; j < 3; ++j) {
+      be[i][j] = fc[i][0] * F[j][0];
+      for (int k = 1; k < 3; ++k) be[i][j] += fc[i][k] * F[j][k];
+      be[j][i] = be[i][j];
+    }
+}
+
 }  // namespace efg::physics
